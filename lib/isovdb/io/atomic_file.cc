@@ -1,0 +1,73 @@
+#include "isovdb/io/atomic_file.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <system_error>
+
+#include "isovdb/errors.h"
+
+namespace isovdb::io {
+
+namespace {
+
+std::string osError() { return std::strerror(errno); }
+
+}  // namespace
+
+AtomicFile::AtomicFile(std::filesystem::path path) : path_(std::move(path)) {
+  if (path_.empty()) throw IoError("output path is empty");
+  std::error_code ec;
+  if (std::filesystem::is_directory(path_, ec))
+    throw IoError("cannot write '" + path_.string() + "': it is a directory");
+  const std::filesystem::path dir = path_.has_parent_path() ? path_.parent_path() : ".";
+  // mkstemp gives a unique name, so concurrent writers of one directory do not collide.
+  std::string pattern = (dir / ("." + path_.filename().string() + ".tmp.XXXXXX")).string();
+  const int fd = ::mkstemp(pattern.data());
+  if (fd < 0) throw IoError("cannot write '" + path_.string() + "': " + osError());
+  tmpPath_ = pattern;
+  file_ = ::fdopen(fd, "wb");
+  if (!file_) {
+    const std::string why = osError();
+    ::close(fd);
+    std::filesystem::remove(tmpPath_, ec);
+    throw IoError("cannot write '" + path_.string() + "': " + why);
+  }
+}
+
+AtomicFile::~AtomicFile() {
+  if (file_) std::fclose(file_);
+  if (!committed_) {
+    std::error_code ec;
+    std::filesystem::remove(tmpPath_, ec);
+  }
+}
+
+void AtomicFile::write(const void* data, std::size_t bytes) {
+  if (!file_) throw IoError("cannot write '" + path_.string() + "': stream already closed");
+  if (bytes && std::fwrite(data, 1, bytes, file_) != bytes)
+    throw IoError("cannot write '" + path_.string() + "': " + osError());
+}
+
+void AtomicFile::closeStream() {
+  if (!file_) return;
+  const bool ok = std::fclose(file_) == 0;
+  file_ = nullptr;
+  if (!ok) throw IoError("cannot write '" + path_.string() + "': " + osError());
+}
+
+void AtomicFile::commit() {
+  closeStream();
+  // mkstemp creates 0600 files; give the output the usual permissions.
+  std::error_code ec;
+  std::filesystem::permissions(tmpPath_,
+                               std::filesystem::perms::owner_read | std::filesystem::perms::owner_write |
+                                   std::filesystem::perms::group_read | std::filesystem::perms::others_read,
+                               ec);
+  std::filesystem::rename(tmpPath_, path_, ec);
+  if (ec) throw IoError("cannot write '" + path_.string() + "': " + ec.message());
+  committed_ = true;
+}
+
+}  // namespace isovdb::io

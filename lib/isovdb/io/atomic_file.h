@@ -1,0 +1,45 @@
+/// @file atomic_file.h
+/// @brief Writes a file through a temporary beside it and renames it on commit,
+///        so a failed or interrupted run never leaves a partial output file.
+#pragma once
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+namespace isovdb::io {
+
+class AtomicFile {
+ public:
+  /// Opens a temporary file in the directory of `path`.
+  /// @throw IoError naming `path` when the directory is missing or not writable.
+  explicit AtomicFile(std::filesystem::path path);
+  /// Removes the temporary file unless commit() succeeded.
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  /// Appends bytes. @throw IoError on a failed write (disk full, ...).
+  void write(const void* data, std::size_t bytes);
+  void write(const std::string& text) { write(text.data(), text.size()); }
+
+  /// Flushes, closes and renames the temporary onto the final path.
+  /// @throw IoError when any of those fails (the temporary is removed).
+  void commit();
+
+  /// Path of the temporary file (for writers that need a filename, like OpenVDB's).
+  const std::filesystem::path& temporaryPath() const { return tmpPath_; }
+  const std::filesystem::path& path() const { return path_; }
+
+  /// Closes the stream so another library can write temporaryPath() itself;
+  /// commit() then only renames.
+  void closeStream();
+
+ private:
+  std::filesystem::path path_;
+  std::filesystem::path tmpPath_;
+  std::FILE* file_ = nullptr;
+  bool committed_ = false;
+};
+
+}  // namespace isovdb::io

@@ -1,0 +1,29 @@
+/// @file mesh.h
+/// @brief The indexed triangle mesh that every contouring method produces.
+///
+/// Positions are in whatever space the producer states: the engine works in
+/// voxel index space, and pipeline/ applies the grid's index-to-world
+/// transform once, just before writing.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace isovdb::mesh {
+
+using Vec3f = std::array<float, 3>;
+using Triangle = std::array<std::uint32_t, 3>;
+
+/// Indexed triangle mesh: float positions, 32-bit indices, optional per-vertex normals.
+struct Mesh {
+  std::vector<Vec3f> positions;
+  std::vector<Triangle> triangles;
+  std::vector<Vec3f> normals;  ///< empty, or one per position
+
+  std::size_t vertexCount() const { return positions.size(); }
+  std::size_t triangleCount() const { return triangles.size(); }
+  bool empty() const { return triangles.empty(); }
+};
+
+}  // namespace isovdb::mesh

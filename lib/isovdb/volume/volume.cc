@@ -1,0 +1,71 @@
+#include "isovdb/volume/volume.h"
+
+#include <openvdb/tools/Count.h>
+
+#include "isovdb/volume/grids.h"
+
+namespace isovdb::volume {
+
+std::string_view volumeKindName(VolumeKind kind) {
+  switch (kind) {
+    case VolumeKind::Mask: return "mask";
+    case VolumeKind::Scalar: return "scalar";
+    case VolumeKind::DistanceField: return "distance field";
+  }
+  return "unknown";
+}
+
+Volume::Volume(VolumeKind kind, std::shared_ptr<openvdb::GridBase> grid, Geometry geometry,
+               std::string name)
+    : kind_(kind), grid_(std::move(grid)), geometry_(geometry), name_(std::move(name)) {}
+
+const MaskGrid& maskGrid(const Volume& volume) {
+  if (volume.kind() != VolumeKind::Mask || !volume.grid())
+    throw InputError("'" + volume.name() + "': expected a mask volume, got a " +
+                     std::string(volumeKindName(volume.kind())));
+  return static_cast<const MaskGrid&>(*volume.grid());
+}
+
+FieldGrid::Ptr fieldGridPtr(const Volume& volume) {
+  if (volume.kind() == VolumeKind::Mask || !volume.grid())
+    throw InputError("'" + volume.name() + "': expected a scalar or distance volume, got a mask");
+  return std::static_pointer_cast<FieldGrid>(volume.grid());
+}
+
+const FieldGrid& fieldGrid(const Volume& volume) { return *fieldGridPtr(volume); }
+
+namespace {
+
+template <typename TreeT>
+GridStats treeStats(const TreeT& tree, bool withRange) {
+  GridStats stats;
+  stats.activeVoxels = static_cast<std::int64_t>(tree.activeVoxelCount());
+  stats.leafCount = static_cast<std::int64_t>(tree.leafCount());
+  stats.tileCount = static_cast<std::int64_t>(tree.activeTileCount());
+  stats.memoryBytes = static_cast<std::int64_t>(tree.memUsage());
+  openvdb::CoordBBox bbox;
+  if (tree.evalActiveVoxelBoundingBox(bbox)) {
+    for (int a = 0; a < 3; ++a) {
+      stats.bboxMin[a] = bbox.min()[a];
+      stats.bboxMax[a] = bbox.max()[a];
+    }
+  }
+  if constexpr (std::is_same_v<typename TreeT::ValueType, float>) {
+    if (withRange && stats.activeVoxels > 0) {
+      const auto extrema = openvdb::tools::minMax(tree);
+      stats.minValue = extrema.min();
+      stats.maxValue = extrema.max();
+    }
+  }
+  return stats;
+}
+
+}  // namespace
+
+GridStats Volume::stats() const {
+  if (!grid_) return {};
+  if (kind_ == VolumeKind::Mask) return treeStats(maskGrid(*this).tree(), false);
+  return treeStats(fieldGrid(*this).tree(), true);
+}
+
+}  // namespace isovdb::volume

@@ -1,0 +1,84 @@
+/// @file volume.h
+/// @brief The sparse volume every stage after ingest works on: an OpenVDB grid
+///        in voxel index space plus the transform to world space.
+///
+/// This header is light on purpose: it only forward-declares openvdb::GridBase.
+/// Code that touches voxels includes "isovdb/volume/grids.h" in its .cc file.
+///
+/// Conventions: the grid's own transform is the identity (voxel index space);
+/// distances of a DistanceField are in voxels, NEGATIVE inside. `geometry`
+/// maps index to world (world = origin + spacing * index) and is applied once,
+/// when a mesh or a .vdb file is written.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include <openvdb/version.h>
+
+namespace openvdb {
+OPENVDB_USE_VERSION_NAMESPACE
+namespace OPENVDB_VERSION_NAME {
+class GridBase;
+}
+}  // namespace openvdb
+
+namespace isovdb::volume {
+
+/// What the grid holds.
+enum class VolumeKind {
+  Mask,           ///< openvdb::BoolGrid: active (and true) = inside the object
+  Scalar,         ///< openvdb::FloatGrid: a sampled scalar field (density, amplitude, ...)
+  DistanceField,  ///< openvdb::FloatGrid, GRID_LEVEL_SET: narrow-band signed distance in voxels
+};
+
+std::string_view volumeKindName(VolumeKind kind);
+
+/// Axis-aligned index-to-world map: world = origin + spacing * index.
+struct Geometry {
+  std::array<double, 3> spacing{1.0, 1.0, 1.0};
+  std::array<double, 3> origin{0.0, 0.0, 0.0};
+
+  bool isUniform() const { return spacing[0] == spacing[1] && spacing[1] == spacing[2]; }
+};
+
+/// Figures `isovdb info` and the statistics report about a grid.
+struct GridStats {
+  std::int64_t activeVoxels = 0;  ///< voxels inside (mask) or stored (scalar, SDF band), tiles expanded
+  std::int64_t leafCount = 0;     ///< 8^3 leaf nodes
+  std::int64_t tileCount = 0;     ///< active tiles at any level (homogeneous blocks)
+  std::int64_t memoryBytes = 0;   ///< openvdb's memUsage() of the tree
+  std::array<int, 3> bboxMin{0, 0, 0};  ///< active bounding box, index space, inclusive
+  std::array<int, 3> bboxMax{-1, -1, -1};
+  float minValue = 0.f, maxValue = 0.f;  ///< value range (Scalar and DistanceField only)
+};
+
+/// A sparse volume: one OpenVDB grid, its kind and its world geometry.
+/// Copies share the grid (shallow); the grid is never modified through a const Volume.
+class Volume {
+ public:
+  Volume() = default;
+  Volume(VolumeKind kind, std::shared_ptr<openvdb::GridBase> grid, Geometry geometry,
+         std::string name);
+
+  VolumeKind kind() const { return kind_; }
+  const Geometry& geometry() const { return geometry_; }
+  /// Name used for the grid in .vdb files and in messages (e.g. the source file).
+  const std::string& name() const { return name_; }
+  bool valid() const { return grid_ != nullptr; }
+
+  const std::shared_ptr<openvdb::GridBase>& grid() const { return grid_; }
+
+  /// Counts active voxels, leaves and tiles and measures memory (walks the tree).
+  GridStats stats() const;
+
+ private:
+  VolumeKind kind_ = VolumeKind::Mask;
+  std::shared_ptr<openvdb::GridBase> grid_;
+  Geometry geometry_;
+  std::string name_;
+};
+
+}  // namespace isovdb::volume
