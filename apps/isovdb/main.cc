@@ -1,2 +1,40 @@
+// isovdb: sparse volumes to clean triangle meshes. Parses arguments and runs one
+// subcommand; all the work is in the library (pipeline/).
 #include <cstdio>
-int main() { std::puts("isovdb"); return 0; }
+
+#include "commands.h"
+#include "isovdb/errors.h"
+
+int main(int argc, char** argv) {
+  using namespace isovdb;
+  CLI::App app{"isovdb: turns large sparse volumes into clean triangle meshes"};
+  app.require_subcommand(1);
+  app.fallthrough();
+  cli::Context context;
+  app.add_flag("-q,--quiet", context.quiet, "No progress on stderr");
+  cli::addInfoCommand(app, context);
+  cli::addSdfCommand(app, context);
+  cli::addExtractCommand(app, context);
+  cli::addCheckCommand(app, context);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const Interrupted&) {
+    std::fprintf(stderr, "isovdb: interrupted\n");
+    return 130;
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "isovdb: error: %s\n", e.what());
+    return 2;
+  } catch (const IoError& e) {
+    std::fprintf(stderr, "isovdb: error: %s\n", e.what());
+    return 2;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "isovdb: error: out of memory\n");
+    return 3;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "isovdb: internal error: %s\n", e.what());
+    return 3;
+  }
+  return context.exitCode;
+}

@@ -44,6 +44,10 @@ AtomicFile::~AtomicFile() {
   }
 }
 
+void AtomicFile::checkWritable(const std::filesystem::path& path) {
+  AtomicFile probe(path);  // creates and, not committed, removes the temporary
+}
+
 void AtomicFile::write(const void* data, std::size_t bytes) {
   if (!file_) throw IoError("cannot write '" + path_.string() + "': stream already closed");
   if (bytes && std::fwrite(data, 1, bytes, file_) != bytes)

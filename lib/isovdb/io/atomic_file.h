@@ -31,6 +31,10 @@ class AtomicFile {
   const std::filesystem::path& temporaryPath() const { return tmpPath_; }
   const std::filesystem::path& path() const { return path_; }
 
+  /// Fails early, before long work, when `path` could not be written later.
+  /// @throw IoError naming `path`.
+  static void checkWritable(const std::filesystem::path& path);
+
   /// Closes the stream so another library can write temporaryPath() itself;
   /// commit() then only renames.
   void closeStream();

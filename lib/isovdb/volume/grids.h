@@ -4,8 +4,10 @@
 #pragma once
 
 #include <openvdb/openvdb.h>
+#include <openvdb/util/NullInterrupter.h>
 
 #include "isovdb/errors.h"
+#include "isovdb/progress.h"
 #include "isovdb/volume/volume.h"
 
 namespace isovdb::volume {
@@ -20,3 +22,25 @@ const FieldGrid& fieldGrid(const Volume& volume);
 FieldGrid::Ptr fieldGridPtr(const Volume& volume);
 
 }  // namespace isovdb::volume
+
+namespace isovdb::volume::detail {
+
+/// Forwards OpenVDB's interrupter protocol to ours, so OpenVDB tools report
+/// progress and honour cancellation through the caller's Interrupter.
+struct VdbInterrupter : openvdb::util::NullInterrupter {
+  explicit VdbInterrupter(Interrupter* target) : target_(target) {}
+  void start(const char* name = nullptr) override {
+    if (target_) target_->start(name ? name : "openvdb");
+  }
+  void end() override {
+    if (target_) target_->end();
+  }
+  bool wasInterrupted(int percent = -1) override {
+    return target_ && target_->wasInterrupted(percent);
+  }
+
+ private:
+  Interrupter* target_;
+};
+
+}  // namespace isovdb::volume::detail

@@ -1,0 +1,33 @@
+/// @file commands.h
+/// @brief The subcommands of `isovdb`. Each file registers one; none holds an algorithm.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <memory>
+
+#include "isovdb/pipeline/statistics.h"
+#include "terminal_progress.h"
+
+namespace isovdb::cli {
+
+/// State shared by all subcommands: global flags and the exit code of the one that ran.
+struct Context {
+  bool quiet = false;
+  int exitCode = 0;
+  std::unique_ptr<TerminalProgress> progress;
+  TerminalProgress* interrupter() {
+    if (!progress) progress = std::make_unique<TerminalProgress>(!quiet);
+    return progress.get();
+  }
+};
+
+void addInfoCommand(CLI::App& app, Context& context);
+void addSdfCommand(CLI::App& app, Context& context);
+void addExtractCommand(CLI::App& app, Context& context);
+void addCheckCommand(CLI::App& app, Context& context);
+
+/// Prints a statistics report as "section.key: value" lines on stdout.
+void printStatistics(const pipeline::Statistics& stats);
+
+}  // namespace isovdb::cli

@@ -1,0 +1,73 @@
+// `isovdb extract IN -o OUT.ply`: the main job, volume -> closed triangle mesh.
+#include "commands.h"
+#include "input_flags.h"
+#include "isovdb/errors.h"
+#include "isovdb/io/atomic_file.h"
+#include "isovdb/io/mesh_file.h"
+#include "isovdb/pipeline/extract.h"
+#include "isovdb/pipeline/load_volume.h"
+#include "isovdb/pipeline/mesh_report.h"
+
+namespace isovdb::cli {
+
+void addExtractCommand(CLI::App& app, Context& context) {
+  struct State {
+    std::string input, output, statsPath, method = "vdb";
+    InputFlags flags;
+    pipeline::ExtractOptions options;
+    bool check = false;
+    bool noSelfIntersections = false;
+  };
+  auto state = std::make_shared<State>();
+  CLI::App* command = app.add_subcommand("extract", "Volume -> triangle mesh (.ply or .obj)");
+  command->add_option("IN", state->input, "Volume file (.raw, .nrrd, .nhdr, .mhd, .mha, .vdb)")->required();
+  command->add_option("-o,--output", state->output, "Output mesh (.ply binary, or .obj)")->required();
+  command->add_option("--method", state->method, "Contouring method: vdb (OpenVDB volumeToMesh)")
+      ->capture_default_str();
+  command->add_option("--iso", state->options.iso,
+                      "Isovalue: voxels on distance fields (0 = mask boundary), field units on scalars")
+      ->capture_default_str();
+  command->add_option("--adaptivity", state->options.adaptivity, "vdb method: OpenVDB adaptivity in [0,1]")
+      ->capture_default_str();
+  command->add_option("--half-width", state->options.distance.halfWidth, "Distance-field band half-width (voxels)")
+      ->capture_default_str();
+  command->add_option("--closing", state->options.distance.closingSteps,
+                      "Morphological closing steps before the distance field (changes topology)")
+      ->capture_default_str();
+  command->add_flag("--check", state->check, "Validate the mesh (closed, manifold, self-intersections, Euler)");
+  command->add_flag("--no-self-intersections", state->noSelfIntersections,
+                    "With --check: skip the self-intersection test");
+  command->add_option("--stats", state->statsPath, "Write every figure shown as JSON");
+  state->flags.add(*command);
+  command->callback([state, &context] {
+    const auto method = pipeline::parseContourMethod(state->method);
+    if (!method) throw InputError("--method: unknown method '" + state->method + "', expected vdb");
+    state->options.method = *method;
+    if (!io::isMeshPath(state->output))
+      throw InputError("'" + state->output + "': unknown mesh format, expected .ply or .obj");
+    io::AtomicFile::checkWritable(state->output);
+    if (!state->statsPath.empty()) io::AtomicFile::checkWritable(state->statsPath);
+
+    pipeline::Statistics stats;
+    const volume::Volume input =
+        pipeline::loadVolume(state->input, state->flags.toOptions(state->input), context.interrupter(), &stats);
+    const mesh::Mesh mesh = pipeline::extractMesh(input, state->options, context.interrupter(), &stats);
+    if (mesh.empty())
+      std::fprintf(stderr, "isovdb: warning: '%s': no surface at iso %g (empty mesh)\n", state->input.c_str(),
+                   state->options.iso);
+    {
+      pipeline::Statistics::StageTimer timer(&stats, "write");
+      io::writeMesh(state->output, mesh);
+    }
+    stats["output"]["path"] = state->output;
+    if (state->check) {
+      pipeline::Statistics::StageTimer timer(&stats, "check");
+      stats["check"] = pipeline::meshReportJson(mesh, {.selfIntersections = !state->noSelfIntersections});
+    }
+    stats.recordMemory();
+    if (!state->statsPath.empty()) stats.write(state->statsPath);
+    printStatistics(stats);
+  });
+}
+
+}  // namespace isovdb::cli

@@ -1,0 +1,35 @@
+// `isovdb info IN`: what a volume file holds and what its sparse grid costs.
+#include "commands.h"
+#include "input_flags.h"
+#include "isovdb/io/vdb_file.h"
+#include "isovdb/pipeline/load_volume.h"
+
+namespace isovdb::cli {
+
+void addInfoCommand(CLI::App& app, Context& context) {
+  struct State {
+    std::string input;
+    InputFlags flags;
+    std::string statsPath;
+  };
+  auto state = std::make_shared<State>();
+  CLI::App* command = app.add_subcommand("info", "Describe a volume: header, active voxels, leaves, tiles, memory");
+  command->add_option("IN", state->input, "Volume file (.raw, .nrrd, .nhdr, .mhd, .mha, .vdb)")->required();
+  command->add_option("--stats", state->statsPath, "Also write the figures as JSON");
+  state->flags.add(*command);
+  command->callback([state, &context] {
+    pipeline::Statistics stats;
+    if (pipeline::isVdbPath(state->input)) {
+      auto& grids = stats["grids"];
+      grids = pipeline::Statistics::Json::array();
+      for (const io::VdbGridInfo& grid : io::listVdbGrids(state->input))
+        grids.push_back({{"name", grid.name}, {"value_type", grid.valueType}, {"class", grid.gridClass}});
+    }
+    pipeline::loadVolume(state->input, state->flags.toOptions(state->input), context.interrupter(), &stats);
+    stats.recordMemory();
+    if (!state->statsPath.empty()) stats.write(state->statsPath);
+    printStatistics(stats);
+  });
+}
+
+}  // namespace isovdb::cli

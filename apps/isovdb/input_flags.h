@@ -1,0 +1,33 @@
+/// @file input_flags.h
+/// @brief The flags that say how to read an input volume, shared by every subcommand
+///        (they map one to one onto pipeline::InputOptions).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+#include "isovdb/pipeline/load_volume.h"
+
+namespace isovdb::cli {
+
+struct InputFlags {
+  std::vector<std::int64_t> dims;
+  std::string type;
+  bool bigEndian = false;
+  std::vector<double> spacing;
+  std::int64_t headerBytes = 0;
+  double threshold = 0.0;
+  std::vector<double> labels;
+  bool scalar = false;
+  std::string grid;
+
+  /// Registers the flags on a subcommand (`prefix` distinguishes a second input).
+  void add(CLI::App& command);
+  /// Builds the options; `path` is used in error messages.
+  /// @throw InputError for an unknown --type or malformed values.
+  pipeline::InputOptions toOptions(const std::string& path) const;
+};
+
+}  // namespace isovdb::cli

@@ -1,0 +1,47 @@
+// `isovdb sdf IN -o OUT.vdb`: the narrow-band signed distance field as a level-set .vdb.
+#include "commands.h"
+#include "input_flags.h"
+#include "isovdb/io/atomic_file.h"
+#include "isovdb/io/vdb_file.h"
+#include "isovdb/pipeline/extract.h"
+#include "isovdb/pipeline/load_volume.h"
+
+namespace isovdb::cli {
+
+void addSdfCommand(CLI::App& app, Context& context) {
+  struct State {
+    std::string input, output, statsPath, gridName = "sdf";
+    InputFlags flags;
+    volume::DistanceFieldOptions distance;
+  };
+  auto state = std::make_shared<State>();
+  CLI::App* command = app.add_subcommand("sdf", "Binary volume -> narrow-band signed distance field (.vdb level set)");
+  command->add_option("IN", state->input, "Volume file")->required();
+  command->add_option("-o,--output", state->output, "Output .vdb file")->required();
+  command->add_option("--half-width", state->distance.halfWidth, "Narrow-band half-width in voxels")
+      ->capture_default_str();
+  command->add_option("--closing", state->distance.closingSteps,
+                      "Morphological closing steps before the transform (changes topology)")
+      ->capture_default_str();
+  command->add_option("--name", state->gridName, "Grid name in the output file")->capture_default_str();
+  command->add_option("--stats", state->statsPath, "Also write the figures as JSON");
+  state->flags.add(*command);
+  command->callback([state, &context] {
+    io::AtomicFile::checkWritable(state->output);
+    if (!state->statsPath.empty()) io::AtomicFile::checkWritable(state->statsPath);
+    pipeline::Statistics stats;
+    const volume::Volume input =
+        pipeline::loadVolume(state->input, state->flags.toOptions(state->input), context.interrupter(), &stats);
+    const volume::Volume sdf = pipeline::toContourable(input, state->distance, context.interrupter(), &stats);
+    {
+      pipeline::Statistics::StageTimer timer(&stats, "write");
+      io::writeVdb(state->output, sdf, {.gridName = state->gridName});
+    }
+    stats["output"]["path"] = state->output;
+    stats.recordMemory();
+    if (!state->statsPath.empty()) stats.write(state->statsPath);
+    printStatistics(stats);
+  });
+}
+
+}  // namespace isovdb::cli

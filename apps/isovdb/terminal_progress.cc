@@ -1,0 +1,51 @@
+#include "terminal_progress.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+
+namespace isovdb::cli {
+
+namespace {
+constexpr std::chrono::milliseconds kQuietPeriod{1000};  // stages shorter than this print nothing
+}
+
+TerminalProgress::TerminalProgress(bool enabled) : enabled_(enabled), tty_(::isatty(STDERR_FILENO) != 0) {}
+
+void TerminalProgress::start(const char* name) {
+  if (!enabled_) return;
+  std::lock_guard lock(mutex_);
+  stages_.push_back({name ? name : "working", std::chrono::steady_clock::now()});
+}
+
+void TerminalProgress::end() {
+  if (!enabled_) return;
+  std::lock_guard lock(mutex_);
+  if (stages_.empty()) return;
+  const Stage& stage = stages_.back();
+  const auto elapsed = std::chrono::steady_clock::now() - stage.start;
+  if (stage.shown || elapsed >= kQuietPeriod) {
+    std::fprintf(stderr, "%s%s: done in %.1f s\n", tty_ ? "\r\033[K" : "", stage.name.c_str(),
+                 std::chrono::duration<double>(elapsed).count());
+  }
+  stages_.pop_back();
+}
+
+bool TerminalProgress::wasInterrupted(int percent) {
+  if (!enabled_ || percent < 0) return false;
+  std::lock_guard lock(mutex_);
+  if (stages_.empty()) return false;
+  Stage& stage = stages_.back();
+  if (std::chrono::steady_clock::now() - stage.start < kQuietPeriod) return false;
+  // On a terminal redraw one line; in a log print every 10%.
+  const int step = tty_ ? 1 : 10;
+  if (percent / step == stage.lastPercent / step && stage.lastPercent >= 0) return false;
+  stage.lastPercent = percent;
+  stage.shown = true;
+  if (tty_) std::fprintf(stderr, "\r\033[K%s: %3d%%", stage.name.c_str(), percent);
+  else std::fprintf(stderr, "%s: %d%%\n", stage.name.c_str(), percent);
+  std::fflush(stderr);
+  return false;
+}
+
+}  // namespace isovdb::cli

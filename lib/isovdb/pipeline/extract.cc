@@ -1,0 +1,88 @@
+#include "isovdb/pipeline/extract.h"
+
+#include <tbb/parallel_for.h>
+
+#include "isovdb/contour/vdb_mesher.h"
+#include "isovdb/errors.h"
+#include "isovdb/pipeline/load_volume.h"
+
+namespace isovdb::pipeline {
+
+std::optional<ContourMethod> parseContourMethod(std::string_view name) {
+  if (name == "vdb") return ContourMethod::Vdb;
+  return std::nullopt;
+}
+
+std::string_view contourMethodName(ContourMethod method) {
+  switch (method) {
+    case ContourMethod::Vdb: return "vdb";
+  }
+  return "unknown";
+}
+
+volume::Volume toContourable(const volume::Volume& volume, const volume::DistanceFieldOptions& options,
+                             Interrupter* interrupter, Statistics* stats) {
+  if (volume.kind() != volume::VolumeKind::Mask) return volume;
+  volume::Volume sdf;
+  {
+    Statistics::StageTimer timer(stats, "distance_field");
+    sdf = volume::distanceField(volume, options, interrupter);
+  }
+  if (stats) {
+    Statistics::Json section = Statistics::Json::object();
+    section["half_width_voxels"] = options.halfWidth;
+    section["closing_steps"] = options.closingSteps;
+    recordGridStats(sdf, section);
+    (*stats)["distance_field"] = section;
+  }
+  return sdf;
+}
+
+void indexToWorld(mesh::Mesh& mesh, const volume::Geometry& geometry) {
+  const auto& s = geometry.spacing;
+  const auto& o = geometry.origin;
+  if (s == std::array<double, 3>{1, 1, 1} && o == std::array<double, 3>{0, 0, 0}) return;
+  tbb::parallel_for(std::size_t{0}, mesh.positions.size(), [&](std::size_t i) {
+    mesh::Vec3f& p = mesh.positions[i];
+    for (int a = 0; a < 3; ++a) p[a] = static_cast<float>(o[a] + s[a] * static_cast<double>(p[a]));
+  });
+  // Normals transform with the inverse transpose of the (diagonal) scale.
+  tbb::parallel_for(std::size_t{0}, mesh.normals.size(), [&](std::size_t i) {
+    mesh::Vec3f& n = mesh.normals[i];
+    double v[3], len = 0;
+    for (int a = 0; a < 3; ++a) {
+      v[a] = n[a] / s[a];
+      len += v[a] * v[a];
+    }
+    len = std::sqrt(len);
+    if (len > 0)
+      for (int a = 0; a < 3; ++a) n[a] = static_cast<float>(v[a] / len);
+  });
+}
+
+mesh::Mesh extractMesh(const volume::Volume& volume, const ExtractOptions& options, Interrupter* interrupter,
+                       Statistics* stats) {
+  const volume::Volume field = toContourable(volume, options.distance, interrupter, stats);
+  mesh::Mesh mesh;
+  {
+    Statistics::StageTimer timer(stats, "contour");
+    switch (options.method) {
+      case ContourMethod::Vdb:
+        mesh = contour::contourWithOpenVdb(field, {.iso = options.iso, .adaptivity = options.adaptivity},
+                                           interrupter);
+        break;
+    }
+  }
+  indexToWorld(mesh, field.geometry());
+  if (stats) {
+    Statistics::Json& section = (*stats)["contour"];
+    section["method"] = std::string(contourMethodName(options.method));
+    section["iso"] = options.iso;
+    if (options.method == ContourMethod::Vdb) section["adaptivity"] = options.adaptivity;
+    section["vertices"] = mesh.positions.size();
+    section["triangles"] = mesh.triangles.size();
+  }
+  return mesh;
+}
+
+}  // namespace isovdb::pipeline

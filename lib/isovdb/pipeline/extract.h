@@ -1,0 +1,50 @@
+/// @file extract.h
+/// @brief The main job: a loaded volume → distance field → contour → mesh in world space.
+///
+/// This is the only place that knows the order of the stages (DESIGN.md, data flow).
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+#include "isovdb/mesh/mesh.h"
+#include "isovdb/pipeline/statistics.h"
+#include "isovdb/progress.h"
+#include "isovdb/volume/distance_field.h"
+#include "isovdb/volume/volume.h"
+
+namespace isovdb::pipeline {
+
+/// Contouring methods. Our own octree methods (regular, adaptive) plug in here.
+enum class ContourMethod {
+  Vdb,  ///< OpenVDB tools::volumeToMesh, the reference
+};
+
+std::optional<ContourMethod> parseContourMethod(std::string_view name);
+std::string_view contourMethodName(ContourMethod method);
+
+struct ExtractOptions {
+  ContourMethod method = ContourMethod::Vdb;
+  /// Isovalue: in voxels on a distance field (0 = the mask boundary, >0 grows the
+  /// surface outwards), in the field's units on a scalar volume.
+  double iso = 0.0;
+  /// `vdb` method only: OpenVDB's adaptivity in [0, 1].
+  double adaptivity = 0.0;
+  /// Used when the input is a mask.
+  volume::DistanceFieldOptions distance;
+};
+
+/// A mask becomes its distance field; distance fields and scalars pass through.
+volume::Volume toContourable(const volume::Volume& volume, const volume::DistanceFieldOptions& options,
+                             Interrupter* interrupter = nullptr, Statistics* stats = nullptr);
+
+/// Contours `volume` (any kind) and returns the mesh in world space
+/// (Volume::geometry() applied), outward-oriented. Records timings and counts in `stats`.
+/// @throw InputError for invalid options; Interrupted on cancellation.
+mesh::Mesh extractMesh(const volume::Volume& volume, const ExtractOptions& options,
+                       Interrupter* interrupter = nullptr, Statistics* stats = nullptr);
+
+/// world = origin + spacing * index, applied in place (flips nothing: spacings are positive).
+void indexToWorld(mesh::Mesh& mesh, const volume::Geometry& geometry);
+
+}  // namespace isovdb::pipeline

@@ -1,0 +1,36 @@
+/// @file distance_field.h
+/// @brief Binary mask → narrow-band signed distance field (paper 000 §4.1), with OpenVDB tools.
+///
+/// Binary voxels carry no sub-voxel position: contouring them directly gives
+/// staircases. The distance field puts the surface half-way between inside and
+/// outside voxel centres and smooths nothing away: no morphological closing is
+/// applied by default, so the topology of the mask is kept.
+#pragma once
+
+#include "isovdb/progress.h"
+#include "isovdb/volume/volume.h"
+
+namespace isovdb::volume {
+
+struct DistanceFieldOptions {
+  /// Half-width of the narrow band, in voxels. Contouring needs at least 2;
+  /// larger bands cost memory proportional to the width.
+  int halfWidth = 3;
+  /// Morphological closing steps before the distance transform. 0 keeps the
+  /// mask's topology; >0 fills gaps of that many voxels (changes topology).
+  int closingSteps = 0;
+  /// Re-solve the Eikonal equation in the band by fast sweeping (tools::sdfToSdf)
+  /// after OpenVDB's topologyToLevelSet: distances within 0.4 voxel of exact
+  /// instead of 1.3 on a sphere, for about twice the time.
+  bool redistance = true;
+};
+
+/// Signed distance to the boundary of the mask, in voxels, NEGATIVE inside.
+/// Voxels farther than halfWidth are inactive with value ±halfWidth (their sign
+/// is still right). Memory: O(surface · halfWidth).
+/// @pre `mask.kind() == VolumeKind::Mask`
+/// @throw InputError for another kind; Interrupted on cancellation.
+Volume distanceField(const Volume& mask, const DistanceFieldOptions& options = {},
+                     Interrupter* interrupter = nullptr);
+
+}  // namespace isovdb::volume

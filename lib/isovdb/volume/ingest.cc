@@ -1,0 +1,195 @@
+#include "isovdb/volume/ingest.h"
+
+#include <tbb/parallel_for.h>
+
+#include <openvdb/tools/Prune.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "isovdb/volume/grids.h"
+
+namespace isovdb::volume {
+
+namespace {
+
+constexpr int kLeafDim = 8;  // OpenVDB leaf nodes are 8^3
+constexpr int kPruneEvery = 128;  // level-1 internal nodes span 128 voxels
+
+Geometry geometryOf(const io::VolumeHeader& header) {
+  return Geometry{.spacing = header.spacing, .origin = header.origin};
+}
+
+/// Reads up to 8 slices into `slab` (x fastest, then y, then z) and returns how many.
+template <typename Classify>
+int readSlab(io::SliceStream& stream, std::vector<float>& slice, Classify&& store) {
+  const io::VolumeHeader& header = stream.header();
+  const std::int64_t remaining = header.dims[2] - stream.nextSlice();
+  const int depth = static_cast<int>(std::min<std::int64_t>(kLeafDim, remaining));
+  for (int z = 0; z < depth; ++z) {
+    stream.readSlice(slice.data());
+    store(z, slice);
+  }
+  return depth;
+}
+
+/// One 8x8 column block of a slab: the leaf-sized block at (bx, by).
+struct BlockRange {
+  int x0, y0, x1, y1, depth;  // voxel range [x0,x1) x [y0,y1) x [0,depth)
+  bool complete() const { return x1 - x0 == kLeafDim && y1 - y0 == kLeafDim && depth == kLeafDim; }
+};
+
+BlockRange blockRange(const io::VolumeHeader& header, int bx, int by, int depth) {
+  const int x0 = bx * kLeafDim, y0 = by * kLeafDim;
+  return BlockRange{x0, y0, static_cast<int>(std::min<std::int64_t>(x0 + kLeafDim, header.dims[0])),
+                    static_cast<int>(std::min<std::int64_t>(y0 + kLeafDim, header.dims[1])), depth};
+}
+
+void checkDims(const io::SliceStream& stream) {
+  const auto& dims = stream.header().dims;
+  constexpr std::int64_t kMaxDim = std::int64_t{1} << 30;  // openvdb::Coord is 32-bit
+  for (int a = 0; a < 3; ++a)
+    if (dims[a] <= 0 || dims[a] > kMaxDim)
+      throw InputError("'" + stream.source() + "': dimension " + std::to_string(a) + " is " +
+                       std::to_string(dims[a]) + ", expected 1.." + std::to_string(kMaxDim));
+}
+
+}  // namespace
+
+Volume ingestMask(io::SliceStream& stream, const MaskRule& rule, Interrupter* interrupter) {
+  checkDims(stream);
+  ProgressStage progress(interrupter, "ingest mask");
+  const io::VolumeHeader& header = stream.header();
+  const std::int64_t nx = header.dims[0], ny = header.dims[1], nz = header.dims[2];
+  const int blocksX = static_cast<int>((nx + kLeafDim - 1) / kLeafDim);
+  const int blocksY = static_cast<int>((ny + kLeafDim - 1) / kLeafDim);
+
+  auto grid = MaskGrid::create(false);
+  MaskGrid::TreeType& tree = grid->tree();
+  std::vector<float> slice(static_cast<std::size_t>(nx * ny));
+  std::vector<std::uint8_t> inside(static_cast<std::size_t>(nx * ny * kLeafDim));
+  // Per block of the slab: 0 = empty, 1 = full, 2 = partial (leaf in `leaves`).
+  std::vector<std::uint8_t> state(static_cast<std::size_t>(blocksX) * blocksY);
+  std::vector<MaskGrid::TreeType::LeafNodeType*> leaves(state.size(), nullptr);
+
+  for (std::int64_t z0 = 0; z0 < nz; z0 += kLeafDim) {
+    const int depth = readSlab(stream, slice, [&](int z, const std::vector<float>& values) {
+      std::uint8_t* out = inside.data() + static_cast<std::size_t>(z) * nx * ny;
+      for (std::size_t i = 0; i < values.size(); ++i) out[i] = rule.inside(values[i]) ? 1 : 0;
+    });
+    // Classify the slab's blocks in parallel; leaves are allocated here too.
+    tbb::parallel_for(0, blocksY, [&](int by) {
+      for (int bx = 0; bx < blocksX; ++bx) {
+        const BlockRange r = blockRange(header, bx, by, depth);
+        int count = 0;
+        for (int z = 0; z < r.depth; ++z)
+          for (int y = r.y0; y < r.y1; ++y)
+            for (int x = r.x0; x < r.x1; ++x) count += inside[(z * ny + y) * nx + x];
+        const std::size_t b = static_cast<std::size_t>(by) * blocksX + bx;
+        if (count == 0) {
+          state[b] = 0;
+        } else if (r.complete() && count == kLeafDim * kLeafDim * kLeafDim) {
+          state[b] = 1;
+        } else {
+          state[b] = 2;
+          auto* leaf = new MaskGrid::TreeType::LeafNodeType(
+              openvdb::Coord(r.x0, r.y0, static_cast<int>(z0)), false, false);
+          for (int z = 0; z < r.depth; ++z)
+            for (int y = r.y0; y < r.y1; ++y)
+              for (int x = r.x0; x < r.x1; ++x)
+                if (inside[(z * ny + y) * nx + x])
+                  leaf->setValueOn(openvdb::Coord(x, y, static_cast<int>(z0) + z), true);
+          leaves[b] = leaf;
+        }
+      }
+    });
+    // Insert serially, in block order, so the tree is the same for any thread count.
+    for (std::size_t b = 0; b < state.size(); ++b) {
+      const openvdb::Coord origin(static_cast<int>(b % blocksX) * kLeafDim,
+                                  static_cast<int>(b / blocksX) * kLeafDim, static_cast<int>(z0));
+      if (state[b] == 1) tree.addTile(1, origin, true, true);
+      if (state[b] == 2) {
+        tree.addLeaf(leaves[b]);
+        leaves[b] = nullptr;
+      }
+    }
+    if ((z0 + kLeafDim) % kPruneEvery == 0) openvdb::tools::prune(tree);
+    progress.update(static_cast<double>(z0 + depth), static_cast<double>(nz));
+  }
+  openvdb::tools::prune(tree);
+  grid->setName("mask");
+  return Volume(VolumeKind::Mask, grid, geometryOf(header), stream.source());
+}
+
+Volume ingestScalar(io::SliceStream& stream, const ScalarIngestOptions& options,
+                    Interrupter* interrupter) {
+  checkDims(stream);
+  ProgressStage progress(interrupter, "ingest scalar");
+  const io::VolumeHeader& header = stream.header();
+  const std::int64_t nx = header.dims[0], ny = header.dims[1], nz = header.dims[2];
+  const int blocksX = static_cast<int>((nx + kLeafDim - 1) / kLeafDim);
+  const int blocksY = static_cast<int>((ny + kLeafDim - 1) / kLeafDim);
+
+  auto grid = FieldGrid::create(options.background);
+  FieldGrid::TreeType& tree = grid->tree();
+  std::vector<float> slice(static_cast<std::size_t>(nx * ny));
+  std::vector<float> slab(static_cast<std::size_t>(nx * ny * kLeafDim));
+  std::vector<FieldGrid::TreeType::LeafNodeType*> leaves(static_cast<std::size_t>(blocksX) * blocksY);
+  std::vector<std::uint8_t> state(leaves.size());  // 0 background, 1 constant tile, 2 leaf
+  std::vector<float> tileValue(leaves.size());
+  const float tol = options.tolerance;
+
+  for (std::int64_t z0 = 0; z0 < nz; z0 += kLeafDim) {
+    const int depth = readSlab(stream, slice, [&](int z, const std::vector<float>& values) {
+      std::copy(values.begin(), values.end(), slab.begin() + static_cast<std::ptrdiff_t>(z * nx * ny));
+    });
+    tbb::parallel_for(0, blocksY, [&](int by) {
+      for (int bx = 0; bx < blocksX; ++bx) {
+        const BlockRange r = blockRange(header, bx, by, depth);
+        const std::size_t b = static_cast<std::size_t>(by) * blocksX + bx;
+        float lo = slab[(0 * ny + r.y0) * nx + r.x0], hi = lo;
+        for (int z = 0; z < r.depth; ++z)
+          for (int y = r.y0; y < r.y1; ++y)
+            for (int x = r.x0; x < r.x1; ++x) {
+              const float v = slab[(z * ny + y) * nx + x];
+              lo = std::min(lo, v);
+              hi = std::max(hi, v);
+            }
+        const bool constant = hi - lo <= tol;
+        if (constant && std::abs(lo - options.background) <= tol && std::abs(hi - options.background) <= tol) {
+          state[b] = 0;
+        } else if (constant && r.complete()) {
+          state[b] = 1;
+          tileValue[b] = lo;
+        } else {
+          state[b] = 2;
+          auto* leaf = new FieldGrid::TreeType::LeafNodeType(
+              openvdb::Coord(r.x0, r.y0, static_cast<int>(z0)), options.background, false);
+          for (int z = 0; z < r.depth; ++z)
+            for (int y = r.y0; y < r.y1; ++y)
+              for (int x = r.x0; x < r.x1; ++x)
+                leaf->setValueOn(openvdb::Coord(x, y, static_cast<int>(z0) + z),
+                                 slab[(z * ny + y) * nx + x]);
+          leaves[b] = leaf;
+        }
+      }
+    });
+    for (std::size_t b = 0; b < state.size(); ++b) {
+      const openvdb::Coord origin(static_cast<int>(b % blocksX) * kLeafDim,
+                                  static_cast<int>(b / blocksX) * kLeafDim, static_cast<int>(z0));
+      if (state[b] == 1) tree.addTile(1, origin, tileValue[b], true);
+      if (state[b] == 2) {
+        tree.addLeaf(leaves[b]);
+        leaves[b] = nullptr;
+      }
+    }
+    if ((z0 + kLeafDim) % kPruneEvery == 0) openvdb::tools::prune(tree, tol);
+    progress.update(static_cast<double>(z0 + depth), static_cast<double>(nz));
+  }
+  openvdb::tools::prune(tree, tol);
+  grid->setName("field");
+  return Volume(VolumeKind::Scalar, grid, geometryOf(header), stream.source());
+}
+
+}  // namespace isovdb::volume

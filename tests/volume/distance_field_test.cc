@@ -1,0 +1,76 @@
+#include "isovdb/volume/distance_field.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "isovdb/volume/grids.h"
+#include "isovdb/volume/ingest.h"
+#include "support/vector_slice_stream.h"
+
+namespace isovdb::volume {
+namespace {
+
+using test::VectorSliceStream;
+
+constexpr float kRadius = 20.3f;
+constexpr float kCentre = 31.6f;
+
+Volume sphereMask() {
+  VectorSliceStream stream = VectorSliceStream::fromFunction({64, 64, 64}, [](int x, int y, int z) {
+    return std::hypot(x - kCentre, y - kCentre, z - kCentre) < kRadius ? 1.f : 0.f;
+  });
+  return ingestMask(stream, {});
+}
+
+TEST(DistanceField, SignsAreRightEverywhere) {
+  const Volume mask = sphereMask();
+  const Volume sdf = distanceField(mask, {.halfWidth = 3});
+  ASSERT_EQ(sdf.kind(), VolumeKind::DistanceField);
+  const FieldGrid& grid = fieldGrid(sdf);
+  EXPECT_EQ(grid.getGridClass(), openvdb::GRID_LEVEL_SET);
+  auto sdfAcc = grid.getConstAccessor();
+  auto maskAcc = maskGrid(mask).getConstAccessor();
+  // Every voxel of the box and a margin around it: inside the mask <=> negative,
+  // whether the voxel is in the narrow band or not.
+  for (int z = -4; z < 68; ++z)
+    for (int y = -4; y < 68; ++y)
+      for (int x = -4; x < 68; ++x) {
+        const openvdb::Coord c(x, y, z);
+        const float d = sdfAcc.getValue(c);
+        ASSERT_EQ(maskAcc.isValueOn(c), d < 0) << x << "," << y << "," << z << " d=" << d;
+      }
+}
+
+TEST(DistanceField, WithinOneVoxelOfTheAnalyticDistance) {
+  const Volume sdf = distanceField(sphereMask(), {.halfWidth = 3});
+  const FieldGrid& grid = fieldGrid(sdf);
+  double worst = 0;
+  std::int64_t band = 0;
+  for (auto it = grid.cbeginValueOn(); it; ++it) {
+    const openvdb::Coord c = it.getCoord();
+    const float exact = std::hypot(c.x() - kCentre, c.y() - kCentre, c.z() - kCentre) - kRadius;
+    if (std::abs(exact) > 2.5f) continue;  // the band's outer rim is clamped by construction
+    worst = std::max(worst, static_cast<double>(std::abs(*it - exact)));
+    ++band;
+  }
+  EXPECT_GT(band, 10000);
+  EXPECT_LT(worst, 1.0) << "max |sdf - exact| over " << band << " band voxels";
+}
+
+TEST(DistanceField, BandFollowsTheSurface) {
+  const Volume sdf = distanceField(sphereMask(), {.halfWidth = 3});
+  const auto stats = sdf.stats();
+  // A thin shell: far fewer active voxels than the 35k voxels inside the sphere.
+  EXPECT_LT(stats.activeVoxels, 4 * 3.15 * kRadius * kRadius * 8);
+  EXPECT_GT(stats.activeVoxels, 4 * 3.14 * kRadius * kRadius * 4);
+}
+
+TEST(DistanceField, RejectsNonMaskAndBadWidth) {
+  const Volume sdf = distanceField(sphereMask());
+  EXPECT_THROW(distanceField(sdf), InputError);
+  EXPECT_THROW(distanceField(sphereMask(), {.halfWidth = 0}), InputError);
+}
+
+}  // namespace
+}  // namespace isovdb::volume
