@@ -1,0 +1,31 @@
+/// @file gradient.h
+/// @brief Prewitt 3x3x3 gradient of the distance field (paper 000, section 4.2.2).
+///
+/// The x derivative at a sample is the mean over the 3 x 3 samples of the
+/// (y, z) neighbourhood of the central difference (v(i+1) - v(i-1)) / 2, in
+/// value units per voxel; likewise for y and z. For an SDF (negative inside)
+/// the gradient points outward. Positions are meta-cell offsets.
+#pragma once
+
+#include <array>
+
+#include "isovdb/octree/meta_cell_samples.h"
+
+namespace isovdb::contour {
+
+using Vec3f = std::array<float, 3>;
+
+/// @brief Prewitt gradient at sample offset (i, j, k).
+/// @pre i, j, k in [0, S] (the apron supplies the outer neighbours).
+Vec3f prewittGradient(const octree::MetaCellSamples& samples, int i, int j, int k) noexcept;
+
+/// @brief Gradient at the point `sample0 + t * e_axis` of a grid line, linearly
+///        interpolated between the Prewitt gradients of its two end samples.
+/// @pre sample0 and sample0 + e_axis in [0, S]^3; t in [0, 1].
+Vec3f prewittGradientOnEdge(const octree::MetaCellSamples& samples, std::array<int, 3> sample0, int axis,
+                            float t) noexcept;
+
+/// @brief Unit vector of v, or (0, 0, 0) when |v| is 0 or not finite.
+Vec3f normalized(const Vec3f& v) noexcept;
+
+}  // namespace isovdb::contour

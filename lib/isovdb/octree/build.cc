@@ -1,0 +1,331 @@
+#include "isovdb/octree/build.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include <bit>
+#include <string>
+
+#include "isovdb/contour/dual_vertex.h"
+#include "isovdb/errors.h"
+#include "isovdb/octree/criteria.h"
+
+namespace isovdb::octree {
+
+namespace {
+
+/// Open-addressing hash map MortonKey -> int32 (linear probing, no erase).
+class KeyMap {
+ public:
+  explicit KeyMap(std::size_t expected = 1024) { rehash(std::bit_ceil(expected * 2 + 16)); }
+
+  std::int32_t* find(MortonKey key) noexcept {
+    for (std::size_t i = slot(key);; i = (i + 1) & mask_) {
+      if (keys_[i] == key) return &values_[i];
+      if (keys_[i] == kInvalidKey) return nullptr;
+    }
+  }
+  void assign(MortonKey key, std::int32_t value) {
+    if ((count_ + 1) * 2 > keys_.size()) rehash(keys_.size() * 2);
+    std::size_t i = slot(key);
+    while (keys_[i] != kInvalidKey && keys_[i] != key) i = (i + 1) & mask_;
+    if (keys_[i] == kInvalidKey) ++count_;
+    keys_[i] = key;
+    values_[i] = value;
+  }
+
+ private:
+  std::size_t slot(MortonKey key) const noexcept {
+    return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 20) & mask_;
+  }
+  void rehash(std::size_t capacity) {
+    std::vector<MortonKey> oldKeys = std::move(keys_);
+    std::vector<std::int32_t> oldValues = std::move(values_);
+    keys_.assign(capacity, kInvalidKey);
+    values_.assign(capacity, 0);
+    mask_ = capacity - 1;
+    count_ = 0;
+    for (std::size_t i = 0; i < oldKeys.size(); ++i)
+      if (oldKeys[i] != kInvalidKey) assign(oldKeys[i], oldValues[i]);
+  }
+  std::vector<MortonKey> keys_;
+  std::vector<std::int32_t> values_;
+  std::size_t mask_ = 0;
+  std::size_t count_ = 0;
+};
+
+constexpr std::int32_t kInternal = -1;
+
+/// Result of evaluating one cell.
+struct Evaluation {
+  OctreeLeaf leaf;
+  bool split = false;
+  bool classified = false;
+  bool complex = false;
+  bool geometric = false;  // split only because of the QEF criterion
+  bool interiorOnly = false;
+  std::uint8_t complexEdges = 0;
+  std::uint8_t complexFaces = 0;
+};
+
+class Builder {
+ public:
+  Builder(const MetaCellSamples& samples, const OctreeOptions& options, OctreeDepths depths)
+      : samples_(samples), options_(options), depths_(depths) {
+    classify_.iso = options.iso;
+    classify_.detectInteriorComponents = options.detectInteriorComponents;
+  }
+
+  Evaluation evaluate(MortonKey key, FaceLabeller& labeller) const {
+    Evaluation ev;
+    const KeyCoord c = decodeKey(key);
+    const int size = samples_.size >> c.depth;
+    ev.leaf.key = key;
+    ev.leaf.depth = static_cast<std::uint8_t>(c.depth);
+    ev.leaf.size = size;
+    ev.leaf.origin = {c.xyz[0] * size, c.xyz[1] * size, c.xyz[2] * size};
+    if (c.depth < depths_.minDepth) {
+      ev.split = true;
+      return ev;
+    }
+    ev.classified = true;
+    const CellTopology topo = classifyCell(samples_, ev.leaf.origin, size, classify_, labeller);
+    ev.leaf.cornerSigns = topo.cornerSigns;
+    ev.leaf.surface = topo.isHeterogeneous();
+    ev.complex = topo.isComplex();
+    ev.interiorOnly = ev.complex && topo.complexEdges == 0 && topo.complexFaces == 0;
+    ev.complexEdges = static_cast<std::uint8_t>(std::popcount(topo.complexEdges));
+    ev.complexFaces = static_cast<std::uint8_t>(std::popcount(topo.complexFaces));
+    const bool canSplit = c.depth < depths_.maxDepth;
+    if (!canSplit) {
+      ev.leaf.complex = ev.complex;
+      return ev;
+    }
+    if (ev.complex) {
+      ev.split = true;
+    } else if (options_.construction == OctreeConstruction::Regular) {
+      ev.split = ev.leaf.surface;
+    } else if (options_.qefTolerance >= 0.0f && ev.leaf.surface) {
+      const contour::DualVertex v = contour::computeDualVertex(
+          samples_, ev.leaf.origin, size, ev.leaf.bipolarEdges(),
+          contour::DualVertexOptions{.iso = options_.iso, .singularValueThreshold = options_.singularValueThreshold});
+      ev.split = ev.geometric = v.valid() && v.rmsError() > options_.qefTolerance;
+    }
+    return ev;
+  }
+
+  void count(const Evaluation& ev) {
+    if (!ev.classified) return;
+    ++stats_.cellsClassified[ev.leaf.depth];
+    stats_.complexEdges += ev.complexEdges;
+    stats_.complexFaces += ev.complexFaces;
+    stats_.interiorComponents += ev.interiorOnly;
+    stats_.complexCells += ev.complex;
+    stats_.geometricSplits += ev.geometric;
+  }
+
+  /// Level-by-level top-down construction; each level's cells are evaluated in parallel.
+  void buildTopDown(Interrupter* interrupter) {
+    stats_.cellsClassified.assign(static_cast<std::size_t>(depths_.maxDepth) + 1, 0);
+    const ProgressStage progress(interrupter, "octree");
+    std::vector<MortonKey> level{kRootKey};
+    std::vector<Evaluation> evals;
+    tbb::enumerable_thread_specific<FaceLabeller> labellers;
+    for (int depth = 0; !level.empty(); ++depth) {
+      progress.update(depth, depths_.maxDepth + 1);
+      evals.resize(level.size());
+      auto body = [&](const tbb::blocked_range<std::size_t>& r) {
+        FaceLabeller& labeller = labellers.local();
+        for (std::size_t i = r.begin(); i != r.end(); ++i) evals[i] = evaluate(level[i], labeller);
+      };
+      const tbb::blocked_range<std::size_t> range(0, level.size(), 16);
+      if (options_.parallel && level.size() > 1)
+        tbb::parallel_for(range, body);
+      else
+        body(range);
+      std::vector<MortonKey> next;
+      for (const Evaluation& ev : evals) {
+        count(ev);
+        if (ev.split) {
+          map_.assign(ev.leaf.key, kInternal);
+          for (int o = 0; o < 8; ++o) next.push_back(childKey(ev.leaf.key, o));
+        } else {
+          addLeaf(ev);
+        }
+      }
+      level.swap(next);
+    }
+  }
+
+  /// Splits leaf record `index` and evaluates its children; children that want
+  /// a split are refined recursively. Returns nothing; records are appended.
+  void splitLeaf(std::int32_t index, FaceLabeller& labeller) {
+    std::vector<MortonKey> stack;
+    const MortonKey key = records_[static_cast<std::size_t>(index)].leaf.key;
+    alive_[static_cast<std::size_t>(index)] = false;
+    map_.assign(key, kInternal);
+    for (int o = 7; o >= 0; --o) stack.push_back(childKey(key, o));
+    while (!stack.empty()) {
+      const MortonKey k = stack.back();
+      stack.pop_back();
+      const Evaluation ev = evaluate(k, labeller);
+      count(ev);
+      if (ev.split) {
+        map_.assign(k, kInternal);
+        for (int o = 7; o >= 0; --o) stack.push_back(childKey(k, o));
+      } else {
+        addLeaf(ev);
+      }
+    }
+  }
+
+  /// Restores 2:1 balance over faces, edges and corners, refining complex
+  /// children created on the way, until nothing changes.
+  void balance(Interrupter* interrupter) {
+    FaceLabeller labeller;
+    const ProgressStage progress(interrupter, "octree balance");
+    bool changed = true;
+    while (changed) {
+      changed = false;
+      for (int depth = depths_.maxDepth; depth >= 2; --depth) {
+        progress.update(depths_.maxDepth - depth, depths_.maxDepth);
+        std::vector<std::int32_t> atDepth;
+        for (std::size_t i = 0; i < records_.size(); ++i)
+          if (alive_[i] && records_[i].leaf.depth == depth) atDepth.push_back(static_cast<std::int32_t>(i));
+        for (const std::int32_t li : atDepth) {
+          if (!alive_[static_cast<std::size_t>(li)]) continue;
+          const MortonKey key = records_[static_cast<std::size_t>(li)].leaf.key;
+          for (int dz = -1; dz <= 1; ++dz)
+            for (int dy = -1; dy <= 1; ++dy)
+              for (int dx = -1; dx <= 1; ++dx) {
+                if (dx == 0 && dy == 0 && dz == 0) continue;
+                const MortonKey n = neighbourKey(key, dx, dy, dz);
+                if (n == kInvalidKey) continue;
+                // Is the node at depth - 2 containing n a leaf or missing (covered by a coarser leaf)?
+                for (;;) {
+                  MortonKey a = ancestorKey(n, depth - 2);
+                  std::int32_t* v = map_.find(a);
+                  while (v == nullptr) {
+                    a = parentKey(a);
+                    v = map_.find(a);
+                  }
+                  if (*v == kInternal) break;
+                  ++stats_.balanceSplits;
+                  splitLeafOnce(*v, labeller);
+                  changed = true;
+                }
+              }
+        }
+      }
+      // Complex (or geometrically rough) leaves created by balancing get refined.
+      const std::size_t n = records_.size();
+      for (std::size_t i = 0; i < n; ++i)
+        if (alive_[i] && records_[i].split) {
+          splitLeaf(static_cast<std::int32_t>(i), labeller);
+          changed = true;
+        }
+    }
+  }
+
+  /// Splits a leaf into 8 child leaves (no recursion: balance keeps its own order).
+  void splitLeafOnce(std::int32_t index, FaceLabeller& labeller) {
+    const MortonKey key = records_[static_cast<std::size_t>(index)].leaf.key;
+    alive_[static_cast<std::size_t>(index)] = false;
+    map_.assign(key, kInternal);
+    for (int o = 0; o < 8; ++o) {
+      const Evaluation ev = evaluate(childKey(key, o), labeller);
+      count(ev);
+      addLeaf(ev);  // a child that wants a split is refined by the pass after the ripple
+    }
+  }
+
+  LinearOctree finish(OctreeBuildStats* stats) {
+    std::vector<OctreeLeaf> leaves;
+    leaves.reserve(records_.size());
+    for (std::size_t i = 0; i < records_.size(); ++i)
+      if (alive_[i]) {
+        leaves.push_back(records_[i].leaf);
+        stats_.unresolvedComplexLeaves += records_[i].leaf.complex;
+      }
+    if (stats) *stats = stats_;
+    return LinearOctree(samples_.size, samples_.origin, std::move(leaves));
+  }
+
+ private:
+  struct Record {
+    OctreeLeaf leaf;
+    bool split = false;  // evaluated as wanting a split (set for leaves created by balancing)
+  };
+
+  void addLeaf(const Evaluation& ev) {
+    const auto index = static_cast<std::int32_t>(records_.size());
+    records_.push_back(Record{ev.leaf, ev.split});
+    alive_.push_back(true);
+    map_.assign(ev.leaf.key, index);
+  }
+
+  const MetaCellSamples& samples_;
+  const OctreeOptions& options_;
+  OctreeDepths depths_;
+  CellClassifyOptions classify_;
+  OctreeBuildStats stats_;
+  std::vector<Record> records_;
+  std::vector<bool> alive_;
+  KeyMap map_;
+};
+
+int checkedDepth(int metaCellSize, int cellSize, const char* field) {
+  if (cellSize < 1 || cellSize > metaCellSize || (cellSize & (cellSize - 1)) != 0)
+    throw InputError(std::string("octree options: ") + field + ": expected a power of two in [1, " +
+                     std::to_string(metaCellSize) + "], got " + std::to_string(cellSize));
+  return depthForCellSize(metaCellSize, cellSize);
+}
+
+}  // namespace
+
+OctreeDepths resolveDepths(const OctreeOptions& options, int metaCellSize) {
+  if (metaCellSize < 1 || (metaCellSize & (metaCellSize - 1)) != 0)
+    throw InputError("octree: meta-cell size: expected a power of two, got " + std::to_string(metaCellSize));
+  const int finest = depthForCellSize(metaCellSize, 1);
+  if (finest > kMaxKeyDepth) throw InputError("octree: meta-cell size too large for 64-bit Morton keys");
+  OctreeDepths d;
+  d.maxDepth = options.finestCellSize > 0 ? checkedDepth(metaCellSize, options.finestCellSize, "finestCellSize")
+               : options.maxDepth < 0     ? finest
+                                          : options.maxDepth;
+  d.minDepth = options.maxCellSize > 0 ? checkedDepth(metaCellSize, options.maxCellSize, "maxCellSize")
+                                       : options.minDepth;
+  if (d.maxDepth > finest)
+    throw InputError("octree options: maxDepth: expected at most " + std::to_string(finest) + " (1-voxel cells), got " +
+                     std::to_string(d.maxDepth));
+  if (d.minDepth < 0 || d.minDepth > d.maxDepth)
+    throw InputError("octree options: minDepth: expected in [0, maxDepth = " + std::to_string(d.maxDepth) +
+                     "], got " + std::to_string(d.minDepth));
+  return d;
+}
+
+LinearOctree buildOctree(const MetaCellSamples& samples, const OctreeOptions& options, OctreeBuildStats* stats,
+                         Interrupter* interrupter) {
+  const OctreeDepths depths = resolveDepths(options, samples.size);
+  Builder builder(samples, options, depths);
+  builder.buildTopDown(interrupter);
+  if (options.construction == OctreeConstruction::Adaptive) builder.balance(interrupter);
+  return builder.finish(stats);
+}
+
+bool isBalanced(const LinearOctree& octree) {
+  for (const OctreeLeaf& l : octree.leaves()) {
+    if (l.depth < 2) continue;
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const MortonKey n = neighbourKey(l.key, dx, dy, dz);
+          if (n == kInvalidKey || n == l.key) continue;
+          const std::int64_t j = octree.findLeafContaining(n);
+          if (j != LinearOctree::kNone && octree.leaf(static_cast<std::size_t>(j)).depth + 1 < l.depth) return false;
+        }
+  }
+  return true;
+}
+
+}  // namespace isovdb::octree

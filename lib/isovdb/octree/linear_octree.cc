@@ -1,0 +1,107 @@
+#include "isovdb/octree/linear_octree.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <numeric>
+
+namespace isovdb::octree {
+
+LinearOctree::LinearOctree(int metaCellSize, std::array<int, 3> metaCellOrigin, std::vector<OctreeLeaf> leaves)
+    : size_(metaCellSize),
+      finestDepth_(depthForCellSize(metaCellSize, 1)),
+      origin_(metaCellOrigin),
+      leaves_(std::move(leaves)) {
+  const int fd = finestDepth_;
+  std::sort(leaves_.begin(), leaves_.end(), [fd](const OctreeLeaf& a, const OctreeLeaf& b) {
+    return zOrderCode(a.key, fd) < zOrderCode(b.key, fd);
+  });
+  codes_.resize(leaves_.size());
+  for (std::size_t i = 0; i < leaves_.size(); ++i) codes_[i] = zOrderCode(leaves_[i].key, fd);
+#ifndef NDEBUG
+  std::uint64_t volume = 0;
+  for (const auto& l : leaves_) volume += std::uint64_t{1} << (3 * (fd - l.depth));
+  assert(leaves_.empty() || volume == (std::uint64_t{1} << (3 * fd)));
+#endif
+}
+
+std::int64_t LinearOctree::findLeafContainingVoxel(std::array<int, 3> voxel) const noexcept {
+  for (int a = 0; a < 3; ++a)
+    if (voxel[a] < 0 || voxel[a] >= size_) return kNone;
+  if (codes_.empty()) return kNone;
+  const std::uint64_t code = zOrderCode(encodeKey(finestDepth_, voxel), finestDepth_);
+  const auto it = std::upper_bound(codes_.begin(), codes_.end(), code);
+  if (it == codes_.begin()) return kNone;
+  const std::int64_t index = (it - codes_.begin()) - 1;
+  const OctreeLeaf& l = leaves_[static_cast<std::size_t>(index)];
+  for (int a = 0; a < 3; ++a)
+    if (voxel[a] < l.origin[a] || voxel[a] >= l.origin[a] + l.size) return kNone;
+  return index;
+}
+
+std::int64_t LinearOctree::findLeafContaining(MortonKey key) const noexcept {
+  if (key == kInvalidKey) return kNone;
+  const int depth = keyDepth(key);
+  if (depth > finestDepth_) key = ancestorKey(key, finestDepth_);
+  const std::int64_t index = findLeafContainingVoxel(cellOrigin(key));
+  if (index == kNone) return kNone;
+  return isAncestorOrSelf(leaves_[static_cast<std::size_t>(index)].key, key) ? index : kNone;
+}
+
+std::int64_t LinearOctree::findLeaf(MortonKey key) const noexcept {
+  const std::int64_t index = findLeafContaining(key);
+  return index != kNone && leaves_[static_cast<std::size_t>(index)].key == key ? index : kNone;
+}
+
+std::int64_t LinearOctree::findLeafContaining(std::array<float, 3> point) const noexcept {
+  std::array<int, 3> voxel{};
+  for (int a = 0; a < 3; ++a) {
+    if (!(point[a] >= 0.0f && point[a] <= static_cast<float>(size_))) return kNone;
+    voxel[a] = std::min(static_cast<int>(std::floor(point[a])), size_ - 1);
+  }
+  return findLeafContainingVoxel(voxel);
+}
+
+std::array<int, 3> LinearOctree::cellOrigin(MortonKey key) const noexcept {
+  const KeyCoord c = decodeKey(key);
+  const int s = size_ >> c.depth;
+  return {c.xyz[0] * s, c.xyz[1] * s, c.xyz[2] * s};
+}
+
+void LinearOctree::leavesAcrossFace(std::size_t index, int face, std::vector<std::size_t>& out) const {
+  out.clear();
+  const OctreeLeaf& l = leaves_[index];
+  const MortonKey n = faceNeighbourKey(l.key, face);
+  if (n == kInvalidKey) return;
+  const std::int64_t same = findLeafContaining(n);
+  if (same != kNone) {
+    out.push_back(static_cast<std::size_t>(same));
+    return;
+  }
+  // The neighbour is subdivided: its leaves are a contiguous Z-order range.
+  const int dn = keyDepth(n);
+  const std::uint64_t lo = zOrderCode(n, finestDepth_);
+  const std::uint64_t hi = lo + (std::uint64_t{1} << (3 * (finestDepth_ - dn)));
+  const int axis = face >> 1;
+  const int plane = (face & 1) ? l.origin[axis] + l.size : l.origin[axis];
+  for (auto it = std::lower_bound(codes_.begin(), codes_.end(), lo); it != codes_.end() && *it < hi; ++it) {
+    const std::size_t j = static_cast<std::size_t>(it - codes_.begin());
+    const OctreeLeaf& m = leaves_[j];
+    const bool touches = (face & 1) ? m.origin[axis] == plane : m.origin[axis] + m.size == plane;
+    if (touches) out.push_back(j);
+  }
+}
+
+std::array<std::int64_t, 4> LinearOctree::leavesAroundEdge(std::array<int, 3> start, int axis) const noexcept {
+  const auto uv = otherAxes(axis);
+  std::array<std::int64_t, 4> result{};
+  for (int q = 0; q < 4; ++q) {
+    std::array<int, 3> voxel = start;
+    voxel[uv[0]] += (q & 1) - 1;
+    voxel[uv[1]] += ((q >> 1) & 1) - 1;
+    result[static_cast<std::size_t>(q)] = findLeafContainingVoxel(voxel);
+  }
+  return result;
+}
+
+}  // namespace isovdb::octree

@@ -1,0 +1,19 @@
+#include "isovdb/octree/meta_cell_samples.h"
+
+#include <string>
+
+#include "isovdb/errors.h"
+
+namespace isovdb::octree {
+
+void MetaCellSamples::allocate(int newSize, std::array<int, 3> newOrigin, float fill) {
+  if (newSize < 1 || newSize > (1 << 16) || (newSize & (newSize - 1)) != 0)
+    throw InputError("meta-cell size: expected a power of two in [1, 65536], got " +
+                     std::to_string(newSize));
+  size = newSize;
+  origin = newOrigin;
+  const std::size_t n = static_cast<std::size_t>(newSize + 3);
+  values.assign(n * n * n, fill);
+}
+
+}  // namespace isovdb::octree

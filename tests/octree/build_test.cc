@@ -1,0 +1,201 @@
+// Tests of lib/isovdb/octree/build.h: regular vs adaptive constructions,
+// thin features, balance, determinism across thread counts.
+#include "isovdb/octree/build.h"
+
+#include <gtest/gtest.h>
+#include <tbb/task_arena.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+
+#include "isovdb/errors.h"
+#include "isovdb/octree/inspect.h"
+
+namespace isovdb::octree {
+namespace {
+
+MetaCellSamples sphere(int size, double cx, double cy, double cz, double r, std::array<int, 3> origin = {0, 0, 0}) {
+  return makeMetaCellSamples(size, origin, [=](int x, int y, int z) {
+    return std::sqrt((x - cx) * (x - cx) + (y - cy) * (y - cy) + (z - cz) * (z - cz)) - r;
+  });
+}
+
+/// True if the samples of the leaf's closed box are not all one phase.
+bool crossedBySurface(const MetaCellSamples& s, const OctreeLeaf& l, float iso = 0.0f) {
+  const bool first = isInside(s.value(l.origin), iso);
+  for (int k = 0; k <= l.size; ++k)
+    for (int j = 0; j <= l.size; ++j)
+      for (int i = 0; i <= l.size; ++i)
+        if (isInside(s.value(l.origin[0] + i, l.origin[1] + j, l.origin[2] + k), iso) != first) return true;
+  return false;
+}
+
+TEST(BuildOctree, ResolveDepthsFromDepthsOrCellSizes) {
+  EXPECT_EQ(resolveDepths({}, 128).maxDepth, 7);
+  EXPECT_EQ(resolveDepths({}, 128).minDepth, 2);
+  const OctreeDepths d = resolveDepths({.maxCellSize = 32, .finestCellSize = 2}, 128);
+  EXPECT_EQ(d.minDepth, 2);
+  EXPECT_EQ(d.maxDepth, 6);
+  EXPECT_THROW(resolveDepths({.finestCellSize = 3}, 128), InputError);
+  EXPECT_THROW(resolveDepths({.minDepth = 5, .maxDepth = 4}, 128), InputError);
+  EXPECT_THROW(resolveDepths({.maxDepth = 8}, 128), InputError);
+}
+
+class SphereR40 : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() { samples_ = new MetaCellSamples(sphere(128, 64.3, 63.7, 64.2, 40.0)); }
+  static void TearDownTestSuite() {
+    delete samples_;
+    samples_ = nullptr;
+  }
+  static MetaCellSamples* samples_;
+};
+MetaCellSamples* SphereR40::samples_ = nullptr;
+
+TEST_F(SphereR40, RegularPutsEverySurfaceLeafAtTheMaximumDepth) {
+  OctreeBuildStats stats;
+  const LinearOctree tree = buildOctree(*samples_, {.construction = OctreeConstruction::Regular}, &stats);
+  std::size_t surface = 0;
+  for (const OctreeLeaf& l : tree.leaves()) {
+    const bool crossed = crossedBySurface(*samples_, l);
+    ASSERT_EQ(l.surface, crossed) << l.key;
+    if (crossed) {
+      ASSERT_EQ(l.depth, 7) << l.key;
+      ++surface;
+    }
+    ASSERT_FALSE(l.complex);
+  }
+  EXPECT_GT(surface, 10000u);
+  EXPECT_EQ(summarizeOctree(tree).surfaceLeaves, surface);
+}
+
+TEST_F(SphereR40, AdaptiveIsBalancedAndThreeTimesSmaller) {
+  OctreeBuildStats regularStats, adaptiveStats;
+  const LinearOctree regular = buildOctree(*samples_, {.construction = OctreeConstruction::Regular}, &regularStats);
+  const LinearOctree adaptive = buildOctree(*samples_, {.construction = OctreeConstruction::Adaptive}, &adaptiveStats);
+  EXPECT_TRUE(isBalanced(adaptive));
+  const OctreeSummary r = summarizeOctree(regular), a = summarizeOctree(adaptive);
+  for (const OctreeLeaf& l : adaptive.leaves()) {
+    ASSERT_EQ(l.surface, crossedBySurface(*samples_, l));
+    ASSERT_FALSE(l.complex);
+  }
+  std::printf("[ sphere r=40, S=128, max depth 7 ] surface leaves: regular %zu, adaptive %zu (%.1fx); "
+              "leaves: regular %zu, adaptive %zu; adaptive balance splits %zu, complex cells %zu\n",
+              r.surfaceLeaves, a.surfaceLeaves, double(r.surfaceLeaves) / double(a.surfaceLeaves), r.leaves, a.leaves,
+              adaptiveStats.balanceSplits, adaptiveStats.complexCells);
+  EXPECT_GE(r.surfaceLeaves, 3 * a.surfaceLeaves);
+  for (int minDepth : {3, 4}) {
+    const OctreeSummary m = summarizeOctree(buildOctree(*samples_, {.minDepth = minDepth}));
+    std::printf("[ sphere r=40 ] adaptive, min depth %d: %zu surface leaves (%.1fx fewer than regular)\n", minDepth,
+                m.surfaceLeaves, double(r.surfaceLeaves) / double(m.surfaceLeaves));
+    EXPECT_GE(r.surfaceLeaves, 3 * m.surfaceLeaves);
+  }
+  // The regular tree is generally not balanced; the adaptive one is by construction.
+  OctreeOptions geometric{.construction = OctreeConstruction::Adaptive, .qefTolerance = 0.05f};
+  OctreeBuildStats gStats;
+  const LinearOctree refined = buildOctree(*samples_, geometric, &gStats);
+  EXPECT_TRUE(isBalanced(refined));
+  EXPECT_GE(summarizeOctree(refined).surfaceLeaves, a.surfaceLeaves);
+  std::printf("[ sphere r=40 ] adaptive + QEF tolerance 0.05: %zu surface leaves, %zu geometric splits\n",
+              summarizeOctree(refined).surfaceLeaves, gStats.geometricSplits);
+}
+
+TEST(BuildOctree, ThinSheetForcesTheMaximumDepth) {
+  // A sheet one voxel thick at z = 9 (odd, so no cell boundary above size 1 lies on it).
+  const MetaCellSamples s = makeMetaCellSamples(32, {0, 0, 0}, [](int, int, int z) { return std::abs(z - 9.0) - 0.5; });
+  for (auto construction : {OctreeConstruction::Adaptive, OctreeConstruction::Regular}) {
+    OctreeBuildStats stats;
+    const LinearOctree tree = buildOctree(s, {.construction = construction}, &stats);
+    std::size_t touching = 0;
+    for (const OctreeLeaf& l : tree.leaves()) {
+      if (l.origin[2] <= 9 && 9 <= l.origin[2] + l.size) {
+        ++touching;
+        EXPECT_EQ(l.size, 1) << "leaf " << l.key << " touches the sheet at size " << l.size;
+      }
+    }
+    EXPECT_EQ(touching, 2u * 32 * 32);
+    EXPECT_GT(stats.complexEdges, 0u);
+  }
+  // With the maximum depth capped at 4-voxel cells, the leaves holding the
+  // sheet stay complex and are reported.
+  OctreeBuildStats stats;
+  const LinearOctree capped = buildOctree(s, {.finestCellSize = 4}, &stats);
+  EXPECT_EQ(stats.unresolvedComplexLeaves, 8u * 8u);
+  EXPECT_EQ(summarizeOctree(capped).complexLeaves, 8u * 8u);
+}
+
+TEST(BuildOctree, SmallTunnelForcesTheMaximumDepth) {
+  // Solid everywhere except a tunnel one sample wide along z through (9, 9).
+  const MetaCellSamples s = makeMetaCellSamples(32, {0, 0, 0}, [](int x, int y, int) {
+    return 0.8 - std::sqrt((x - 9.0) * (x - 9.0) + (y - 9.0) * (y - 9.0));
+  });
+  for (auto construction : {OctreeConstruction::Adaptive, OctreeConstruction::Regular}) {
+    OctreeBuildStats stats;
+    const LinearOctree tree = buildOctree(s, {.construction = construction}, &stats);
+    std::size_t touching = 0;
+    for (const OctreeLeaf& l : tree.leaves()) {
+      if (l.origin[0] <= 9 && 9 <= l.origin[0] + l.size && l.origin[1] <= 9 && 9 <= l.origin[1] + l.size) {
+        ++touching;
+        EXPECT_EQ(l.size, 1) << "leaf " << l.key << " touches the tunnel at size " << l.size;
+      }
+    }
+    EXPECT_EQ(touching, 4u * 32);
+    if (construction == OctreeConstruction::Adaptive) {
+      EXPECT_GT(stats.complexFaces, 0u);
+    }
+  }
+}
+
+TEST(BuildOctree, AdaptiveKeepsUnsubdividedFarFromTheSurface) {
+  const MetaCellSamples s = sphere(64, 8.5, 8.5, 8.5, 4.0);
+  const LinearOctree tree = buildOctree(s, {.minDepth = 1});
+  const OctreeSummary sum = summarizeOctree(tree);
+  EXPECT_TRUE(isBalanced(tree));
+  EXPECT_EQ(sum.leavesPerDepth[1], 7u);  // the far octants stay whole
+  EXPECT_GT(sum.surfaceLeaves, 0u);
+}
+
+TEST(BuildOctree, DeterministicFor1And2And8Threads) {
+  // A bumpy field with many complex cells.
+  const MetaCellSamples s = makeMetaCellSamples(64, {64, 0, -64}, [](int x, int y, int z) {
+    return 3.0 * std::sin(0.45 * x) * std::cos(0.31 * y) + 2.0 * std::sin(0.27 * z + 0.2 * x) + 0.3;
+  });
+  std::vector<std::vector<OctreeLeaf>> results;
+  for (int threads : {1, 2, 8}) {
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+      for (auto construction : {OctreeConstruction::Regular, OctreeConstruction::Adaptive}) {
+        const LinearOctree tree = buildOctree(s, {.construction = construction, .qefTolerance = 0.2f});
+        results.push_back(tree.leaves());
+      }
+    });
+  }
+  ASSERT_EQ(results.size(), 6u);
+  for (std::size_t i = 2; i < results.size(); ++i) {
+    const auto& a = results[i % 2];
+    const auto& b = results[i];
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t j = 0; j < a.size(); ++j) {
+      ASSERT_EQ(a[j].key, b[j].key);
+      ASSERT_EQ(a[j].cornerSigns, b[j].cornerSigns);
+      ASSERT_EQ(a[j].surface, b[j].surface);
+      ASSERT_EQ(a[j].complex, b[j].complex);
+    }
+  }
+}
+
+TEST(BuildOctree, IsoValueAndExactIsoSamples) {
+  // A constant field equal to iso is all inside: no surface anywhere.
+  const MetaCellSamples flat = makeMetaCellSamples(16, {0, 0, 0}, [](int, int, int) { return 0.0; });
+  const LinearOctree tree = buildOctree(flat, {.minDepth = 0});
+  EXPECT_EQ(tree.leafCount(), 1u);
+  EXPECT_EQ(tree.leaf(0).cornerSigns, 0xff);
+  EXPECT_FALSE(tree.leaf(0).surface);
+  // Same field, iso just below: all outside.
+  EXPECT_EQ(buildOctree(flat, {.minDepth = 0, .iso = -0.5f}).leaf(0).cornerSigns, 0);
+}
+
+}  // namespace
+}  // namespace isovdb::octree
