@@ -1,6 +1,7 @@
 #include "isovdb/volume/distance_field.h"
 
 #include <openvdb/tools/FastSweeping.h>
+#include <openvdb/tools/LevelSetUtil.h>
 #include <openvdb/tools/TopologyToLevelSet.h>
 
 #include "isovdb/volume/grids.h"
@@ -27,6 +28,13 @@ Volume distanceField(const Volume& mask, const DistanceFieldOptions& options, In
   sdf->setName("sdf");
   sdf->setGridClass(openvdb::GRID_LEVEL_SET);
   return Volume(VolumeKind::DistanceField, sdf, mask.geometry(), mask.name());
+}
+
+Volume interiorMask(const Volume& sdf, double iso) {
+  if (sdf.kind() != VolumeKind::DistanceField)
+    throw InputError("'" + sdf.name() + "': interior mask needs a distance field");
+  MaskGrid::Ptr mask = openvdb::tools::sdfInteriorMask(fieldGrid(sdf), static_cast<float>(iso));
+  return Volume(VolumeKind::Mask, mask, sdf.geometry(), sdf.name());
 }
 
 }  // namespace isovdb::volume

@@ -33,4 +33,9 @@ struct DistanceFieldOptions {
 Volume distanceField(const Volume& mask, const DistanceFieldOptions& options = {},
                      Interrupter* interrupter = nullptr);
 
+/// The voxels of a distance field strictly below `iso` (its interior, tiles kept),
+/// as a mask volume with the same geometry.
+/// @pre `sdf.kind() == VolumeKind::DistanceField`
+Volume interiorMask(const Volume& sdf, double iso = 0.0);
+
 }  // namespace isovdb::volume

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages isovdb needs (build, tests, bindings, benchmarks).
+# Runs apt-get only when something is missing, so repeated runs are fast.
+set -euo pipefail
+packages=(
+  build-essential cmake ccache pkg-config
+  libopenvdb-dev libtbb-dev libeigen3-dev libglm-dev zlib1g-dev libblosc-dev libboost-iostreams-dev
+  libcgal-dev libgmp-dev libmpfr-dev
+  libcli11-dev nlohmann-json3-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  python3 python3-numpy python3-pytest python3-openvdb
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  SUDO=""
+  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
+  echo "installing: ${missing[*]}" >&2
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
+fi

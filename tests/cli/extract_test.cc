@@ -1,0 +1,138 @@
+// The main job end to end through the `isovdb` binary, on generated volumes
+// with a known topology: extract, check --against, sdf, info.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include <nlohmann/json.hpp>
+#include <openvdb/io/File.h>
+#include <openvdb/openvdb.h>
+
+#include "generators/shapes.h"
+#include "support/test_support.h"
+
+namespace isovdb::test {
+namespace {
+
+/// Writes a generated shape as an NRRD file with an attached header.
+std::filesystem::path writeShape(const TempDir& dir, samples::ShapeKind kind, int size) {
+  const samples::ShapeOptions options{.size = size};
+  const auto dims = samples::shapeDims(kind, options);
+  std::string bytes = "NRRD0004\ntype: uint8\ndimension: 3\nsizes: " + std::to_string(dims[0]) + " " +
+                      std::to_string(dims[1]) + " " + std::to_string(dims[2]) +
+                      "\nencoding: raw\nspacings: 1 1 1\n\n";
+  std::string slice(static_cast<std::size_t>(dims[0] * dims[1]), '\0');
+  for (std::int64_t z = 0; z < dims[2]; ++z) {
+    samples::generateSlice(kind, options, z, reinterpret_cast<std::uint8_t*>(slice.data()));
+    bytes += slice;
+  }
+  const auto path = dir / (std::string(samples::shapeName(kind)) + ".nrrd");
+  writeFile(path, bytes);
+  return path;
+}
+
+nlohmann::json readJson(const std::filesystem::path& path) { return nlohmann::json::parse(readFile(path)); }
+
+class CliExtract : public ::testing::TestWithParam<samples::ShapeKind> {};
+
+TEST_P(CliExtract, ClosedManifoldWithTheObjectsTopology) {
+  TempDir dir;
+  const auto input = writeShape(dir, GetParam(), 64);
+  const auto mesh = dir / "mesh.ply", stats = dir / "stats.json";
+  std::string output;
+  ASSERT_EQ(runCommand(cliPath().string() + " -q extract " + input.string() + " -o " + mesh.string() +
+                           " --check --stats " + stats.string(),
+                       &output),
+            0)
+      << output;
+  const nlohmann::json json = readJson(stats);
+  EXPECT_GT(json["contour"]["triangles"].get<int>(), 1000);
+  EXPECT_TRUE(json["check"]["closed"].get<bool>());
+  EXPECT_TRUE(json["check"]["manifold"].get<bool>());
+  EXPECT_EQ(json["check"]["self_intersecting_pairs"].get<int>(), 0);
+  EXPECT_EQ(json["check"]["euler_characteristic"].get<int>(), 2 * samples::knownEulerCharacteristic(GetParam()));
+  EXPECT_GT(json["memory"]["peak_rss_bytes"].get<std::int64_t>(), 0);
+  EXPECT_TRUE(json["timings_s"].contains("distance_field"));
+
+  // The same comparison through `check --against`, computed from the voxels.
+  const auto checkStats = dir / "check.json";
+  ASSERT_EQ(runCommand(cliPath().string() + " -q check " + mesh.string() + " --against " + input.string() +
+                           " --stats " + checkStats.string(),
+                       &output),
+            0)
+      << output;
+  const nlohmann::json check = readJson(checkStats);
+  EXPECT_EQ(check["topology"]["solid_euler_characteristic"].get<int>(),
+            samples::knownEulerCharacteristic(GetParam()));
+  EXPECT_TRUE(check["topology"]["matches"].get<bool>());
+  EXPECT_TRUE(check["passed"].get<bool>());
+}
+
+INSTANTIATE_TEST_SUITE_P(Shapes, CliExtract,
+                         ::testing::Values(samples::ShapeKind::Sphere, samples::ShapeKind::Torus,
+                                           samples::ShapeKind::Genus2, samples::ShapeKind::SaltDome),
+                         [](const auto& info) {
+                           std::string name(samples::shapeName(info.param));
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
+
+TEST(CliCheck, FailsOnATopologyMismatch) {
+  TempDir dir;
+  const auto sphere = writeShape(dir, samples::ShapeKind::Sphere, 48);
+  const auto torus = writeShape(dir, samples::ShapeKind::Torus, 48);
+  const auto mesh = dir / "sphere.ply";
+  std::string output;
+  ASSERT_EQ(runCommand(cliPath().string() + " -q extract " + sphere.string() + " -o " + mesh.string(), &output), 0);
+  EXPECT_EQ(runCommand(cliPath().string() + " -q check " + mesh.string() + " --against " + torus.string(), &output), 1)
+      << output;
+  EXPECT_NE(output.find("topology.matches: false"), std::string::npos) << output;
+}
+
+TEST(CliSdf, WritesALevelSetThatOpenVdbReads) {
+  TempDir dir;
+  const auto input = writeShape(dir, samples::ShapeKind::Sphere, 48);
+  const auto vdb = dir / "sphere.vdb";
+  std::string output;
+  ASSERT_EQ(runCommand(cliPath().string() + " -q sdf " + input.string() + " -o " + vdb.string() + " --name salt",
+                       &output),
+            0)
+      << output;
+  openvdb::initialize();
+  openvdb::io::File file(vdb.string());
+  file.open();
+  auto grid = openvdb::gridPtrCast<openvdb::FloatGrid>(file.readGrid("salt"));
+  ASSERT_TRUE(grid);
+  EXPECT_EQ(grid->getGridClass(), openvdb::GRID_LEVEL_SET);
+  EXPECT_LT(grid->tree().getValue(openvdb::Coord(24, 24, 24)), 0.f);  // centre is inside
+  EXPECT_GT(grid->tree().getValue(openvdb::Coord(0, 0, 0)), 0.f);
+
+  // And the .vdb is itself a valid input: contour it directly.
+  ASSERT_EQ(runCommand(cliPath().string() + " -q extract " + vdb.string() + " -o " + (dir / "m.ply").string() +
+                           " --check",
+                       &output),
+            0)
+      << output;
+  EXPECT_NE(output.find("check.closed: true"), std::string::npos) << output;
+}
+
+TEST(CliInfo, ReportsTheSparseGrid) {
+  TempDir dir;
+  const auto input = writeShape(dir, samples::ShapeKind::Sphere, 48);
+  std::string output;
+  ASSERT_EQ(runCommand(cliPath().string() + " -q info " + input.string(), &output), 0) << output;
+  for (const char* field : {"input.dims: [48,48,48]", "input.active_voxels:", "input.leaf_nodes:",
+                            "input.active_tiles:", "input.grid_memory_bytes:"})
+    EXPECT_NE(output.find(field), std::string::npos) << field << " in " << output;
+}
+
+TEST(CliHelp, EverySubcommandHasHelp) {
+  for (const char* command : {"info", "sdf", "extract", "check"}) {
+    std::string output;
+    EXPECT_EQ(runCommand(cliPath().string() + " " + command + " --help", &output), 0);
+    EXPECT_NE(output.find("Usage"), std::string::npos) << command;
+  }
+}
+
+}  // namespace
+}  // namespace isovdb::test
