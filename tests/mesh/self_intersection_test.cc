@@ -1,0 +1,295 @@
+#include "isovdb/mesh/self_intersection.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <random>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+#include <tbb/global_control.h>
+
+#include "isovdb/errors.h"
+
+namespace isovdb::mesh {
+namespace {
+
+using Pairs = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
+
+Mesh triangles(std::vector<Vec3f> positions, std::vector<Triangle> tris) {
+  Mesh mesh;
+  mesh.positions = std::move(positions);
+  mesh.triangles = std::move(tris);
+  return mesh;
+}
+
+Mesh octahedron(Vec3f centre = {0, 0, 0}, float radius = 1) {
+  Mesh mesh;
+  const Vec3f dirs[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  for (const Vec3f& d : dirs)
+    mesh.positions.push_back({centre[0] + radius * d[0], centre[1] + radius * d[1], centre[2] + radius * d[2]});
+  mesh.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  return mesh;
+}
+
+Mesh sphere(int levels) {
+  Mesh mesh = octahedron();
+  for (int level = 0; level < levels; ++level) {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> midpoints;
+    auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
+      auto [it, inserted] = midpoints.emplace(std::minmax(a, b), static_cast<std::uint32_t>(mesh.positions.size()));
+      if (inserted) {
+        Vec3f m;
+        for (int k = 0; k < 3; ++k) m[k] = (mesh.positions[a][k] + mesh.positions[b][k]) / 2;
+        const float len = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+        mesh.positions.push_back({m[0] / len, m[1] / len, m[2] / len});
+      }
+      return it->second;
+    };
+    std::vector<Triangle> refined;
+    for (const Triangle& t : mesh.triangles) {
+      const std::uint32_t ab = midpoint(t[0], t[1]), bc = midpoint(t[1], t[2]), ca = midpoint(t[2], t[0]);
+      refined.insert(refined.end(), {{t[0], ab, ca}, {ab, t[1], bc}, {ca, bc, t[2]}, {ab, bc, ca}});
+    }
+    mesh.triangles = std::move(refined);
+  }
+  return mesh;
+}
+
+Mesh torus(std::uint32_t n, std::uint32_t m) {
+  Mesh mesh;
+  for (std::uint32_t i = 0; i < n; ++i)
+    for (std::uint32_t j = 0; j < m; ++j) {
+      const double u = 2 * std::numbers::pi * i / n, v = 2 * std::numbers::pi * j / m;
+      mesh.positions.push_back({float((3 + std::cos(v)) * std::cos(u)), float((3 + std::cos(v)) * std::sin(u)),
+                                float(std::sin(v))});
+    }
+  auto id = [&](std::uint32_t i, std::uint32_t j) { return (i % n) * m + (j % m); };
+  for (std::uint32_t i = 0; i < n; ++i)
+    for (std::uint32_t j = 0; j < m; ++j) {
+      mesh.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      mesh.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return mesh;
+}
+
+TEST(SelfIntersection, ClosedSurfacesHaveNone) {
+  EXPECT_EQ(countSelfIntersections(octahedron()), 0);
+  EXPECT_EQ(countSelfIntersections(sphere(5)), 0);  // 8192 triangles, all neighbours touch
+  EXPECT_EQ(countSelfIntersections(torus(60, 30)), 0);
+  EXPECT_EQ(countSelfIntersections(Mesh{}), 0);
+}
+
+TEST(SelfIntersection, TrianglePiercingAnother) {
+  const Mesh mesh = triangles({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {1, 1, -1}, {1, 1, 1}, {1, 2, 0}},
+                              {{0, 1, 2}, {3, 4, 5}});
+  Pairs pairs;
+  EXPECT_EQ(countSelfIntersections(mesh, &pairs), 1);
+  EXPECT_EQ(pairs, (Pairs{{0, 1}}));
+}
+
+TEST(SelfIntersection, TetrahedronThroughATriangleGivesThreePairs) {
+  // The three faces around the apex below z = 0 cross the big triangle; the top face does not.
+  const Mesh mesh = triangles(
+      {{-10, -10, 0}, {10, -10, 0}, {0, 10, 0}, {0, 0, -1}, {1, 0, 1}, {-1, 1, 1}, {-1, -1, 1}},
+      {{0, 1, 2}, {3, 5, 4}, {3, 6, 5}, {3, 4, 6}, {4, 5, 6}});
+  Pairs pairs;
+  EXPECT_EQ(countSelfIntersections(mesh, &pairs), 3);
+  EXPECT_EQ(pairs, (Pairs{{0, 1}, {0, 2}, {0, 3}}));
+}
+
+TEST(SelfIntersection, InterpenetratingOctahedra) {
+  Mesh mesh = octahedron();
+  const Mesh other = octahedron({1, 0, 0});  // its vertex (0,0,0) is the first one's centre
+  for (const Triangle& t : other.triangles) mesh.triangles.push_back({t[0] + 6, t[1] + 6, t[2] + 6});
+  mesh.positions.insert(mesh.positions.end(), other.positions.begin(), other.positions.end());
+  // The second octahedron's vertex 1 is (0,0,0), the first's centre, and the first's vertex 0
+  // is the second's centre. Each +x face of the first (one per octant (±y, ±z)) crosses the
+  // second's -x face of the same octant and touches those of the two neighbouring octants at
+  // a point such as (0.5, 0.5, 0): 4 x 3 pairs. No other face reaches into the other solid.
+  Pairs pairs;
+  EXPECT_EQ(countSelfIntersections(mesh, &pairs), 12);
+  for (const auto& [a, b] : pairs) {
+    EXPECT_LT(a, 8u);
+    EXPECT_GE(b, 8u);
+  }
+}
+
+TEST(SelfIntersection, TouchingCountsButDisjointDoesNot) {
+  // A vertex of the second triangle lies inside the first (no shared index).
+  EXPECT_EQ(countSelfIntersections(triangles({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {1, 1, 0}, {1, 1, 1}, {2, 1, 1}},
+                                             {{0, 1, 2}, {3, 4, 5}})),
+            1);
+  // The same, lifted by the smallest step above the plane.
+  const float up = std::nextafter(0.f, 1.f);
+  EXPECT_EQ(countSelfIntersections(triangles({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {1, 1, up}, {1, 1, 1}, {2, 1, 1}},
+                                             {{0, 1, 2}, {3, 4, 5}})),
+            0);
+  // Parallel planes, overlapping boxes in x and y.
+  EXPECT_EQ(countSelfIntersections(triangles({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}},
+                                             {{0, 1, 2}, {3, 4, 5}})),
+            0);
+}
+
+TEST(SelfIntersection, SharedEdgeIntersectsOnlyWhenFoldedOntoItsNeighbour) {
+  const std::vector<Vec3f> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0, -1, 0}, {0.25f, 0.5f, 0}};
+  EXPECT_EQ(countSelfIntersections(triangles(p, {{0, 1, 2}, {1, 0, 3}})), 0);  // a crease
+  EXPECT_EQ(countSelfIntersections(triangles(p, {{0, 1, 2}, {1, 0, 4}})), 0);  // flat, opposite sides
+  EXPECT_EQ(countSelfIntersections(triangles(p, {{0, 1, 2}, {1, 0, 5}})), 1);  // folded over, coplanar
+  EXPECT_EQ(countSelfIntersections(triangles(p, {{0, 1, 2}, {0, 1, 5}})), 1);  // same, other winding
+}
+
+TEST(SelfIntersection, SharedVertexIntersectsOnlyBeyondTheVertex) {
+  const std::vector<Vec3f> p = {{0, 0, 0},  {2, 0, 0},       {0, 2, 0},       {-1, 0, 0},
+                                {0, -1, 0}, {1, 0.5f, 0},    {0.5f, 1, 0},    {0, 0, 1},
+                                {0, 3, 0},  {-1, 1.5f, 0},   {0.5f, 0.5f, -1}, {0.5f, 0.5f, 1}};
+  EXPECT_EQ(countSelfIntersections(triangles(p, {{0, 1, 2}, {0, 3, 4}})), 0);    // coplanar, apart
+  EXPECT_EQ(countSelfIntersections(triangles(p, {{0, 1, 2}, {0, 3, 7}})), 0);    // fan, not coplanar
+  EXPECT_EQ(countSelfIntersections(triangles(p, {{0, 1, 2}, {0, 5, 6}})), 1);    // coplanar, inside
+  EXPECT_EQ(countSelfIntersections(triangles(p, {{0, 1, 2}, {0, 8, 9}})), 1);    // coplanar, along an edge
+  EXPECT_EQ(countSelfIntersections(triangles(p, {{0, 1, 2}, {0, 10, 11}})), 1);  // opposite edge pierces
+}
+
+TEST(SelfIntersection, DuplicateTrianglesIntersect) {
+  const std::vector<Vec3f> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  EXPECT_EQ(countSelfIntersections(triangles(p, {{0, 1, 2}, {0, 1, 2}})), 1);
+  EXPECT_EQ(countSelfIntersections(triangles(p, {{0, 1, 2}, {2, 1, 0}})), 1);
+}
+
+TEST(SelfIntersection, UnweldedNeighboursTouch) {
+  // Two triangles on one geometric edge, but with their own copies of its vertices.
+  const Mesh mesh = triangles({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}, {0, 0, 0}, {0, 0, 1}},
+                              {{0, 1, 2}, {3, 4, 5}});
+  EXPECT_EQ(countSelfIntersections(mesh), 1);
+}
+
+TEST(SelfIntersection, SkipsDegenerateTriangles) {
+  const Mesh mesh = triangles({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {1, 1, -1}, {1, 1, 1}, {1, 1, 0.5f}},
+                              {{0, 1, 2}, {3, 4, 5}, {3, 3, 4}, {0, 3, 4}});
+  // {3,4,5} is collinear and {3,3,4} has a repeated index; {0,3,4} is proper and pierces
+  // {0,1,2}? It shares vertex 0 and its opposite edge (3,4) pierces {0,1,2} at (1,1,0).
+  Pairs pairs;
+  EXPECT_EQ(countSelfIntersections(mesh, &pairs), 1);
+  EXPECT_EQ(pairs, (Pairs{{0, 3}}));
+}
+
+TEST(SelfIntersection, RejectsInvalidInput) {
+  Mesh mesh = octahedron();
+  mesh.triangles.push_back({0, 1, 17});
+  EXPECT_THROW(countSelfIntersections(mesh), InputError);
+  Mesh inf = octahedron();
+  inf.positions[2][0] = INFINITY;
+  EXPECT_THROW(countSelfIntersections(inf), InputError);
+}
+
+// ---------------------------------------------------------------------------
+// CGAL's Polygon_mesh_processing::self_intersections as the oracle.
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using SurfaceMesh = CGAL::Surface_mesh<Kernel::Point_3>;
+
+/// The pairs CGAL finds, without its (f, f) entries for degenerate faces.
+Pairs cgalPairs(const Mesh& mesh) {
+  SurfaceMesh sm;
+  for (const Vec3f& p : mesh.positions) sm.add_vertex(Kernel::Point_3(p[0], p[1], p[2]));
+  for (const Triangle& t : mesh.triangles) {
+    const auto f = sm.add_face(SurfaceMesh::Vertex_index(t[0]), SurfaceMesh::Vertex_index(t[1]),
+                               SurfaceMesh::Vertex_index(t[2]));
+    EXPECT_NE(f, SurfaceMesh::null_face());
+  }
+  std::vector<std::pair<SurfaceMesh::Face_index, SurfaceMesh::Face_index>> found;
+  CGAL::Polygon_mesh_processing::self_intersections(sm, std::back_inserter(found));
+  Pairs pairs;
+  for (const auto& [f, g] : found) {
+    if (f == g) continue;
+    pairs.emplace_back(std::min<std::uint32_t>(f.idx(), g.idx()), std::max<std::uint32_t>(f.idx(), g.idx()));
+  }
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+/// A grid of n x n quads whose vertices are jittered on a coarse lattice, with
+/// z from a few levels only: many exactly coplanar folds, shared-vertex
+/// overlaps, collinear edges and degenerate triangles.
+Mesh crumpledGrid(int n, unsigned seed, int zLevels) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> jitter(-3, 3), level(0, zLevels - 1);
+  Mesh mesh;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j)
+      mesh.positions.push_back({float(4 * i + jitter(rng)) * 0.25f, float(4 * j + jitter(rng)) * 0.25f,
+                                float(level(rng)) * 0.5f});
+  auto id = [&](int i, int j) { return static_cast<std::uint32_t>(i * (n + 1) + j); };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      if ((i + j) % 2) {
+        mesh.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+        mesh.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+      } else {
+        mesh.triangles.push_back({id(i, j), id(i + 1, j), id(i, j + 1)});
+        mesh.triangles.push_back({id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+      }
+    }
+  return mesh;
+}
+
+TEST(SelfIntersection, MatchesCgalOnCrumpledGrids) {
+  std::int64_t total = 0;
+  for (unsigned seed = 1; seed <= 6; ++seed) {
+    const Mesh mesh = crumpledGrid(24, seed, seed % 2 ? 1 : 3);
+    Pairs ours;
+    const std::int64_t count = countSelfIntersections(mesh, &ours);
+    EXPECT_EQ(count, static_cast<std::int64_t>(ours.size()));
+    EXPECT_EQ(ours, cgalPairs(mesh)) << "seed " << seed;
+    total += count;
+  }
+  EXPECT_GT(total, 100);  // the grids really are crumpled
+}
+
+TEST(SelfIntersection, MatchesCgalOnANoisySphere) {
+  Mesh mesh = sphere(4);
+  std::mt19937 rng(3);
+  std::normal_distribution<float> noise(0.f, 0.06f);
+  for (Vec3f& p : mesh.positions)
+    for (float& c : p) c += noise(rng);
+  Pairs ours;
+  countSelfIntersections(mesh, &ours);
+  EXPECT_FALSE(ours.empty());
+  EXPECT_EQ(ours, cgalPairs(mesh));
+}
+
+TEST(SelfIntersection, MatchesCgalOnInterpenetratingSolids) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> offset(-1.5f, 1.5f);
+  std::int64_t total = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    Mesh mesh = sphere(2);
+    const Mesh other = octahedron({offset(rng), offset(rng), offset(rng)}, 1.2f);
+    const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+    mesh.positions.insert(mesh.positions.end(), other.positions.begin(), other.positions.end());
+    for (const Triangle& t : other.triangles) mesh.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    Pairs ours;
+    total += countSelfIntersections(mesh, &ours);
+    EXPECT_EQ(ours, cgalPairs(mesh)) << "trial " << trial;
+  }
+  EXPECT_GT(total, 0);
+}
+
+TEST(SelfIntersection, DoesNotDependOnTheThreadCount) {
+  Mesh mesh = crumpledGrid(120, 11, 2);
+  Pairs parallel, serial;
+  const std::int64_t count = countSelfIntersections(mesh, &parallel);
+  {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    EXPECT_EQ(countSelfIntersections(mesh, &serial), count);
+  }
+  EXPECT_GT(count, 0);
+  EXPECT_EQ(parallel, serial);
+}
+
+}  // namespace
+}  // namespace isovdb::mesh
