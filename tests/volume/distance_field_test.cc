@@ -74,3 +74,34 @@ TEST(DistanceField, RejectsNonMaskAndBadWidth) {
 
 }  // namespace
 }  // namespace isovdb::volume
+
+namespace isovdb::volume {
+namespace {
+
+TEST(DistanceField, ChunksMeetWithoutSeams) {
+  // A torus-like ring whose surface crosses the corner where eight 32^3 chunks meet.
+  VectorSliceStream stream = VectorSliceStream::fromFunction({72, 72, 72}, [](int x, int y, int z) {
+    const float rho = std::hypot(x - 32.3f, y - 31.7f) - 14.f;
+    return std::hypot(rho, z - 32.2f) < 8.5f ? 1.f : 0.f;
+  });
+  const Volume mask = ingestMask(stream, {});
+  const Volume whole = distanceField(mask, {.chunkSize = 0});
+  const Volume chunked = distanceField(mask, {.chunkSize = 32});
+  const FieldGrid& a = fieldGrid(whole);
+  const FieldGrid& b = fieldGrid(chunked);
+  EXPECT_EQ(a.activeVoxelCount(), b.activeVoxelCount());
+  auto acc = b.getConstAccessor();
+  for (auto it = a.cbeginValueOn(); it; ++it) {
+    ASSERT_TRUE(acc.isValueOn(it.getCoord())) << it.getCoord();
+    ASSERT_NEAR(acc.getValue(it.getCoord()), *it, 1e-4f) << it.getCoord();
+  }
+  // Signs outside the band agree too (flood fill between chunks).
+  auto accA = a.getConstAccessor();
+  for (int z = -4; z < 76; z += 3)
+    for (int y = -4; y < 76; y += 3)
+      for (int x = -4; x < 76; x += 3)
+        ASSERT_EQ(accA.getValue(openvdb::Coord(x, y, z)) < 0, acc.getValue(openvdb::Coord(x, y, z)) < 0);
+}
+
+}  // namespace
+}  // namespace isovdb::volume

@@ -23,11 +23,17 @@ struct DistanceFieldOptions {
   /// after OpenVDB's topologyToLevelSet: distances within 0.4 voxel of exact
   /// instead of 1.3 on a sphere, for about twice the time.
   bool redistance = true;
+  /// The band is computed chunk by chunk (cubes of this many voxels, a multiple
+  /// of 8, each from the mask around it plus a halo), so the transient memory of
+  /// OpenVDB's tools is that of one chunk, not of the whole band. 0: the whole
+  /// grid at once (faster on small volumes, 3-5x the band's memory at peak).
+  int chunkSize = 128;
 };
 
 /// Signed distance to the boundary of the mask, in voxels, NEGATIVE inside.
 /// Voxels farther than halfWidth are inactive with value ±halfWidth (their sign
-/// is still right). Memory: O(surface · halfWidth).
+/// is still right). Memory: O(surface · halfWidth) for the result plus one chunk
+/// in flight. The result does not depend on chunkSize (to float rounding).
 /// @pre `mask.kind() == VolumeKind::Mask`
 /// @throw InputError for another kind; Interrupted on cancellation.
 Volume distanceField(const Volume& mask, const DistanceFieldOptions& options = {},
