@@ -31,6 +31,9 @@ void addExtractCommand(CLI::App& app, Context& context) {
       ->capture_default_str();
   command->add_option("--half-width", state->options.distance.halfWidth, "Distance-field band half-width (voxels)")
       ->capture_default_str();
+  command->add_option("--sdf-chunk", state->options.distance.chunkSize,
+                      "Distance field computed in cubes of this many voxels (multiple of 8; 0 = all at once)")
+      ->capture_default_str();
   command->add_option("--closing", state->options.distance.closingSteps,
                       "Morphological closing steps before the distance field (changes topology)")
       ->capture_default_str();

@@ -20,6 +20,9 @@ void addSdfCommand(CLI::App& app, Context& context) {
   command->add_option("-o,--output", state->output, "Output .vdb file")->required();
   command->add_option("--half-width", state->distance.halfWidth, "Narrow-band half-width in voxels")
       ->capture_default_str();
+  command->add_option("--sdf-chunk", state->distance.chunkSize,
+                      "Distance field computed in cubes of this many voxels (multiple of 8; 0 = all at once)")
+      ->capture_default_str();
   command->add_option("--closing", state->distance.closingSteps,
                       "Morphological closing steps before the transform (changes topology)")
       ->capture_default_str();

@@ -10,6 +10,10 @@ void Statistics::recordMemory() {
   json_["memory"]["current_rss_bytes"] = currentRssBytes();
 }
 
+void Statistics::recordStageMemory(const std::string& stage) {
+  json_["memory"]["peak_rss_after_" + stage + "_bytes"] = peakRssBytes();
+}
+
 void Statistics::write(const std::filesystem::path& path) const {
   io::AtomicFile file(path);
   file.write(json_.dump(2) + "\n");

@@ -20,7 +20,8 @@ class Statistics {
   const Json& json() const { return json_; }
   Json& operator[](const std::string& section) { return json_[section]; }
 
-  /// Records the wall time of a stage under "timings_s" when it goes out of scope.
+  /// Records the wall time of a stage under "timings_s", and the resident memory
+  /// right after it under "memory", when it goes out of scope.
   class StageTimer {
    public:
     StageTimer(Statistics* stats, std::string stage)
@@ -29,6 +30,7 @@ class Statistics {
       if (!stats_) return;
       const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start_;
       stats_->json_["timings_s"][stage_] = elapsed.count();
+      stats_->recordStageMemory(stage_);
     }
     StageTimer(const StageTimer&) = delete;
     StageTimer& operator=(const StageTimer&) = delete;
@@ -41,6 +43,8 @@ class Statistics {
 
   /// Records peak and current resident memory under "memory".
   void recordMemory();
+  /// Records the peak resident memory so far under "memory.peak_rss_after_<stage>_bytes".
+  void recordStageMemory(const std::string& stage);
 
   /// Writes the report as indented JSON (through a temporary file).
   /// @throw IoError when the path is not writable.
