@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
   cli::addSdfCommand(app, context);
   cli::addExtractCommand(app, context);
   cli::addCheckCommand(app, context);
+  cli::addOctreeCommand(app, context);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,80 @@
+#include "isovdb/volume/meta_cells.h"
+
+#include <openvdb/tools/Dense.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "isovdb/volume/grids.h"
+
+namespace isovdb::volume {
+
+namespace {
+
+int floorDiv(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
+
+bool isPowerOfTwo(int v) { return v > 0 && (v & (v - 1)) == 0; }
+
+}  // namespace
+
+MetaCellPartition partitionMetaCells(const Volume& field, int size, float iso) {
+  const FieldGrid& grid = fieldGrid(field);
+  if (!isPowerOfTwo(size) || size < 8 || size > 4096)
+    throw InputError("meta-cell size " + std::to_string(size) + " must be a power of two in 8..4096");
+  MetaCellPartition partition;
+  partition.size = size;
+  // Leaf indices can repeat across leaves: collect in an ordered set (z, y, x).
+  std::set<std::array<int, 3>> cells;
+  for (auto leaf = grid.tree().cbeginLeaf(); leaf; ++leaf) {
+    ++partition.leavesScanned;
+    bool near = false;
+    for (auto it = leaf->cbeginValueAll(); it && !near; ++it) near = std::abs(*it - iso) <= 1.f;
+    if (!near) continue;
+    // The leaf's samples, grown by one for crossings with its neighbours, belong
+    // to every meta-cell whose closed range [i*S, i*S+S] they touch.
+    const openvdb::CoordBBox box = leaf->getNodeBoundingBox().expandBy(1);
+    std::array<int, 3> lo, hi;
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = floorDiv(box.min()[a] - 1, size);
+      hi[a] = floorDiv(box.max()[a], size);
+    }
+    for (int k = lo[2]; k <= hi[2]; ++k)
+      for (int j = lo[1]; j <= hi[1]; ++j)
+        for (int i = lo[0]; i <= hi[0]; ++i) {
+          // Meta-cell i covers samples [i*S, i*S+S]: keep it only if the box overlaps that.
+          const std::array<int, 3> idx{i, j, k};
+          bool overlaps = true;
+          for (int a = 0; a < 3; ++a)
+            overlaps = overlaps && box.max()[a] >= idx[a] * size && box.min()[a] <= idx[a] * size + size;
+          if (overlaps) cells.insert({k, j, i});
+        }
+  }
+  for (const auto& zyx : cells) partition.cells.push_back({zyx[2], zyx[1], zyx[0]});
+  return partition;
+}
+
+void readMetaCell(const Volume& field, const MetaCellIndex& index, int size, octree::MetaCellSamples& out) {
+  const FieldGrid& grid = fieldGrid(field);
+  const std::array<int, 3> origin{index[0] * size, index[1] * size, index[2] * size};
+  out.allocate(size, origin, grid.background());
+  // The sample block with its apron, x fastest: exactly openvdb's LayoutXYZ.
+  const openvdb::CoordBBox box(openvdb::Coord(origin[0] - 1, origin[1] - 1, origin[2] - 1),
+                               openvdb::Coord(origin[0] + size + 1, origin[1] + size + 1, origin[2] + size + 1));
+  openvdb::tools::Dense<float, openvdb::tools::LayoutXYZ> dense(box, out.values.data());
+  openvdb::tools::copyToDense(grid, dense);
+}
+
+bool hasSignChange(const octree::MetaCellSamples& samples, float iso) {
+  bool in = false, outside = false;
+  const int s = samples.size;
+  for (int k = 0; k <= s; ++k)
+    for (int j = 0; j <= s; ++j)
+      for (int i = 0; i <= s; ++i) {
+        (octree::isInside(samples.value(i, j, k), iso) ? in : outside) = true;
+        if (in && outside) return true;
+      }
+  return false;
+}
+
+}  // namespace isovdb::volume

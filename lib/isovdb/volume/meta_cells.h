@@ -1,0 +1,44 @@
+/// @file meta_cells.h
+/// @brief Partition of a distance field into meta-cells, and reading one meta-cell's
+///        samples (paper 000 §4.2.1).
+///
+/// A meta-cell is a cube of S voxels (S a power of two; 128 aligns with OpenVDB's
+/// level-1 internal nodes) whose S+1 samples per axis include its boundary, so
+/// neighbours share their boundary samples. Meta-cell (i, j, k) covers index
+/// samples [i*S, i*S + S] on x (likewise y, z). Memory: reading one meta-cell
+/// costs (S+3)^3 floats (with the one-sample apron the Prewitt gradients need);
+/// meta-cells that lie in tiles or hold no sign change are found without reading voxels.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "isovdb/octree/meta_cell_samples.h"
+#include "isovdb/volume/volume.h"
+
+namespace isovdb::volume {
+
+using MetaCellIndex = std::array<int, 3>;
+
+struct MetaCellPartition {
+  int size = 128;                      ///< S, voxels per meta-cell edge
+  std::vector<MetaCellIndex> cells;    ///< meta-cells the surface may cross, sorted z, y, x
+  std::int64_t leavesScanned = 0;      ///< SDF leaves looked at (no voxel of a tile is read)
+};
+
+/// Meta-cells of size `size` that may hold a sign change of `field` across `iso`:
+/// those touching a leaf with a value within one voxel of the isovalue (a distance
+/// field changes by at most one per voxel, so every crossing lies in such a leaf).
+/// @pre field is a DistanceField or Scalar volume; size is a power of two in [8, 4096].
+/// @throw InputError otherwise.
+MetaCellPartition partitionMetaCells(const Volume& field, int size, float iso = 0.f);
+
+/// Fills `out` with the samples of meta-cell `index` (offsets -1..S+1 on each
+/// axis), inactive voxels reading as the grid's signed background.
+void readMetaCell(const Volume& field, const MetaCellIndex& index, int size, octree::MetaCellSamples& out);
+
+/// True when the samples 0..S of `samples` hold both sides of `iso` (inside: value <= iso).
+bool hasSignChange(const octree::MetaCellSamples& samples, float iso);
+
+}  // namespace isovdb::volume
