@@ -1,25 +1,18 @@
 #include "isovdb/io/dense_volume.h"
 
-#include <algorithm>
-#include <cctype>
 #include <string>
 #include <system_error>
 
 #include "isovdb/errors.h"
 #include "isovdb/io/metaimage_reader.h"
 #include "isovdb/io/nrrd_reader.h"
+#include "isovdb/io/path_util.h"
 
 namespace isovdb::io {
 
 namespace {
 
 enum class DenseFormat { Nrrd, MetaImage, Raw };
-
-std::string lowerExtension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
 
 DenseFormat formatOf(const std::filesystem::path& path) {
   const std::string ext = lowerExtension(path);

@@ -1,23 +1,13 @@
 #include "isovdb/io/mesh_file.h"
 
-#include <algorithm>
 #include <string>
 
 #include "isovdb/errors.h"
 #include "isovdb/io/obj.h"
+#include "isovdb/io/path_util.h"
 #include "isovdb/io/ply.h"
 
 namespace isovdb::io {
-
-namespace {
-
-std::string lowerExtension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
-
-}  // namespace
 
 bool isMeshPath(const std::filesystem::path& path) {
   const std::string ext = lowerExtension(path);

@@ -2,11 +2,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
-#include <charconv>
 #include <cmath>
 #include <map>
-#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,46 +11,13 @@
 #include "isovdb/errors.h"
 #include "isovdb/io/byte_stream.h"
 #include "isovdb/io/dense_slice_stream.h"
+#include "isovdb/io/header_text.h"
 
 namespace isovdb::io {
 
 namespace {
 
-/// Longest MetaImage header we accept (a header is a few hundred bytes).
-constexpr std::int64_t kMaxHeaderBytes = std::int64_t{1} << 20;
-
-std::string trim(std::string_view text) {
-  const auto isSpace = [](unsigned char c) { return std::isspace(c) != 0; };
-  while (!text.empty() && isSpace(text.front())) text.remove_prefix(1);
-  while (!text.empty() && isSpace(text.back())) text.remove_suffix(1);
-  return std::string(text);
-}
-
-std::string lower(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
-  return text;
-}
-
-std::vector<std::string> splitWords(std::string_view text) {
-  std::vector<std::string> words;
-  std::size_t i = 0;
-  while (i < text.size()) {
-    while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
-    const std::size_t start = i;
-    while (i < text.size() && !std::isspace(static_cast<unsigned char>(text[i]))) ++i;
-    if (i > start) words.emplace_back(text.substr(start, i - start));
-  }
-  return words;
-}
-
-template <typename T>
-std::optional<T> parseNumber(std::string_view text) {
-  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
-  T value{};
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc() || end != text.data() + text.size() || text.empty()) return std::nullopt;
-  return value;
-}
+using namespace detail;
 
 struct Field {
   std::string name;  ///< as spelled in the file
@@ -61,14 +25,9 @@ struct Field {
 };
 
 /// The fields of one MetaImage header (keys compared case-insensitively).
-class MetaFields {
+class MetaFields : public HeaderFields {
  public:
-  explicit MetaFields(std::string where) : where_(std::move(where)) {}
-
-  const std::string& where() const { return where_; }
-  [[noreturn]] void fail(const std::string& field, const std::string& problem) const {
-    throw InputError(where_ + "field '" + field + "': " + problem);
-  }
+  using HeaderFields::HeaderFields;
 
   void add(const std::string& name, std::string value) {
     if (!fields_.emplace(lower(name), Field{name, std::move(value)}).second) fail(name, "appears twice");
@@ -89,7 +48,7 @@ class MetaFields {
   }
   const Field& require(const char* name) const {
     const Field* field = find({name});
-    if (!field) throw InputError(where_ + "field '" + name + "' is missing");
+    if (!field) throw InputError(where() + "field '" + name + "' is missing");
     return *field;
   }
   bool boolean(const Field& field) const {
@@ -99,7 +58,7 @@ class MetaFields {
     fail(field.name, "expected True or False, got '" + field.value + "'");
   }
   std::int64_t integer(const Field& field) const {
-    const auto value = parseNumber<std::int64_t>(trim(field.value));
+    const auto value = parseInt(trim(field.value));
     if (!value) fail(field.name, "'" + field.value + "' is not an integer");
     return *value;
   }
@@ -110,7 +69,7 @@ class MetaFields {
       fail(field.name, "expected " + std::to_string(N) + " values, got " + std::to_string(words.size()));
     std::array<double, N> values{};
     for (std::size_t i = 0; i < N; ++i) {
-      const auto value = parseNumber<double>(words[i]);
+      const auto value = parseDouble(words[i]);
       if (!value || !std::isfinite(*value)) fail(field.name, "'" + words[i] + "' is not a finite number");
       values[i] = *value;
     }
@@ -118,7 +77,6 @@ class MetaFields {
   }
 
  private:
-  std::string where_;
   std::map<std::string, Field> fields_;
 };
 
@@ -140,10 +98,6 @@ SampleType parseElementType(const MetaFields& fields, const Field& field) {
                               "MET_FLOAT or MET_DOUBLE)");
 }
 
-std::string joinDims(const std::array<std::int64_t, 3>& dims) {
-  return std::to_string(dims[0]) + " x " + std::to_string(dims[1]) + " x " + std::to_string(dims[2]);
-}
-
 }  // namespace
 
 std::unique_ptr<SliceStream> openMetaImage(const std::filesystem::path& path) {
@@ -156,9 +110,7 @@ std::unique_ptr<SliceStream> openMetaImage(const std::filesystem::path& path) {
   std::int64_t lineNumber = 0;
   while (auto line = file->readLine()) {
     ++lineNumber;
-    if (file->position() > kMaxHeaderBytes)
-      throw InputError(fields.where() + "header longer than " + std::to_string(kMaxHeaderBytes) +
-                       " bytes without an ElementDataFile field");
+    fields.checkHeaderLength(file->position(), "without an ElementDataFile field");
     const std::string text = trim(*line);
     if (std::any_of(text.begin(), text.end(), [](unsigned char c) { return (c < 0x20 && c != '\t') || c == 0x7f; }))
       throw InputError(fields.where() + "not a MetaImage header (line " + std::to_string(lineNumber) +
@@ -235,12 +187,9 @@ std::unique_ptr<SliceStream> openMetaImage(const std::filesystem::path& path) {
   std::filesystem::path dataPath = path;
   std::string label = "'" + source + "'";
   if (!local) {
-    const std::vector<std::string> words = splitWords(dataFile);
-    if (words.empty()) fields.fail(dataFileField->name, "is empty");
-    if (words[0] == "LIST" || (words.size() >= 4 && words[0].find('%') != std::string::npos))
-      fields.fail(dataFileField->name, "multiple data files are not supported ('" + dataFile + "')");
-    dataPath = std::filesystem::path(dataFile);
-    if (dataPath.is_relative()) dataPath = path.parent_path() / dataPath;
+    if (const std::string problem = dataFileProblem(dataFile); !problem.empty())
+      fields.fail(dataFileField->name, problem);
+    dataPath = dataFilePath(path, dataFile);
     std::error_code ec;
     if (!std::filesystem::exists(dataPath, ec))
       throw IoError(fields.where() + "field '" + dataFileField->name + "': '" + dataPath.string() + "': no such file");

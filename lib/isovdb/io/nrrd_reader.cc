@@ -3,10 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <map>
-#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,63 +12,18 @@
 #include "isovdb/errors.h"
 #include "isovdb/io/byte_stream.h"
 #include "isovdb/io/dense_slice_stream.h"
+#include "isovdb/io/header_text.h"
 
 namespace isovdb::io {
 
 namespace {
 
-/// Longest NRRD header we accept (a header is a few hundred bytes).
-constexpr std::int64_t kMaxHeaderBytes = std::int64_t{1} << 20;
-
-std::string trim(std::string_view text) {
-  const auto isSpace = [](unsigned char c) { return std::isspace(c) != 0; };
-  while (!text.empty() && isSpace(text.front())) text.remove_prefix(1);
-  while (!text.empty() && isSpace(text.back())) text.remove_suffix(1);
-  return std::string(text);
-}
-
-std::string lower(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
-  return text;
-}
-
-std::vector<std::string> splitWords(std::string_view text) {
-  std::vector<std::string> words;
-  std::size_t i = 0;
-  while (i < text.size()) {
-    while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
-    const std::size_t start = i;
-    while (i < text.size() && !std::isspace(static_cast<unsigned char>(text[i]))) ++i;
-    if (i > start) words.emplace_back(text.substr(start, i - start));
-  }
-  return words;
-}
-
-std::optional<std::int64_t> parseInt(std::string_view text) {
-  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
-  std::int64_t value = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc() || end != text.data() + text.size() || text.empty()) return std::nullopt;
-  return value;
-}
-
-std::optional<double> parseDouble(std::string_view text) {
-  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
-  double value = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (ec != std::errc() || end != text.data() + text.size() || text.empty()) return std::nullopt;
-  return value;
-}
+using namespace detail;
 
 /// The fields of one NRRD header and how to name them in messages.
-class NrrdFields {
+class NrrdFields : public HeaderFields {
  public:
-  explicit NrrdFields(std::string where) : where_(std::move(where)) {}
-
-  const std::string& where() const { return where_; }
-  [[noreturn]] void fail(const std::string& field, const std::string& problem) const {
-    throw InputError(where_ + "field '" + field + "': " + problem);
-  }
+  using HeaderFields::HeaderFields;
 
   void add(const std::string& name, std::string value) {
     if (!values_.emplace(name, std::move(value)).second) fail(name, "appears twice");
@@ -81,7 +34,7 @@ class NrrdFields {
   }
   const std::string& require(const std::string& name, const std::string& why = {}) const {
     const std::string* value = find(name);
-    if (!value) throw InputError(where_ + "field '" + name + "' is missing" + why);
+    if (!value) throw InputError(where() + "field '" + name + "' is missing" + why);
     return *value;
   }
   std::int64_t integer(const std::string& name, const std::string& text) const {
@@ -115,7 +68,6 @@ class NrrdFields {
   }
 
  private:
-  std::string where_;
   std::map<std::string, std::string> values_;
 };
 
@@ -152,10 +104,6 @@ SampleType parseNrrdType(const NrrdFields& fields, const std::string& text) {
   return *type;
 }
 
-std::string joinDims(const std::array<std::int64_t, 3>& dims) {
-  return std::to_string(dims[0]) + " x " + std::to_string(dims[1]) + " x " + std::to_string(dims[2]);
-}
-
 }  // namespace
 
 std::unique_ptr<SliceStream> openNrrd(const std::filesystem::path& path) {
@@ -172,9 +120,7 @@ std::unique_ptr<SliceStream> openNrrd(const std::filesystem::path& path) {
   std::int64_t lineNumber = 1;
   while (auto line = file->readLine()) {
     ++lineNumber;
-    if (file->position() > kMaxHeaderBytes)
-      throw InputError(fields.where() + "header longer than " + std::to_string(kMaxHeaderBytes) +
-                       " bytes (missing blank line before the data?)");
+    fields.checkHeaderLength(file->position(), "(missing blank line before the data?)");
     if (trim(*line).empty()) {
       blankLine = true;
       break;
@@ -273,12 +219,9 @@ std::unique_ptr<SliceStream> openNrrd(const std::filesystem::path& path) {
   std::unique_ptr<FileRegionStream> data;
   std::string dataName = source;
   if (const std::string* dataFile = fields.find("data file")) {
-    const std::vector<std::string> words = splitWords(*dataFile);
-    if (words.empty()) fields.fail("data file", "is empty");
-    if (words[0] == "LIST" || (words.size() >= 4 && words[0].find('%') != std::string::npos))
-      fields.fail("data file", "multiple data files are not supported ('" + *dataFile + "')");
-    std::filesystem::path dataPath(*dataFile);
-    if (dataPath.is_relative()) dataPath = path.parent_path() / dataPath;
+    if (const std::string problem = dataFileProblem(*dataFile); !problem.empty())
+      fields.fail("data file", problem);
+    const std::filesystem::path dataPath = dataFilePath(path, *dataFile);
     dataName = dataPath.string();
     std::error_code ec;
     if (!std::filesystem::exists(dataPath, ec))

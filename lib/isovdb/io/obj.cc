@@ -12,6 +12,7 @@
 
 #include "isovdb/errors.h"
 #include "isovdb/io/atomic_file.h"
+#include "isovdb/io/mesh_write_check.h"
 
 namespace isovdb::io {
 
@@ -23,16 +24,8 @@ constexpr std::size_t kLinesPerBlock = 1 << 15;
 constexpr std::size_t kBlocksPerBatch = 16;
 
 void checkMesh(const std::filesystem::path& path, const Mesh& mesh) {
-  if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size())
-    throw InputError("cannot write '" + path.string() + "': the mesh has " + std::to_string(mesh.normals.size()) +
-                     " normals for " + std::to_string(mesh.positions.size()) + " vertices");
-  const std::size_t n = mesh.positions.size();
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    for (const std::uint32_t v : mesh.triangles[t])
-      if (v >= n)
-        throw InputError("cannot write '" + path.string() + "': triangle " + std::to_string(t) +
-                         " references vertex " + std::to_string(v) + " but the mesh has " + std::to_string(n) +
-                         " vertices");
+  detail::checkNormalCount(path, mesh);
+  detail::checkTriangleIndices(path, mesh);
 }
 
 /// Appends numbers to a string through std::to_chars.

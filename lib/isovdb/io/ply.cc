@@ -16,6 +16,7 @@
 
 #include "isovdb/errors.h"
 #include "isovdb/io/atomic_file.h"
+#include "isovdb/io/mesh_write_check.h"
 #include "isovdb/io/sample_type.h"
 
 namespace isovdb::io {
@@ -30,18 +31,10 @@ constexpr bool kNativeLittle = std::endian::native == std::endian::little;
 // Writing
 
 void checkMesh(const std::filesystem::path& path, const Mesh& mesh) {
-  if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size())
-    throw InputError("cannot write '" + path.string() + "': the mesh has " + std::to_string(mesh.normals.size()) +
-                     " normals for " + std::to_string(mesh.positions.size()) + " vertices");
+  detail::checkNormalCount(path, mesh);
   if (mesh.positions.size() > std::numeric_limits<std::uint32_t>::max())
     throw InputError("cannot write '" + path.string() + "': more than 2^32 - 1 vertices");
-  const std::size_t n = mesh.positions.size();
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    for (const std::uint32_t v : mesh.triangles[t])
-      if (v >= n)
-        throw InputError("cannot write '" + path.string() + "': triangle " + std::to_string(t) +
-                         " references vertex " + std::to_string(v) + " but the mesh has " + std::to_string(n) +
-                         " vertices");
+  detail::checkTriangleIndices(path, mesh);
 }
 
 /// Collects little-endian bytes and hands them to the file in large blocks.
@@ -209,7 +202,20 @@ class BinarySource {
   BinarySource(const char* begin, const char* end, bool bigEndian)
       : p_(begin), end_(end), swap_(bigEndian == kNativeLittle) {}
 
-  Status readDouble(SampleType type, double& out) {
+  Status readDouble(SampleType type, double& out) { return read(type, out); }
+
+  Status readInteger(SampleType type, std::int64_t& out) {
+    if (isFloatingPoint(type)) return Status::Malformed;
+    return read(type, out);
+  }
+
+  std::string lastToken() const { return {}; }
+  std::size_t remaining() const { return static_cast<std::size_t>(end_ - p_); }
+
+ private:
+  /// Reads one sample stored as `type` into `out`.
+  template <typename Out>
+  Status read(SampleType type, Out& out) {
     switch (type) {
       case SampleType::Int8: return load<std::int8_t>(out);
       case SampleType::UInt8: return load<std::uint8_t>(out);
@@ -223,24 +229,6 @@ class BinarySource {
     return Status::Malformed;
   }
 
-  Status readInteger(SampleType type, std::int64_t& out) {
-    switch (type) {
-      case SampleType::Int8: return load<std::int8_t>(out);
-      case SampleType::UInt8: return load<std::uint8_t>(out);
-      case SampleType::Int16: return load<std::int16_t>(out);
-      case SampleType::UInt16: return load<std::uint16_t>(out);
-      case SampleType::Int32: return load<std::int32_t>(out);
-      case SampleType::UInt32: return load<std::uint32_t>(out);
-      case SampleType::Float32:
-      case SampleType::Float64: return Status::Malformed;
-    }
-    return Status::Malformed;
-  }
-
-  std::string lastToken() const { return {}; }
-  std::size_t remaining() const { return static_cast<std::size_t>(end_ - p_); }
-
- private:
   template <typename T, typename Out>
   Status load(Out& out) {
     if (static_cast<std::size_t>(end_ - p_) < sizeof(T)) return Status::End;

@@ -21,6 +21,7 @@
 #include <tbb/parallel_sort.h>
 
 #include "isovdb/errors.h"
+#include "isovdb/mesh/mesh_checks.h"
 
 namespace isovdb::mesh {
 
@@ -298,7 +299,6 @@ class Collider {
 ///        lowest offending triangle is named, whatever the thread count).
 std::vector<Item> collectItems(const Mesh& mesh) {
   const std::size_t n = mesh.triangles.size();
-  const std::size_t vertexCount = mesh.positions.size();
   constexpr std::uint64_t kSkipped = ~std::uint64_t{0};  // above every 63-bit Morton code
   struct Key {
     std::uint64_t code;
@@ -324,19 +324,8 @@ std::vector<Item> collectItems(const Mesh& mesh) {
         for (std::size_t t = r.begin(); t != r.end(); ++t) {
           keys[t] = {kSkipped, static_cast<std::uint32_t>(t)};
           const Triangle& tri = mesh.triangles[t];
-          bool bad = false;
-          for (const std::uint32_t v : tri) {
-            if (v >= vertexCount) {
-              bad = true;
-              break;
-            }
-            const Vec3f& p = mesh.positions[v];
-            bad = bad || !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]);
-          }
-          if (bad) {
-            std::size_t seen = firstBad.load();
-            while (t < seen && !firstBad.compare_exchange_weak(seen, t)) {
-            }
+          if (detail::invalidTriangle(mesh, tri)) {
+            detail::keepLowest(firstBad, t);
             continue;
           }
           if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2] ||
@@ -361,15 +350,7 @@ std::vector<Item> collectItems(const Mesh& mesh) {
         a.kept += b.kept;
         return a;
       });
-  if (const std::size_t t = firstBad.load(); t < n) {
-    for (const std::uint32_t v : mesh.triangles[t]) {
-      if (v >= vertexCount)
-        throw InputError("countSelfIntersections: triangle " + std::to_string(t) + " references vertex " +
-                         std::to_string(v) + " but the mesh has " + std::to_string(vertexCount) + " vertices");
-    }
-    throw InputError("countSelfIntersections: a vertex of triangle " + std::to_string(t) +
-                     " has a non-finite coordinate");
-  }
+  if (const std::size_t t = firstBad.load(); t < n) detail::throwInvalidTriangle(mesh, t, "countSelfIntersections");
 
   // Pass 2: Morton codes on a 2^21 lattice per axis, then one parallel sort.
   std::array<double, 3> scale{};

@@ -14,6 +14,7 @@
 #include <tbb/parallel_for.h>
 
 #include "isovdb/errors.h"
+#include "isovdb/mesh/mesh_checks.h"
 #include "isovdb/mesh/self_intersection.h"
 
 namespace isovdb::mesh {
@@ -36,25 +37,13 @@ enum TriangleFlag : std::uint8_t { kProper = 0, kCollapsed = 1, kFlat = 2 };
 /// Per-triangle classification; throws for the lowest invalid triangle.
 std::vector<std::uint8_t> classifyTriangles(const Mesh& mesh) {
   const std::size_t n = mesh.triangles.size();
-  const std::size_t vertexCount = mesh.positions.size();
   std::vector<std::uint8_t> flags(n, kProper);
   std::atomic<std::size_t> firstBad{n};
   tbb::parallel_for(Range(0, n, kGrain), [&](const Range& r) {
     for (std::size_t t = r.begin(); t != r.end(); ++t) {
       const Triangle& tri = mesh.triangles[t];
-      bool bad = false;
-      for (const std::uint32_t v : tri) {
-        if (v >= vertexCount) {
-          bad = true;
-          break;
-        }
-        const Vec3f& p = mesh.positions[v];
-        bad = bad || !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]);
-      }
-      if (bad) {
-        std::size_t seen = firstBad.load();
-        while (t < seen && !firstBad.compare_exchange_weak(seen, t)) {
-        }
+      if (detail::invalidTriangle(mesh, tri)) {
+        detail::keepLowest(firstBad, t);
       } else if (collapsed(tri)) {
         flags[t] = kCollapsed;
       } else if (CGAL::collinear(toPoint(mesh.positions[tri[0]]), toPoint(mesh.positions[tri[1]]),
@@ -63,13 +52,7 @@ std::vector<std::uint8_t> classifyTriangles(const Mesh& mesh) {
       }
     }
   });
-  if (const std::size_t t = firstBad.load(); t < n) {
-    for (const std::uint32_t v : mesh.triangles[t])
-      if (v >= vertexCount)
-        throw InputError("validateMesh: triangle " + std::to_string(t) + " references vertex " +
-                         std::to_string(v) + " but the mesh has " + std::to_string(vertexCount) + " vertices");
-    throw InputError("validateMesh: a vertex of triangle " + std::to_string(t) + " has a non-finite coordinate");
-  }
+  if (const std::size_t t = firstBad.load(); t < n) detail::throwInvalidTriangle(mesh, t, "validateMesh");
   return flags;
 }
 

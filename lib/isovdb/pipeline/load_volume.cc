@@ -1,18 +1,15 @@
 #include "isovdb/pipeline/load_volume.h"
 
-#include <algorithm>
+#include <string>
 
 #include "isovdb/io/dense_volume.h"
+#include "isovdb/io/path_util.h"
 #include "isovdb/io/vdb_file.h"
 #include "isovdb/volume/ingest.h"
 
 namespace isovdb::pipeline {
 
-bool isVdbPath(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext == ".vdb";
-}
+bool isVdbPath(const std::filesystem::path& path) { return io::lowerExtension(path) == ".vdb"; }
 
 void recordGridStats(const volume::Volume& volume, Statistics::Json& section) {
   const volume::GridStats stats = volume.stats();

@@ -1,0 +1,9 @@
+#include "isovdb/io/path_util.h"
+
+#include "isovdb/io/header_text.h"
+
+namespace isovdb::io {
+
+std::string lowerExtension(const std::filesystem::path& path) { return detail::lower(path.extension().string()); }
+
+}  // namespace isovdb::io

@@ -1,0 +1,26 @@
+/// @file mesh_checks.h
+/// @brief Internal input checks shared by the mesh analyses (validate.cc,
+///        self_intersection.cc). Not part of the public API.
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <string_view>
+
+#include "isovdb/mesh/mesh.h"
+
+namespace isovdb::mesh::detail {
+
+/// True when a corner of `tri` is not a vertex of `mesh` or a corner's position
+/// has a non-finite coordinate.
+bool invalidTriangle(const Mesh& mesh, const Triangle& tri);
+
+/// Lowers `lowest` to `t` when `t` is smaller; safe to call from many threads.
+void keepLowest(std::atomic<std::size_t>& lowest, std::size_t t);
+
+/// Throws the InputError that names why triangle `t` is invalid, prefixed by `caller`.
+/// @pre invalidTriangle(mesh, mesh.triangles[t])
+/// @throw InputError always: an out-of-range vertex index, else a non-finite coordinate.
+[[noreturn]] void throwInvalidTriangle(const Mesh& mesh, std::size_t t, std::string_view caller);
+
+}  // namespace isovdb::mesh::detail
