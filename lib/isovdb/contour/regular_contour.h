@@ -1,0 +1,69 @@
+/// @file regular_contour.h
+/// @brief Regular mode: Dual Marching Cubes with Wenger's manifold fix (MDMC)
+///        on the regular-construction octree of one meta-cell (paper 000,
+///        section 4.2.3.1 and Algorithm 4.1; paper 003, section 3.3.2).
+///
+/// Every surface leaf of a regular octree is at the maximum depth, so every
+/// interior bipolar edge is shared by exactly four leaves of the same size.
+/// Each surface leaf gets up to four dual vertices (dmc_table.h), each placed
+/// by the QEF of its own edge group (mass point when the QEF minimiser leaves
+/// the cell; always inside the cell). Each interior bipolar edge makes one
+/// quad of the four vertices that the table assigns to that edge, split into
+/// two triangles along the diagonal with the better-shaped triangles. Every
+/// edge is emitted once, by its owner: the leaf for which it is the cell edge
+/// at the min corner of the two other axes (the leaf on the +u,+v side).
+///
+/// Sign convention: a sample is inside iff value <= iso (an exact-iso sample
+/// counts as inside everywhere, which keeps the output manifold). Triangles
+/// are oriented with their normals pointing from inside to outside.
+///
+/// Meta-cell boundary: edges with fewer than four leaves around them (on the
+/// meta-cell's boundary faces) are skipped, so the mesh is closed only if the
+/// surface does not reach the meta-cell boundary (pad a whole-volume meta-cell
+/// by at least one outside sample). Seam stitching between meta-cells will
+/// supply those edges later.
+///
+/// Output: positions in global voxel index coordinates, shared (indexed)
+/// vertices, no normals. Parallel with TBB and deterministic: the result
+/// depends only on the inputs, not on the thread count. Memory: O(leaves) plus
+/// the mesh.
+#pragma once
+
+#include <cstdint>
+
+#include "isovdb/mesh/mesh.h"
+#include "isovdb/octree/linear_octree.h"
+#include "isovdb/octree/meta_cell_samples.h"
+
+namespace isovdb::contour {
+
+/// Options of contourRegular.
+struct RegularContourOptions {
+  float iso = 0.0f;                     ///< isovalue; inside iff value <= iso. Must be the one the octree was built with
+  bool manifoldFix = true;              ///< Wenger's MDMC correction; false only in tests (then the output can be non-manifold)
+  float singularValueThreshold = 0.1f;  ///< QEF truncation, relative to the largest singular value (see QefOptions);
+                                        ///< higher = smoother vertices, lower = sharper but less stable
+};
+
+/// Figures of one contourRegular call.
+struct RegularContourStats {
+  std::int64_t cells = 0;          ///< surface leaves that received dual vertices
+  std::int64_t vertices = 0;       ///< dual vertices (= mesh positions)
+  std::int64_t quads = 0;          ///< interior bipolar edges contoured (two triangles each)
+  std::int64_t manifoldFixes = 0;  ///< cells that used Wenger's alternative grouping
+};
+
+/// @brief Contours one meta-cell's regular octree with manifold Dual Marching Cubes.
+/// @param[in] samples the meta-cell's dense samples.
+/// @param[in] regularTree octree built from `samples` with OctreeConstruction::Regular and iso `options.iso`.
+/// @param[in] options isovalue, manifold fix, QEF truncation.
+/// @param[out] stats optional figures.
+/// @return the mesh: closed and manifold wherever the surface stays off the meta-cell boundary.
+/// @pre every leaf whose corners differ in sign has the same size as the leaves around its bipolar edges
+///      (true for a regular construction).
+/// @throw InputError if `samples.size` differs from the tree's meta-cell size or a leaf's corner
+///        signs differ from the samples at `options.iso` (tree built with another isovalue).
+mesh::Mesh contourRegular(const octree::MetaCellSamples& samples, const octree::LinearOctree& regularTree,
+                          const RegularContourOptions& options = {}, RegularContourStats* stats = nullptr);
+
+}  // namespace isovdb::contour
