@@ -1,0 +1,187 @@
+#include "isovdb/contour/ju_udeshi.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace isovdb::contour {
+namespace {
+
+Vec3d sub(const Vec3d& a, const Vec3d& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec3d add(const Vec3d& a, const Vec3d& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+Vec3d scale(const Vec3d& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
+double dot(const Vec3d& a, const Vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec3d cross(const Vec3d& a, const Vec3d& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double norm(const Vec3d& a) { return std::sqrt(dot(a, a)); }
+double distance(const Vec3d& a, const Vec3d& b) { return norm(sub(a, b)); }
+
+/// Oriented plane n . x + d with |n| = 1.
+struct Plane {
+  Vec3d n{0, 0, 0};
+  double d = 0.0;
+  double eval(const Vec3d& x) const { return dot(n, x) + d; }
+};
+
+/// Plane through p0, p1, p2 oriented so that `reference` is on the positive side.
+/// @return false if degenerate or `reference` lies (nearly) on it.
+bool orientedPlane(const Vec3d& p0, const Vec3d& p1, const Vec3d& p2, const Vec3d& reference, Plane& out) {
+  Vec3d n = cross(sub(p1, p0), sub(p2, p0));
+  const double len = norm(n);
+  const double scaleRef = std::max({distance(p0, p1), distance(p0, p2), 1e-30});
+  if (len <= 1e-14 * scaleRef * scaleRef) return false;
+  n = scale(n, 1.0 / len);
+  out = Plane{n, -dot(n, p0)};
+  const double s = out.eval(reference);
+  if (std::abs(s) <= 1e-12 * scaleRef) return false;
+  if (s < 0) out = Plane{scale(n, -1.0), -out.d};
+  return true;
+}
+
+/// Keeps the part of a convex polygon where plane >= 0 (Sutherland–Hodgman).
+void clip(const std::vector<Vec3d>& in, const Plane& plane, std::vector<Vec3d>& out) {
+  out.clear();
+  const std::size_t n = in.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3d& p = in[i];
+    const Vec3d& q = in[(i + 1) % n];
+    const double sp = plane.eval(p), sq = plane.eval(q);
+    if (sp >= 0) out.push_back(p);
+    if ((sp >= 0) != (sq >= 0)) {
+      const double t = sp / (sp - sq);
+      out.push_back(add(p, scale(sub(q, p), t)));
+    }
+  }
+}
+
+/// Distance from x to segment [p, q].
+double distanceToSegment(const Vec3d& x, const Vec3d& p, const Vec3d& q) {
+  const Vec3d d = sub(q, p);
+  const double len2 = dot(d, d);
+  double t = len2 > 0 ? dot(sub(x, p), d) / len2 : 0.0;
+  t = std::clamp(t, 0.0, 1.0);
+  return distance(x, add(p, scale(d, t)));
+}
+
+/// Is the triangle inside tetrahedron conv(e0, e1, P, Q) within the angular sector of (P, Q)?
+bool insideSector(const Vec3d& e0, const Vec3d& e1, const Vec3d& P, const Vec3d& Q,
+                  const std::vector<Vec3d>& triangle, const EnvelopeOptions& options,
+                  std::vector<Vec3d>& scratchA, std::vector<Vec3d>& scratchB) {
+  Plane sectorP, sectorQ, outer0, outer1;
+  // Sector: the side of plane (e, P) containing Q and the side of plane (e, Q) containing P.
+  if (!orientedPlane(e0, e1, P, Q, sectorP) || !orientedPlane(e0, e1, Q, P, sectorQ)) return false;
+  // Outer faces shared with neighbouring edges' tetrahedra: (e0, P, Q) and (e1, P, Q).
+  if (!orientedPlane(e0, P, Q, e1, outer0) || !orientedPlane(e1, P, Q, e0, outer1)) return false;
+  clip(triangle, sectorP, scratchA);
+  if (scratchA.empty()) return true;
+  clip(scratchA, sectorQ, scratchB);
+  if (scratchB.empty()) return true;
+  const double touch = 1e-9 * std::max(1.0, distance(e0, e1));
+  for (const Vec3d& x : scratchB) {
+    if (outer0.eval(x) >= options.margin && outer1.eval(x) >= options.margin) continue;
+    // Allowed contact: the segment v_c v_f, which neighbouring edges share.
+    if (distanceToSegment(x, P, Q) <= touch) continue;
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+FacePoint computeFacePoint(const Vec3d& a, const Vec3d& b, const MinimalFace& face, const EnvelopeOptions& options) {
+  const int n = face.axis;
+  const double da = a[n] - face.coordinate, db = b[n] - face.coordinate;
+  Vec3d x;
+  if ((da < 0) != (db < 0) && da != db) {
+    const double t = da / (da - db);
+    x = add(a, scale(sub(b, a), t));
+  } else {
+    x = scale(add(a, b), 0.5);
+  }
+  x[n] = face.coordinate;
+  const double m = options.faceMarginFraction * face.size;
+  FacePoint result;
+  result.crossed = (da < 0) != (db < 0);
+  for (int axis = 0; axis < 3; ++axis) {
+    if (axis == n) continue;
+    const double lo = face.min[axis] + m, hi = face.min[axis] + face.size - m;
+    if (x[axis] < lo || x[axis] > hi) result.crossed = false;
+    x[axis] = std::clamp(x[axis], lo, hi);
+  }
+  result.point = x;
+  return result;
+}
+
+bool triangleInEnvelope(const EdgeEnvelope& envelope, const Vec3d& a, const Vec3d& b, const Vec3d& c,
+                        const EnvelopeOptions& options) {
+  const std::vector<Vec3d> triangle{a, b, c};
+  std::vector<Vec3d> scratchA, scratchB;
+  scratchA.reserve(8);
+  scratchB.reserve(8);
+  const int k = envelope.cellCount;
+  for (int i = 0; i < k; ++i) {
+    const Vec3d& face = envelope.facePoints[static_cast<std::size_t>(i)];
+    const Vec3d& before = envelope.cellPoints[static_cast<std::size_t>(i)];
+    const Vec3d& after = envelope.cellPoints[static_cast<std::size_t>((i + 1) % k)];
+    if (!insideSector(envelope.edgeStart, envelope.edgeEnd, before, face, triangle, options, scratchA, scratchB))
+      return false;
+    if (!insideSector(envelope.edgeStart, envelope.edgeEnd, after, face, triangle, options, scratchA, scratchB))
+      return false;
+  }
+  return true;
+}
+
+std::vector<int> edgePolygon(int cellCount, const std::array<bool, 4>& facesCrossed) {
+  std::vector<int> polygon;
+  for (int i = 0; i < cellCount; ++i) {
+    polygon.push_back(i);
+    if (!facesCrossed[static_cast<std::size_t>(i)]) polygon.push_back(kFaceVertex + i);
+  }
+  return polygon;
+}
+
+EdgeTriangulation chooseTriangulation(const EdgeEnvelope& envelope, const std::array<bool, 4>& facesCrossed,
+                                      bool intersectionFree, const EnvelopeOptions& options) {
+  const int k = envelope.cellCount;
+  const std::array<bool, 4> allCrossed{true, true, true, true};
+  const std::vector<int> polygon = edgePolygon(k, intersectionFree ? facesCrossed : allCrossed);
+  const int m = static_cast<int>(polygon.size());
+  auto point = [&](int local) -> const Vec3d& {
+    return local >= kFaceVertex ? envelope.facePoints[static_cast<std::size_t>(local - kFaceVertex)]
+                                : envelope.cellPoints[static_cast<std::size_t>(local)];
+  };
+  auto at = [&](int j) { return polygon[static_cast<std::size_t>(((j % m) + m) % m)]; };
+  // Apex order: for a quadrilateral the shorter diagonal first, else in polygon order.
+  std::vector<int> apexes;
+  if (m == 4) {
+    const bool shorter02 = distance(point(at(0)), point(at(2))) <= distance(point(at(1)), point(at(3)));
+    apexes = shorter02 ? std::vector<int>{0, 1} : std::vector<int>{1, 0};
+  } else if (m == 3) {
+    apexes = {0};
+  } else {
+    for (int a = 0; a < m; ++a) apexes.push_back(a);
+  }
+  if (!intersectionFree) return EdgeTriangulation{false, apexes.front()};
+  for (int apex : apexes) {
+    bool ok = true;
+    for (int j = 1; j + 1 < m && ok; ++j)
+      ok = triangleInEnvelope(envelope, point(at(apex)), point(at(apex + j)), point(at(apex + j + 1)), options);
+    if (ok) return EdgeTriangulation{false, apex};
+  }
+  return EdgeTriangulation{true, 0};
+}
+
+void triangulateEdge(int cellCount, const std::array<bool, 4>& facesCrossed, EdgeTriangulation how,
+                     std::vector<std::array<int, 3>>& out) {
+  out.clear();
+  const std::vector<int> polygon = edgePolygon(cellCount, facesCrossed);
+  const int m = static_cast<int>(polygon.size());
+  auto at = [&](int j) { return polygon[static_cast<std::size_t>(((j % m) + m) % m)]; };
+  if (how.fan) {
+    for (int j = 0; j < m; ++j) out.push_back({kEdgeVertex, at(j), at(j + 1)});
+    return;
+  }
+  for (int j = 1; j + 1 < m; ++j) out.push_back({at(how.apex), at(how.apex + j), at(how.apex + j + 1)});
+}
+
+}  // namespace isovdb::contour

@@ -1,0 +1,164 @@
+// Tests of lib/isovdb/contour/ju_udeshi.h: face points, the envelope test and
+// the fan / trivial triangulations of one minimal edge (Ju & Udeshi 2006;
+// paper 000, section 4.2.3.2).
+#include "isovdb/contour/ju_udeshi.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <random>
+#include <set>
+#include <vector>
+
+namespace isovdb::contour {
+namespace {
+
+/// Regular configuration: unit edge along z from (0,0,0) to (0,0,1), four unit
+/// cells around it in cyclic order (-,-), (+,-), (+,+), (-,+) (quadrants 0, 1, 3, 2).
+EdgeEnvelope regularEnvelope(const std::array<Vec3d, 4>& cells) {
+  EdgeEnvelope env;
+  env.edgeStart = {0, 0, 0};
+  env.edgeEnd = {0, 0, 1};
+  env.cellCount = 4;
+  env.cellPoints = cells;
+  return env;
+}
+
+/// Minimal faces between consecutive cells of regularEnvelope: x = 0 or y = 0 planes.
+std::array<MinimalFace, 4> regularFaces() {
+  return {MinimalFace{.axis = 0, .coordinate = 0, .min = {0, -1, 0}, .size = 1},   // cells 0 | 1 (y < 0)
+          MinimalFace{.axis = 1, .coordinate = 0, .min = {0, 0, 0}, .size = 1},    // cells 1 | 2 (x > 0)
+          MinimalFace{.axis = 0, .coordinate = 0, .min = {-1, 0, 0}, .size = 1},   // cells 2 | 3 (y > 0)
+          MinimalFace{.axis = 1, .coordinate = 0, .min = {-1, -1, 0}, .size = 1}}; // cells 3 | 0 (x < 0)
+}
+
+std::array<bool, 4> fillFacePoints(EdgeEnvelope& env) {
+  const auto faces = regularFaces();
+  std::array<bool, 4> crossed{};
+  for (int i = 0; i < 4; ++i) {
+    const FacePoint fp = computeFacePoint(env.cellPoints[i], env.cellPoints[(i + 1) % 4], faces[i]);
+    env.facePoints[i] = fp.point;
+    crossed[i] = fp.crossed;
+  }
+  return crossed;
+}
+
+TEST(JuUdeshi, FacePointIsTheCrossingWhenInsideTheFace) {
+  const MinimalFace face{.axis = 0, .coordinate = 0, .min = {0, 0, 0}, .size = 1};
+  const FacePoint in = computeFacePoint({-0.5, 0.2, 0.4}, {0.5, 0.6, 0.6}, face);
+  EXPECT_TRUE(in.crossed);
+  EXPECT_NEAR(in.point[0], 0.0, 1e-12);
+  EXPECT_NEAR(in.point[1], 0.4, 1e-12);
+  EXPECT_NEAR(in.point[2], 0.5, 1e-12);
+  // The segment crosses the plane outside the face: clamped inside, not crossed.
+  const FacePoint out = computeFacePoint({-0.5, 1.4, 0.4}, {0.5, 1.6, 0.6}, face);
+  EXPECT_FALSE(out.crossed);
+  EXPECT_GT(out.point[1], 0.0);
+  EXPECT_LT(out.point[1], 1.0);
+  EXPECT_EQ(out.point[0], 0.0);
+}
+
+TEST(JuUdeshi, FlatQuadAcrossTheEdgeKeepsTheTrivialTriangulation) {
+  // A plane z = 0.5 cut: the four vertices at the cell centres' height 0.5.
+  EdgeEnvelope env = regularEnvelope({Vec3d{-0.5, -0.5, 0.5}, {0.5, -0.5, 0.5}, {0.5, 0.5, 0.5}, {-0.5, 0.5, 0.5}});
+  const auto crossed = fillFacePoints(env);
+  for (bool c : crossed) EXPECT_TRUE(c);
+  EXPECT_TRUE(triangleInEnvelope(env, env.cellPoints[0], env.cellPoints[1], env.cellPoints[2]));
+  const EdgeTriangulation how = chooseTriangulation(env, crossed);
+  EXPECT_FALSE(how.fan);
+  std::vector<std::array<int, 3>> tris;
+  triangulateEdge(4, crossed, how, tris);
+  EXPECT_EQ(tris.size(), 2u);
+}
+
+/// Number of times the segment e0 e1 (x = y = 0, 0 < z < 1) pierces triangle (a, b, c).
+int piercings(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+  // 2D barycentric test of the origin in the projected triangle, then the height there.
+  const double d = (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+  if (d == 0) return 0;
+  const double u = ((0 - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (0 - a[1])) / d;
+  const double v = ((b[0] - a[0]) * (0 - a[1]) - (0 - a[0]) * (b[1] - a[1])) / d;
+  if (u < 0 || v < 0 || u + v > 1) return 0;
+  const double z = a[2] + u * (b[2] - a[2]) + v * (c[2] - a[2]);
+  return z > 0 && z < 1 ? 1 : 0;
+}
+
+TEST(JuUdeshi, RandomQuadsTrivialOnlyWhenTheSurfaceCrossesTheEdgeOnce) {
+  // Random vertices in the four cells: whenever the trivial triangulation is
+  // kept, its two triangles cross the edge exactly once; some configurations
+  // with every face crossed still need the fan (the envelope test matters).
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(0.02, 0.98);
+  int trivial = 0, fanWithCrossedFaces = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    std::array<Vec3d, 4> cells;
+    const int sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
+    for (int i = 0; i < 4; ++i) cells[i] = {sx[i] * unit(rng), sy[i] * unit(rng), unit(rng)};
+    EdgeEnvelope env = regularEnvelope(cells);
+    const auto crossed = fillFacePoints(env);
+    const EdgeTriangulation how = chooseTriangulation(env, crossed);
+    const bool allCrossed = crossed[0] && crossed[1] && crossed[2] && crossed[3];
+    if (how.fan) {
+      fanWithCrossedFaces += allCrossed ? 1 : 0;
+      continue;
+    }
+    ASSERT_TRUE(allCrossed);
+    ++trivial;
+    const auto& c = env.cellPoints;
+    const int n = how.apex == 0 ? piercings(c[0], c[1], c[2]) + piercings(c[0], c[2], c[3])
+                                : piercings(c[1], c[2], c[3]) + piercings(c[1], c[3], c[0]);
+    EXPECT_EQ(n, 1) << "trial " << trial;
+  }
+  std::printf("random quads: %d trivial, %d fans with all faces crossed\n", trivial, fanWithCrossedFaces);
+  EXPECT_GT(trivial, 100);
+  EXPECT_GT(fanWithCrossedFaces, 0);
+}
+
+TEST(JuUdeshi, UncrossedFaceRoutesThePolygonThroughTheFacePoint) {
+  // Cell 2's vertex is far up the x = 0 face's side: the segment c2 c3 misses face 2.
+  EdgeEnvelope env = regularEnvelope({Vec3d{-0.5, -0.5, 0.5}, {0.5, -0.5, 0.5}, {0.5, 0.5, 0.5}, {-0.5, 0.5, 0.5}});
+  auto crossed = fillFacePoints(env);
+  crossed[2] = false;
+  const std::vector<int> polygon = edgePolygon(4, crossed);
+  EXPECT_EQ(polygon, (std::vector<int>{0, 1, 2, kFaceVertex + 2, 3}));
+  const EdgeTriangulation how = chooseTriangulation(env, crossed);
+  std::vector<std::array<int, 3>> tris;
+  triangulateEdge(4, crossed, how, tris);
+  EXPECT_EQ(tris.size(), how.fan ? 5u : 3u);
+  // The polygon side c2 -> c3 is never used: the path goes c2 -> f2 -> c3.
+  for (const auto& t : tris)
+    for (int s = 0; s < 3; ++s) EXPECT_FALSE(t[s] == 2 && t[(s + 1) % 3] == 3);
+}
+
+TEST(JuUdeshi, TriangleFarOutsideIsRejected) {
+  EdgeEnvelope env = regularEnvelope({Vec3d{-0.5, -0.5, 0.5}, {0.5, -0.5, 0.5}, {0.5, 0.5, 0.5}, {-0.5, 0.5, 0.5}});
+  fillFacePoints(env);
+  // A triangle that crosses the edge line above e1 (z = 1.5).
+  EXPECT_FALSE(triangleInEnvelope(env, {-0.5, -0.5, 1.5}, {0.5, -0.5, 1.5}, {0.0, 0.8, 1.5}));
+  // One that reaches the edge's end point is rejected too (margin).
+  EXPECT_FALSE(triangleInEnvelope(env, {-0.5, -0.5, 0.0}, {0.5, -0.5, 0.0}, {0.0, 0.8, 0.0}));
+}
+
+TEST(JuUdeshi, FullFanHasTwoTrianglesPerCellAroundTheEdge) {
+  std::vector<std::array<int, 3>> tris;
+  const EdgeTriangulation fan{true, 0};
+  triangulateEdge(4, {false, false, false, false}, fan, tris);
+  EXPECT_EQ(tris.size(), 8u);
+  triangulateEdge(3, {false, false, false, true}, fan, tris);
+  ASSERT_EQ(tris.size(), 6u);
+  // Every triangle uses v_e and a (v_c, v_f) or (v_f, v_c) side, each once, in polygon order.
+  std::set<std::pair<int, int>> sides;
+  for (const auto& t : tris) {
+    EXPECT_EQ(t[0], kEdgeVertex);
+    EXPECT_TRUE((t[1] < kFaceVertex) != (t[2] < kFaceVertex));
+    EXPECT_TRUE(sides.insert({t[1], t[2]}).second);
+  }
+  EXPECT_TRUE(sides.count({0, kFaceVertex + 0}) && sides.count({kFaceVertex + 0, 1}) &&
+              sides.count({kFaceVertex + 2, 0}));
+  // With crossed faces the fan triangles of a face merge into (v_e, c_i, c_{i+1}).
+  triangulateEdge(4, {true, true, true, true}, fan, tris);
+  EXPECT_EQ(tris.size(), 4u);
+}
+
+}  // namespace
+}  // namespace isovdb::contour
