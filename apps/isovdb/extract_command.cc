@@ -22,7 +22,7 @@ void addExtractCommand(CLI::App& app, Context& context) {
   CLI::App* command = app.add_subcommand("extract", "Volume -> triangle mesh (.ply or .obj)");
   command->add_option("IN", state->input, "Volume file (.raw, .nrrd, .nhdr, .mhd, .mha, .vdb)")->required();
   command->add_option("-o,--output", state->output, "Output mesh (.ply binary, or .obj)")->required();
-  command->add_option("--method", state->method, "Contouring method: vdb (OpenVDB volumeToMesh)")
+  command->add_option("--method", state->method, "Contouring method: vdb (OpenVDB volumeToMesh), regular (manifold DMC), adaptive (DC + Ju-Udeshi)")
       ->capture_default_str();
   command->add_option("--iso", state->options.iso,
                       "Isovalue: voxels on distance fields (0 = mask boundary), field units on scalars")
@@ -37,6 +37,24 @@ void addExtractCommand(CLI::App& app, Context& context) {
   command->add_option("--closing", state->options.distance.closingSteps,
                       "Morphological closing steps before the distance field (changes topology)")
       ->capture_default_str();
+  command->add_option("--min-level", state->options.octree.minLevel,
+                      "regular/adaptive: uniform subdivision down to this depth under the meta-cell "
+                      "(-1: --max-cell-size decides)")
+      ->capture_default_str();
+  command->add_option("--max-cell-size", state->options.octree.maxCellSize,
+                      "regular/adaptive: largest cell in voxels when --min-level is -1")
+      ->capture_default_str();
+  command->add_option("--max-level", state->options.octree.maxLevel,
+                      "regular/adaptive: deepest level under the meta-cell (-1: --finest-size decides)")
+      ->capture_default_str();
+  command->add_option("--finest-size", state->options.octree.finestCellSize,
+                      "regular/adaptive: smallest cell in voxels (1, 2, 4, ...)")
+      ->capture_default_str();
+  command->add_option("--qef-tolerance", state->options.octree.qefTolerance,
+                      "adaptive: split cells whose QEF residual (RMS, voxels) exceeds this; <0 off")
+      ->capture_default_str();
+  command->add_flag("!--no-intersection-free", state->options.octree.intersectionFree,
+                    "adaptive: plain dual contouring without Ju-Udeshi fans (for comparison)");
   command->add_flag("--check", state->check, "Validate the mesh (closed, manifold, self-intersections, Euler)");
   command->add_flag("--no-self-intersections", state->noSelfIntersections,
                     "With --check: skip the self-intersection test");
@@ -44,7 +62,7 @@ void addExtractCommand(CLI::App& app, Context& context) {
   state->flags.add(*command);
   command->callback([state, &context] {
     const auto method = pipeline::parseContourMethod(state->method);
-    if (!method) throw InputError("--method: unknown method '" + state->method + "', expected vdb");
+    if (!method) throw InputError("--method: unknown method '" + state->method + "', expected vdb, regular or adaptive");
     state->options.method = *method;
     if (!io::isMeshPath(state->output))
       throw InputError("'" + state->output + "': unknown mesh format, expected .ply or .obj");

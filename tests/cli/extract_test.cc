@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <tuple>
 
 #include <nlohmann/json.hpp>
 #include <openvdb/io/File.h>
@@ -33,24 +34,33 @@ std::filesystem::path writeShape(const TempDir& dir, samples::ShapeKind kind, in
 
 nlohmann::json readJson(const std::filesystem::path& path) { return nlohmann::json::parse(readFile(path)); }
 
-class CliExtract : public ::testing::TestWithParam<samples::ShapeKind> {};
+std::string contourMethodOf(const std::filesystem::path& stats) {
+  return readJson(stats)["contour"]["method"].get<std::string>();
+}
+
+class CliExtract : public ::testing::TestWithParam<std::tuple<samples::ShapeKind, std::string>> {
+ protected:
+  samples::ShapeKind shape() const { return std::get<0>(GetParam()); }
+  const std::string& method() const { return std::get<1>(GetParam()); }
+};
 
 TEST_P(CliExtract, ClosedManifoldWithTheObjectsTopology) {
   TempDir dir;
-  const auto input = writeShape(dir, GetParam(), 64);
+  const auto input = writeShape(dir, shape(), 64);
   const auto mesh = dir / "mesh.ply", stats = dir / "stats.json";
   std::string output;
   ASSERT_EQ(runCommand(cliPath().string() + " -q extract " + input.string() + " -o " + mesh.string() +
-                           " --check --stats " + stats.string(),
+                           " --method " + method() + " --check --stats " + stats.string(),
                        &output),
             0)
       << output;
+  EXPECT_EQ(contourMethodOf(stats), method());
   const nlohmann::json json = readJson(stats);
   EXPECT_GT(json["contour"]["triangles"].get<int>(), 1000);
   EXPECT_TRUE(json["check"]["closed"].get<bool>());
   EXPECT_TRUE(json["check"]["manifold"].get<bool>());
   EXPECT_EQ(json["check"]["self_intersecting_pairs"].get<int>(), 0);
-  EXPECT_EQ(json["check"]["euler_characteristic"].get<int>(), 2 * samples::knownEulerCharacteristic(GetParam()));
+  EXPECT_EQ(json["check"]["euler_characteristic"].get<int>(), 2 * samples::knownEulerCharacteristic(shape()));
   EXPECT_GT(json["memory"]["peak_rss_bytes"].get<std::int64_t>(), 0);
   EXPECT_TRUE(json["timings_s"].contains("distance_field"));
 
@@ -63,18 +73,21 @@ TEST_P(CliExtract, ClosedManifoldWithTheObjectsTopology) {
       << output;
   const nlohmann::json check = readJson(checkStats);
   EXPECT_EQ(check["topology"]["solid_euler_characteristic"].get<int>(),
-            samples::knownEulerCharacteristic(GetParam()));
+            samples::knownEulerCharacteristic(shape()));
   EXPECT_TRUE(check["topology"]["matches"].get<bool>());
   EXPECT_TRUE(check["passed"].get<bool>());
 }
 
 INSTANTIATE_TEST_SUITE_P(Shapes, CliExtract,
-                         ::testing::Values(samples::ShapeKind::Sphere, samples::ShapeKind::Torus,
-                                           samples::ShapeKind::Genus2, samples::ShapeKind::SaltDome),
+                         ::testing::Combine(::testing::Values(samples::ShapeKind::Sphere, samples::ShapeKind::Torus,
+                                                              samples::ShapeKind::Genus2,
+                                                              samples::ShapeKind::GyroidSlab,
+                                                              samples::ShapeKind::SaltDome),
+                                            ::testing::Values(std::string("vdb"), std::string("regular"))),
                          [](const auto& info) {
-                           std::string name(samples::shapeName(info.param));
+                           std::string name(samples::shapeName(std::get<0>(info.param)));
                            std::replace(name.begin(), name.end(), '-', '_');
-                           return name;
+                           return name + "_" + std::get<1>(info.param);
                          });
 
 TEST(CliCheck, FailsOnATopologyMismatch) {

@@ -10,12 +10,16 @@ namespace isovdb::pipeline {
 
 std::optional<ContourMethod> parseContourMethod(std::string_view name) {
   if (name == "vdb") return ContourMethod::Vdb;
+  if (name == "regular") return ContourMethod::Regular;
+  if (name == "adaptive") return ContourMethod::Adaptive;
   return std::nullopt;
 }
 
 std::string_view contourMethodName(ContourMethod method) {
   switch (method) {
     case ContourMethod::Vdb: return "vdb";
+    case ContourMethod::Regular: return "regular";
+    case ContourMethod::Adaptive: return "adaptive";
   }
   return "unknown";
 }
@@ -64,14 +68,14 @@ mesh::Mesh extractMesh(const volume::Volume& volume, const ExtractOptions& optio
                        Statistics* stats) {
   const volume::Volume field = toContourable(volume, options.distance, interrupter, stats);
   mesh::Mesh mesh;
-  {
+  if (options.method == ContourMethod::Vdb) {
     Statistics::StageTimer timer(stats, "contour");
-    switch (options.method) {
-      case ContourMethod::Vdb:
-        mesh = contour::contourWithOpenVdb(field, {.iso = options.iso, .adaptivity = options.adaptivity},
-                                           interrupter);
-        break;
-    }
+    mesh = contour::contourWithOpenVdb(field, {.iso = options.iso, .adaptivity = options.adaptivity}, interrupter);
+  } else {
+    OctreeContourOptions octree = options.octree;
+    octree.method = options.method == ContourMethod::Regular ? OctreeMethod::Regular : OctreeMethod::Adaptive;
+    octree.iso = static_cast<float>(options.iso);
+    mesh = contourWithOctree(field, octree, interrupter, stats);
   }
   indexToWorld(mesh, field.geometry());
   if (stats) {

@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "isovdb/mesh/mesh.h"
+#include "isovdb/pipeline/octree_contour.h"
 #include "isovdb/pipeline/statistics.h"
 #include "isovdb/progress.h"
 #include "isovdb/volume/distance_field.h"
@@ -17,7 +18,9 @@ namespace isovdb::pipeline {
 
 /// Contouring methods. Our own octree methods (regular, adaptive) plug in here.
 enum class ContourMethod {
-  Vdb,  ///< OpenVDB tools::volumeToMesh, the reference
+  Vdb,       ///< OpenVDB tools::volumeToMesh, the reference
+  Regular,   ///< octree, regular construction + manifold Dual Marching Cubes (closed, manifold)
+  Adaptive,  ///< octree, adaptive construction + dual contouring with Ju–Udeshi fans
 };
 
 std::optional<ContourMethod> parseContourMethod(std::string_view name);
@@ -32,6 +35,8 @@ struct ExtractOptions {
   double adaptivity = 0.0;
   /// Used when the input is a mask.
   volume::DistanceFieldOptions distance;
+  /// `regular` and `adaptive` methods (iso and method are taken from above).
+  OctreeContourOptions octree;
 };
 
 /// A mask becomes its distance field; distance fields and scalars pass through.

@@ -55,8 +55,11 @@ MetaCellPartition partitionMetaCells(const Volume& field, int size, float iso) {
 }
 
 void readMetaCell(const Volume& field, const MetaCellIndex& index, int size, octree::MetaCellSamples& out) {
+  readBlock(field, {index[0] * size, index[1] * size, index[2] * size}, size, out);
+}
+
+void readBlock(const Volume& field, const std::array<int, 3>& origin, int size, octree::MetaCellSamples& out) {
   const FieldGrid& grid = fieldGrid(field);
-  const std::array<int, 3> origin{index[0] * size, index[1] * size, index[2] * size};
   out.allocate(size, origin, grid.background());
   // The sample block with its apron, x fastest: exactly openvdb's LayoutXYZ.
   const openvdb::CoordBBox box(openvdb::Coord(origin[0] - 1, origin[1] - 1, origin[2] - 1),

@@ -38,6 +38,10 @@ MetaCellPartition partitionMetaCells(const Volume& field, int size, float iso = 
 /// axis), inactive voxels reading as the grid's signed background.
 void readMetaCell(const Volume& field, const MetaCellIndex& index, int size, octree::MetaCellSamples& out);
 
+/// Fills `out` with the samples of the cube of `size` cells whose minimum corner
+/// is `origin` (any index position, not only multiples of size), apron included.
+void readBlock(const Volume& field, const std::array<int, 3>& origin, int size, octree::MetaCellSamples& out);
+
 /// True when the samples 0..S of `samples` hold both sides of `iso` (inside: value <= iso).
 bool hasSignChange(const octree::MetaCellSamples& samples, float iso);
 

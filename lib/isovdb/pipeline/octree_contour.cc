@@ -1,0 +1,96 @@
+#include "isovdb/pipeline/octree_contour.h"
+
+#include <algorithm>
+
+#include "isovdb/contour/adaptive_contour.h"
+#include "isovdb/contour/regular_contour.h"
+#include "isovdb/errors.h"
+#include "isovdb/volume/meta_cells.h"
+
+namespace isovdb::pipeline {
+
+namespace {
+
+constexpr int kMargin = 2;  // voxels between the band and the meta-cell boundary
+
+int nextPowerOfTwo(int v) {
+  int p = 1;
+  while (p < v) p *= 2;
+  return p;
+}
+
+}  // namespace
+
+mesh::Mesh contourWithOctree(const volume::Volume& field, const OctreeContourOptions& options,
+                             Interrupter* interrupter, Statistics* stats) {
+  if (field.kind() == volume::VolumeKind::Mask)
+    throw InputError("'" + field.name() + "': octree contouring needs a distance field or a scalar field");
+  const volume::GridStats grid = field.stats();
+  if (grid.activeVoxels == 0) return {};
+
+  // One meta-cell around the whole active band (no stitching yet).
+  std::array<int, 3> origin;
+  int extent = 1;
+  for (int a = 0; a < 3; ++a) {
+    origin[a] = grid.bboxMin[a] - kMargin;
+    extent = std::max(extent, grid.bboxMax[a] + kMargin - origin[a]);
+  }
+  const int size = nextPowerOfTwo(extent);
+  octree::MetaCellSamples samples;
+  float iso = options.iso;
+  {
+    Statistics::StageTimer timer(stats, "read_meta_cells");
+    volume::readBlock(field, origin, size, samples);
+    // The engine's inside is value <= iso; a scalar's inside is above the isovalue.
+    if (field.kind() == volume::VolumeKind::Scalar) {
+      for (float& v : samples.values) v = -v;
+      iso = -iso;
+    }
+  }
+
+  octree::OctreeOptions treeOptions;
+  treeOptions.construction = options.method == OctreeMethod::Regular ? octree::OctreeConstruction::Regular
+                                                                     : octree::OctreeConstruction::Adaptive;
+  treeOptions.minDepth = options.minLevel;
+  if (options.minLevel < 0) treeOptions.maxCellSize = std::min(options.maxCellSize, size);
+  treeOptions.maxDepth = options.maxLevel;
+  if (options.maxLevel < 0) treeOptions.finestCellSize = options.finestCellSize;
+  treeOptions.qefTolerance = options.method == OctreeMethod::Adaptive ? options.qefTolerance : -1.f;
+  treeOptions.iso = iso;
+  octree::OctreeBuildStats buildStats;
+  octree::LinearOctree tree;
+  {
+    Statistics::StageTimer timer(stats, "octree");
+    tree = octree::buildOctree(samples, treeOptions, &buildStats, interrupter);
+  }
+
+  mesh::Mesh mesh;
+  Statistics::Json section = Statistics::Json::object();
+  section["meta_cell_size"] = size;
+  section["meta_cell_origin"] = origin;
+  section["leaves"] = tree.leafCount();
+  section["complex_cells"] = buildStats.complexCells;
+  section["unresolved_complex_leaves"] = buildStats.unresolvedComplexLeaves;
+  section["geometric_splits"] = buildStats.geometricSplits;
+  {
+    Statistics::StageTimer timer(stats, "contour");
+    if (options.method == OctreeMethod::Regular) {
+      contour::RegularContourStats contourStats;
+      mesh = contour::contourRegular(samples, tree, {.iso = iso, .manifoldFix = options.manifoldFix}, &contourStats);
+      section["manifold_fixes"] = contourStats.manifoldFixes;
+      section["quads"] = contourStats.quads;
+    } else {
+      contour::AdaptiveContourStats contourStats;
+      mesh = contour::contourAdaptive(samples, tree, {.iso = iso, .intersectionFree = options.intersectionFree},
+                                      &contourStats);
+      section["intersection_free"] = options.intersectionFree;
+      section["minimal_edges"] = contourStats.minimalEdges;
+      section["fanned_edges"] = contourStats.fannedEdges;
+      section["triangles_added_by_fans"] = contourStats.trianglesAddedByFans;
+    }
+  }
+  if (stats) (*stats)["octree"] = section;
+  return mesh;
+}
+
+}  // namespace isovdb::pipeline
