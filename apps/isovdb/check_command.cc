@@ -12,6 +12,7 @@ void addCheckCommand(CLI::App& app, Context& context) {
     std::string mesh, against, statsPath;
     InputFlags flags;
     bool noSelfIntersections = false;
+    int adjacency = 26;
   };
   auto state = std::make_shared<State>();
   CLI::App* command = app.add_subcommand(
@@ -20,7 +21,13 @@ void addCheckCommand(CLI::App& app, Context& context) {
   command->add_option("MESH", state->mesh, "Mesh file (.ply)")->required();
   command->add_option("--against", state->against,
                       "Volume the mesh represents: compare chi(mesh) with 2*chi(solid) "
-                      "(26-connected foreground); the input flags below say how to read it");
+                      "(see --adjacency); the input flags below say how to read it");
+  command->add_option("--adjacency", state->adjacency,
+                      "With --against: 26 (inside voxels touching at an edge or a corner are connected) or 6 "
+                      "(faces only, background through faces and edges: the reading regular mode follows "
+                      "apart from Wenger's fixes)")
+      ->check(CLI::IsMember({6, 26}))
+      ->capture_default_str();
   command->add_flag("--no-self-intersections", state->noSelfIntersections, "Skip the self-intersection test");
   command->add_option("--stats", state->statsPath, "Also write the figures as JSON");
   state->flags.add(*command);
@@ -41,9 +48,12 @@ void addCheckCommand(CLI::App& app, Context& context) {
     if (!state->against.empty()) {
       pipeline::Statistics::StageTimer timer(&stats, "volume_topology");
       const std::int64_t solid = pipeline::solidEulerCharacteristic(
-          state->against, state->flags.toOptions(state->against), context.interrupter());
+          state->against, state->flags.toOptions(state->against),
+          state->adjacency == 6 ? volume::Adjacency::Foreground6 : volume::Adjacency::Foreground26,
+          context.interrupter());
       auto& topology = stats["topology"];
       topology["volume"] = state->against;
+      topology["adjacency"] = state->adjacency == 6 ? "(6,18)" : "(26,6)";
       topology["solid_euler_characteristic"] = solid;
       topology["expected_mesh_euler_characteristic"] = 2 * solid;
       topology["mesh_euler_characteristic"] = report.eulerCharacteristic;

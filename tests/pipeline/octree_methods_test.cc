@@ -5,14 +5,17 @@
 #include <openvdb/tools/Interpolation.h>
 
 #include <cmath>
+#include <random>
 
 #include "generators/shapes.h"
 #include "isovdb/mesh/validate.h"
 #include "isovdb/pipeline/extract.h"
 #include "isovdb/pipeline/load_volume.h"
+#include "isovdb/volume/digital_topology.h"
 #include "isovdb/volume/grids.h"
 #include "isovdb/volume/ingest.h"
 #include "support/test_support.h"
+#include "support/vector_slice_stream.h"
 
 namespace isovdb::pipeline {
 namespace {
@@ -84,6 +87,37 @@ TEST(OctreeMethodsRealSample, FrogSkeletonRegularNeedsTheManifoldFix) {
       mesh::validateMesh(contour(sdf, OctreeMethod::Regular, /*manifoldFix=*/false), {.selfIntersections = false});
   EXPECT_GT(unfixed.nonManifoldEdges + unfixed.nonManifoldVertices, 0)
       << "the frog skeleton has 2B/3B cells sharing an ambiguous face: without Wenger's fix it is non-manifold";
+}
+
+}  // namespace
+}  // namespace isovdb::pipeline
+
+namespace isovdb::pipeline {
+namespace {
+
+/// Regular mode's topology, exactly: the (6, 18) reading of the voxels, plus one
+/// change of the surface's chi by 2 for each pair of cells Wenger's fix regroups.
+/// Random voxels are full of ambiguous faces and body-diagonal contacts.
+TEST(OctreeMethodsTopology, RegularMeshIsTheSixEighteenReadingPlusTheFixedPairs) {
+  for (unsigned seed : {1u, 2u, 3u}) {
+    std::mt19937 random(seed);
+    std::bernoulli_distribution inside(0.35);
+    auto stream = test::VectorSliceStream::fromFunction({24, 24, 24}, [&](int x, int y, int z) {
+      const bool border = x == 0 || y == 0 || z == 0 || x == 23 || y == 23 || z == 23;
+      return !border && inside(random) ? 1.f : 0.f;
+    });
+    auto again = stream.rewound();
+    const std::int64_t solid = volume::eulerCharacteristic(again, {}, nullptr, volume::Adjacency::Foreground6);
+    Statistics stats;
+    const volume::Volume sdf = toContourable(volume::ingestMask(stream, {}), {});
+    const mesh::Mesh mesh = contourWithOctree(sdf, {.method = OctreeMethod::Regular}, nullptr, &stats);
+    const mesh::MeshReport report = mesh::validateMesh(mesh, {.selfIntersections = false});
+    const std::int64_t fixedPairs = stats["octree"]["manifold_fixes"].get<std::int64_t>() / 2;
+    EXPECT_TRUE(report.closed) << seed;
+    EXPECT_TRUE(report.manifold) << seed;
+    EXPECT_GT(fixedPairs, 0) << seed;
+    EXPECT_EQ(report.eulerCharacteristic, 2 * (solid + fixedPairs)) << seed;
+  }
 }
 
 }  // namespace

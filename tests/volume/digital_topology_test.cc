@@ -16,6 +16,8 @@
 
 #include "isovdb/errors.h"
 #include "isovdb/volume/grids.h"
+#include "generators/shapes.h"
+#include "support/vector_slice_stream.h"
 
 namespace isovdb::volume {
 namespace {
@@ -297,6 +299,47 @@ TEST(DigitalTopology, InterrupterCancels) {
   DenseStream stream(dense);
   EXPECT_THROW(eulerCharacteristic(stream, MaskRule{}, &cancel), Interrupted);
   EXPECT_THROW(eulerCharacteristic(maskVolume(dense), &cancel), Interrupted);
+}
+
+}  // namespace
+}  // namespace isovdb::volume
+
+namespace isovdb::volume {
+namespace {
+
+/// chi with (6, 18) adjacency of a small dense volume given as 0/1 values, x fastest.
+std::int64_t chi6(std::array<std::int64_t, 3> dims, const std::vector<int>& inside) {
+  std::vector<float> values(inside.begin(), inside.end());
+  test::VectorSliceStream stream(dims, values);
+  return eulerCharacteristic(stream, MaskRule{.threshold = 0.5, .labels = {}}, nullptr, Adjacency::Foreground6);
+}
+
+TEST(EulerCharacteristic6, DiagonalContactsStayApart) {
+  EXPECT_EQ(chi6({2, 2, 1}, {1, 0, 0, 1}), 2);                    // sharing only an edge
+  EXPECT_EQ(chi6({2, 2, 2}, {1, 0, 0, 0, 0, 0, 0, 1}), 2);        // sharing only a corner
+  EXPECT_EQ(chi6({2, 1, 1}, {1, 1}), 1);                          // sharing a face
+  EXPECT_EQ(chi6({2, 2, 2}, {1, 1, 1, 1, 1, 1, 1, 1}), 1);        // a full block
+  EXPECT_EQ(chi6({3, 3, 1}, {1, 1, 1, 1, 0, 1, 1, 1, 1}), 0);     // a ring around a hole
+  EXPECT_EQ(chi6({3, 3, 1}, {0, 1, 0, 1, 0, 1, 0, 1, 0}), 4);     // a diagonal "ring": four pieces
+}
+
+TEST(EulerCharacteristic6, BodyDiagonalBackgroundEnclosesNoTunnel) {
+  // Six inside voxels around two opposite outside corners: with 26-adjacent
+  // background the outside would pass through the block's centre (a ring, chi 0);
+  // with 18-adjacent background it does not (chi 1).
+  EXPECT_EQ(chi6({2, 2, 2}, {0, 1, 1, 1, 1, 1, 1, 0}), 1);
+  // Add a third outside voxel: now the two corners connect through it (18-adjacent
+  // to both), and the six become five voxels in a bent row: still one piece.
+  EXPECT_EQ(chi6({2, 2, 2}, {0, 0, 1, 1, 1, 1, 1, 0}), 1);
+}
+
+TEST(EulerCharacteristic6, AgreesWith26OnShapesWithoutDiagonalContacts) {
+  for (samples::ShapeKind kind : samples::allShapes()) {
+    auto stream = samples::makeShapeStream(kind, {.size = 64});
+    EXPECT_EQ(eulerCharacteristic(*stream, MaskRule{}, nullptr, Adjacency::Foreground6),
+              samples::knownEulerCharacteristic(kind))
+        << samples::shapeName(kind);
+  }
 }
 
 }  // namespace

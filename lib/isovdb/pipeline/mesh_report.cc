@@ -50,16 +50,16 @@ bool passesGuarantees(const mesh::MeshReport& report) {
 }
 
 std::int64_t solidEulerCharacteristic(const std::filesystem::path& path, const InputOptions& options,
-                                      Interrupter* interrupter) {
+                                      volume::Adjacency adjacency, Interrupter* interrupter) {
   if (!isVdbPath(path)) {
     std::unique_ptr<io::SliceStream> stream = io::openDenseVolume(path, options.raw);
-    return volume::eulerCharacteristic(*stream, options.rule, interrupter);
+    return volume::eulerCharacteristic(*stream, options.rule, interrupter, adjacency);
   }
   const volume::Volume volume = io::readVdb(path, options.gridName);
   switch (volume.kind()) {
-    case volume::VolumeKind::Mask: return volume::eulerCharacteristic(volume, interrupter);
+    case volume::VolumeKind::Mask: return volume::eulerCharacteristic(volume, interrupter, adjacency);
     case volume::VolumeKind::DistanceField:
-      return volume::eulerCharacteristic(volume::interiorMask(volume), interrupter);
+      return volume::eulerCharacteristic(volume::interiorMask(volume), interrupter, adjacency);
     case volume::VolumeKind::Scalar: break;
   }
   throw InputError("'" + path.string() + "': a scalar grid has no solid to compare with; use a mask or level set");

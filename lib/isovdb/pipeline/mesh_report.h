@@ -9,6 +9,7 @@
 #include "isovdb/mesh/validate.h"
 #include "isovdb/pipeline/load_volume.h"
 #include "isovdb/pipeline/statistics.h"
+#include "isovdb/volume/digital_topology.h"
 
 namespace isovdb::pipeline {
 
@@ -21,10 +22,11 @@ Statistics::Json toJson(const mesh::MeshReport& report);
 /// (self-intersections count only when they were tested).
 bool passesGuarantees(const mesh::MeshReport& report);
 
-/// Euler characteristic of the solid a volume file describes (26-connected
-/// foreground, 6-connected background): dense files are streamed with the mask
+/// Euler characteristic of the solid a volume file describes (with the given
+/// adjacency of inside voxels): dense files are streamed with the mask
 /// rule of `options`; .vdb masks directly; .vdb level sets through their interior (< 0).
 std::int64_t solidEulerCharacteristic(const std::filesystem::path& path, const InputOptions& options,
+                                      volume::Adjacency adjacency = volume::Adjacency::Foreground26,
                                       Interrupter* interrupter = nullptr);
 
 }  // namespace isovdb::pipeline

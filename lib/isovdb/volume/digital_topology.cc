@@ -37,6 +37,40 @@ constexpr std::array<std::int8_t, 256> makeEulerTable() {
 
 constexpr std::array<std::int8_t, 256> kEulerTable = makeEulerTable();
 
+/// The (6, 18) counterpart. The object is the cubical complex whose vertices are
+/// the voxel centres, with an edge for each pair of face-adjacent inside voxels, a
+/// square for each 2x2 block and a cube for each 2x2x2 block of inside voxels —
+/// which is (6, 26) — plus, for 18-adjacent background, a hexagonal disc filling
+/// each window whose only background voxels are two opposite (body-diagonal)
+/// corners: with 18-adjacency those two do not touch, so the six inside voxels
+/// around them enclose no tunnel. Each vertex, edge and square is owned by the
+/// window whose voxel 7 (dx = dy = dz = 1) is its maximum voxel; cubes and discs
+/// by their own window.
+constexpr std::array<std::int8_t, 256> makeEulerTable6() {
+  std::array<std::int8_t, 256> table{};
+  for (int config = 0; config < 256; ++config) {
+    const auto all = [config](int bits) { return (config & bits) == bits ? 1 : 0; };
+    const int vertex = all(0x80);
+    const int edges = all(0xC0) + all(0xA0) + all(0x88);    // x, y, z neighbours of voxel 7
+    const int squares = all(0xF0) + all(0xCC) + all(0xAA);  // xy, xz, yz blocks holding voxel 7
+    const int cube = all(0xFF);
+    int disc = 0;
+    for (int corner = 0; corner < 4; ++corner)
+      disc += config == (0xFF & ~((1 << corner) | (1 << (7 - corner)))) ? 1 : 0;
+    table[config] = static_cast<std::int8_t>(vertex - edges + squares + disc - cube);
+  }
+  return table;
+}
+
+constexpr std::array<std::int8_t, 256> kEulerTable6 = makeEulerTable6();
+
+static_assert(kEulerTable6[0x80] == 1, "a lone voxel counts once, as its own maximum voxel");
+static_assert(kEulerTable6[0xFF] == 0, "full neighbourhood contributes nothing");
+
+const std::array<std::int8_t, 256>& eulerTable(Adjacency adjacency) {
+  return adjacency == Adjacency::Foreground6 ? kEulerTable6 : kEulerTable;
+}
+
 static_assert(kEulerTable[0x00] == 0, "empty neighbourhood contributes nothing");
 static_assert(kEulerTable[0xFF] == 0, "full neighbourhood contributes nothing");
 static_assert(kEulerTable[0x01] == 1, "the top corner of a lone voxel is its only count");
@@ -46,8 +80,9 @@ static_assert(kEulerTable[0x01] == 1, "the top corner of a lone voxel is its onl
 /// side in x and y, so the vertices on the volume boundary need no special case.
 class SlicePairAccumulator {
  public:
-  SlicePairAccumulator(std::int64_t nx, std::int64_t ny)
-      : nx_(nx),
+  SlicePairAccumulator(std::int64_t nx, std::int64_t ny, const std::array<std::int8_t, 256>& table)
+      : table_(table),
+        nx_(nx),
         ny_(ny),
         stride_(nx + 2),
         below_(static_cast<std::size_t>((nx + 2) * (ny + 2)), 0),
@@ -64,9 +99,10 @@ class SlicePairAccumulator {
     const std::uint8_t* above = above_.data();
     const std::int64_t stride = stride_;
     const std::int64_t nx = nx_;
+    const std::array<std::int8_t, 256>& table = table_;
     chi_ += tbb::parallel_reduce(
         tbb::blocked_range<std::int64_t>(0, ny_ + 1, 64), std::int64_t{0},
-        [=](const tbb::blocked_range<std::int64_t>& rows, std::int64_t sum) {
+        [=, &table](const tbb::blocked_range<std::int64_t>& rows, std::int64_t sum) {
           for (std::int64_t py = rows.begin(); py != rows.end(); ++py) {
             // Vertex (px, py) sees padded voxels px, px+1 of rows py, py+1.
             const std::uint8_t* b0 = below + py * stride;
@@ -79,7 +115,7 @@ class SlicePairAccumulator {
             unsigned left = column(0);
             for (std::int64_t px = 0; px <= nx; ++px) {
               const unsigned right = column(px + 1);
-              sum += kEulerTable[left | (right << 1)];
+              sum += table[left | (right << 1)];
               left = right;
             }
           }
@@ -97,6 +133,7 @@ class SlicePairAccumulator {
   }
 
  private:
+  const std::array<std::int8_t, 256>& table_;
   std::int64_t nx_, ny_, stride_;
   std::vector<std::uint8_t> below_, above_;
   std::int64_t chi_ = 0;
@@ -124,13 +161,13 @@ void fillMaskRow(AccessorT& accessor, int x0, int x1, int y, int z, std::uint8_t
 }  // namespace
 
 std::int64_t eulerCharacteristic(io::SliceStream& stream, const MaskRule& rule,
-                                 Interrupter* interrupter) {
+                                 Interrupter* interrupter, Adjacency adjacency) {
   const io::VolumeHeader& header = stream.header();
   const std::int64_t nx = header.dims[0], ny = header.dims[1], nz = header.dims[2];
   if (nx <= 0 || ny <= 0 || nz <= 0) return 0;
 
   ProgressStage stage(interrupter, "euler characteristic");
-  SlicePairAccumulator accumulator(nx, ny);
+  SlicePairAccumulator accumulator(nx, ny, eulerTable(adjacency));
   std::vector<float> values(static_cast<std::size_t>(nx * ny));
   for (std::int64_t z = stream.nextSlice(); z < nz; ++z) {
     stage.update(static_cast<double>(z), static_cast<double>(nz));
@@ -148,7 +185,7 @@ std::int64_t eulerCharacteristic(io::SliceStream& stream, const MaskRule& rule,
   return accumulator.finish();
 }
 
-std::int64_t eulerCharacteristic(const Volume& mask, Interrupter* interrupter) {
+std::int64_t eulerCharacteristic(const Volume& mask, Interrupter* interrupter, Adjacency adjacency) {
   const MaskGrid& grid = maskGrid(mask);
   openvdb::CoordBBox bbox;
   if (!grid.tree().evalActiveVoxelBoundingBox(bbox)) return 0;
@@ -158,7 +195,7 @@ std::int64_t eulerCharacteristic(const Volume& mask, Interrupter* interrupter) {
   const std::int64_t nx = std::int64_t{hi.x()} - lo.x() + 1;
   const std::int64_t ny = std::int64_t{hi.y()} - lo.y() + 1;
   const std::int64_t nz = std::int64_t{hi.z()} - lo.z() + 1;
-  SlicePairAccumulator accumulator(nx, ny);
+  SlicePairAccumulator accumulator(nx, ny, eulerTable(adjacency));
   for (int z = lo.z(); z <= hi.z(); ++z) {
     stage.update(static_cast<double>(z - lo.z()), static_cast<double>(nz));
     tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, ny, 16),

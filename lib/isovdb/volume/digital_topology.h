@@ -22,6 +22,18 @@
 
 namespace isovdb::volume {
 
+/// Which voxels of the object count as connected.
+enum class Adjacency {
+  /// (26, 6): inside voxels sharing a face, an edge or a corner are connected
+  /// (the union of closed voxel cubes described above).
+  Foreground26,
+  /// (6, 18): inside voxels connect only through faces, background voxels
+  /// through faces or edges. Dual Marching Cubes on the distance field (regular
+  /// mode) resolves every ambiguity this way, except where Wenger's manifold fix
+  /// regroups a pair of cells: each such pair changes the mesh's χ by 2.
+  Foreground6,
+};
+
 /// @brief Euler characteristic chi = V - E + F - C of the union of the closed
 ///        unit cubes of the voxels that `rule` classifies as inside.
 ///
@@ -35,12 +47,15 @@ namespace isovdb::volume {
 ///                        a freshly opened stream; slices already read are skipped).
 /// @param[in] rule        which sample values are inside.
 /// @param[in] interrupter optional progress/cancellation, polled once per slice.
+/// @param[in] adjacency   Foreground26 (the closed-cube complex described above) or
+///                        Foreground6 (see Adjacency).
 /// @return chi of the object (0 for an empty object).
 /// @throw InputError / IoError from the stream; Interrupted on cancellation.
 /// @note Memory: one float slice and two byte slices (O(slice)); slices are
 ///       processed in parallel by rows (TBB).
 std::int64_t eulerCharacteristic(io::SliceStream& stream, const MaskRule& rule,
-                                 Interrupter* interrupter = nullptr);
+                                 Interrupter* interrupter = nullptr,
+                                 Adjacency adjacency = Adjacency::Foreground26);
 
 /// @brief Euler characteristic of a mask volume (BoolGrid, active voxel = inside),
 ///        with the same (26, 6) convention and method as the stream version.
@@ -51,6 +66,7 @@ std::int64_t eulerCharacteristic(io::SliceStream& stream, const MaskRule& rule,
 /// @param[in] interrupter optional progress/cancellation, polled once per slice.
 /// @throw InputError when `mask` is not a mask volume; Interrupted on cancellation.
 /// @note Memory: two byte slices of the active bounding box (O(slice)).
-std::int64_t eulerCharacteristic(const Volume& mask, Interrupter* interrupter = nullptr);
+std::int64_t eulerCharacteristic(const Volume& mask, Interrupter* interrupter = nullptr,
+                                 Adjacency adjacency = Adjacency::Foreground26);
 
 }  // namespace isovdb::volume
