@@ -74,7 +74,7 @@ Volume distanceField(const Volume& mask, const DistanceFieldOptions& options, In
   FieldGrid::Ptr sdf;
   openvdb::CoordBBox bbox;
   if (options.chunkSize == 0 || !grid.tree().evalActiveVoxelBoundingBox(bbox)) {
-    sdf = bandOf(grid, options, nullptr);
+    sdf = bandOf(grid, options, interrupter);
   } else {
     // Chunks of chunkSize^3 voxels, each computed from the mask around it with a
     // halo wide enough that the halo's cut faces cannot reach the chunk's band:
