@@ -1,6 +1,9 @@
 #include "isovdb/pipeline/octree_contour.h"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cmath>
 
 #include "isovdb/contour/adaptive_contour.h"
 #include "isovdb/contour/regular_contour.h"
@@ -36,6 +39,15 @@ mesh::Mesh contourWithOctree(const volume::Volume& field, const OctreeContourOpt
     extent = std::max(extent, grid.bboxMax[a] + kMargin - origin[a]);
   }
   const int size = nextPowerOfTwo(extent);
+  // Until stitching lands the block is dense: refuse clearly rather than let the
+  // kernel kill the process half-way.
+  const double blockBytes = std::pow(static_cast<double>(size) + 3.0, 3.0) * sizeof(float);
+  const double physicalBytes = static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * ::sysconf(_SC_PAGE_SIZE);
+  if (physicalBytes > 0 && blockBytes > 0.5 * physicalBytes)
+    throw InputError("'" + field.name() + "': the surface spans " + std::to_string(extent) +
+                     " voxels; one meta-cell of " + std::to_string(size) + "^3 samples needs " +
+                     std::to_string(static_cast<long long>(blockBytes / (1 << 20))) +
+                     " MiB, more than half of this machine's memory (use --method vdb until seam stitching lands)");
   octree::MetaCellSamples samples;
   float iso = options.iso;
   {
