@@ -1,5 +1,7 @@
 #include "isovdb/mesh/self_intersection.h"
 
+#include "isovdb/bit_interleave.h"
+
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -108,17 +110,6 @@ class NodeCounts {
   }
   std::map<std::size_t, std::size_t> counts_;
 };
-
-/// Spreads the low 21 bits of `v` so that two zero bits follow each one.
-std::uint64_t spreadBits(std::uint64_t v) {
-  v &= 0x1fffff;
-  v = (v | v << 32) & 0x1f00000000ffffull;
-  v = (v | v << 16) & 0x1f0000ff0000ffull;
-  v = (v | v << 8) & 0x100f00f00f00f00full;
-  v = (v | v << 4) & 0x10c30c30c30c30c3ull;
-  v = (v | v << 2) & 0x1249249249249249ull;
-  return v;
-}
 
 /// Bounding-volume hierarchy over items sorted along a Morton curve
 /// (collectItems()): every inner node splits its range in halves, and boxes
@@ -364,7 +355,7 @@ std::vector<Item> collectItems(const Mesh& mesh) {
       const Box box = boxOfTriangle(t);
       std::uint64_t code = 0;
       for (int k = 0; k < 3; ++k)
-        code |= spreadBits(static_cast<std::uint64_t>((centre(box, k) - bounds.lo[k]) * scale[k])) << k;
+        code |= spreadBits3(static_cast<std::uint64_t>((centre(box, k) - bounds.lo[k]) * scale[k])) << k;
       keys[t].code = code;
     }
   });

@@ -19,6 +19,8 @@
 #include <bit>
 #include <cstdint>
 
+#include "isovdb/bit_interleave.h"
+
 namespace isovdb::octree {
 
 /// A Morton key (root = 1). 0 is never a valid key and means "none".
@@ -39,27 +41,8 @@ struct KeyCoord {
 
 namespace detail {
 
-/// Bits 0,1,2,... of v moved to bits 0,3,6,... (21 bits in).
-constexpr std::uint64_t spreadBits3(std::uint64_t v) noexcept {
-  v &= 0x1fffffull;
-  v = (v | v << 32) & 0x1f00000000ffffull;
-  v = (v | v << 16) & 0x1f0000ff0000ffull;
-  v = (v | v << 8) & 0x100f00f00f00f00full;
-  v = (v | v << 4) & 0x10c30c30c30c30c3ull;
-  v = (v | v << 2) & 0x1249249249249249ull;
-  return v;
-}
-
-/// Inverse of spreadBits3.
-constexpr std::uint64_t compactBits3(std::uint64_t v) noexcept {
-  v &= 0x1249249249249249ull;
-  v = (v ^ (v >> 2)) & 0x10c30c30c30c30c3ull;
-  v = (v ^ (v >> 4)) & 0x100f00f00f00f00full;
-  v = (v ^ (v >> 8)) & 0x1f0000ff0000ffull;
-  v = (v ^ (v >> 16)) & 0x1f00000000ffffull;
-  v = (v ^ (v >> 32)) & 0x1fffffull;
-  return v;
-}
+using isovdb::compactBits3;
+using isovdb::spreadBits3;
 
 /// Mask of the bits of `axis` in the 3*depth low bits of a key.
 constexpr std::uint64_t axisMask(int axis, int depth) noexcept {
