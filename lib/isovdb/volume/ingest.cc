@@ -46,6 +46,26 @@ BlockRange blockRange(const io::VolumeHeader& header, int bx, int by, int depth)
                     static_cast<int>(std::min<std::int64_t>(y0 + kLeafDim, header.dims[1])), depth};
 }
 
+/// What one 8^3 block of a slab becomes.
+enum class BlockState : std::uint8_t { Empty, Tile, Leaf };
+
+/// Inserts a slab's classified blocks serially, in block order, so the tree is
+/// the same for any thread count. `tileValue(b)` is the value of a Tile block.
+template <typename TreeT, typename TileValue>
+void insertBlocks(TreeT& tree, const std::vector<BlockState>& state,
+                  std::vector<typename TreeT::LeafNodeType*>& leaves, int blocksX, std::int64_t z0,
+                  TileValue&& tileValue) {
+  for (std::size_t b = 0; b < state.size(); ++b) {
+    const openvdb::Coord origin(static_cast<int>(b % blocksX) * kLeafDim,
+                                static_cast<int>(b / blocksX) * kLeafDim, static_cast<int>(z0));
+    if (state[b] == BlockState::Tile) tree.addTile(1, origin, tileValue(b), true);
+    if (state[b] == BlockState::Leaf) {
+      tree.addLeaf(leaves[b]);
+      leaves[b] = nullptr;
+    }
+  }
+}
+
 void checkDims(const io::SliceStream& stream) {
   const auto& dims = stream.header().dims;
   constexpr std::int64_t kMaxDim = std::int64_t{1} << 30;  // openvdb::Coord is 32-bit
@@ -69,8 +89,7 @@ Volume ingestMask(io::SliceStream& stream, const MaskRule& rule, Interrupter* in
   MaskGrid::TreeType& tree = grid->tree();
   std::vector<float> slice(static_cast<std::size_t>(nx * ny));
   std::vector<std::uint8_t> inside(static_cast<std::size_t>(nx * ny * kLeafDim));
-  // Per block of the slab: 0 = empty, 1 = full, 2 = partial (leaf in `leaves`).
-  std::vector<std::uint8_t> state(static_cast<std::size_t>(blocksX) * blocksY);
+  std::vector<BlockState> state(static_cast<std::size_t>(blocksX) * blocksY);
   std::vector<MaskGrid::TreeType::LeafNodeType*> leaves(state.size(), nullptr);
 
   for (std::int64_t z0 = 0; z0 < nz; z0 += kLeafDim) {
@@ -88,11 +107,11 @@ Volume ingestMask(io::SliceStream& stream, const MaskRule& rule, Interrupter* in
             for (int x = r.x0; x < r.x1; ++x) count += inside[(z * ny + y) * nx + x];
         const std::size_t b = static_cast<std::size_t>(by) * blocksX + bx;
         if (count == 0) {
-          state[b] = 0;
+          state[b] = BlockState::Empty;
         } else if (r.complete() && count == kLeafDim * kLeafDim * kLeafDim) {
-          state[b] = 1;
+          state[b] = BlockState::Tile;
         } else {
-          state[b] = 2;
+          state[b] = BlockState::Leaf;
           auto* leaf = new MaskGrid::TreeType::LeafNodeType(
               openvdb::Coord(r.x0, r.y0, static_cast<int>(z0)), false, false);
           for (int z = 0; z < r.depth; ++z)
@@ -104,16 +123,7 @@ Volume ingestMask(io::SliceStream& stream, const MaskRule& rule, Interrupter* in
         }
       }
     });
-    // Insert serially, in block order, so the tree is the same for any thread count.
-    for (std::size_t b = 0; b < state.size(); ++b) {
-      const openvdb::Coord origin(static_cast<int>(b % blocksX) * kLeafDim,
-                                  static_cast<int>(b / blocksX) * kLeafDim, static_cast<int>(z0));
-      if (state[b] == 1) tree.addTile(1, origin, true, true);
-      if (state[b] == 2) {
-        tree.addLeaf(leaves[b]);
-        leaves[b] = nullptr;
-      }
-    }
+    insertBlocks(tree, state, leaves, blocksX, z0, [](std::size_t) { return true; });
     if ((z0 + kLeafDim) % kPruneEvery == 0) openvdb::tools::prune(tree);
     progress.update(static_cast<double>(z0 + depth), static_cast<double>(nz));
   }
@@ -136,7 +146,7 @@ Volume ingestScalar(io::SliceStream& stream, const ScalarIngestOptions& options,
   std::vector<float> slice(static_cast<std::size_t>(nx * ny));
   std::vector<float> slab(static_cast<std::size_t>(nx * ny * kLeafDim));
   std::vector<FieldGrid::TreeType::LeafNodeType*> leaves(static_cast<std::size_t>(blocksX) * blocksY);
-  std::vector<std::uint8_t> state(leaves.size());  // 0 background, 1 constant tile, 2 leaf
+  std::vector<BlockState> state(leaves.size());
   std::vector<float> tileValue(leaves.size());
   const float tol = options.tolerance;
 
@@ -158,12 +168,12 @@ Volume ingestScalar(io::SliceStream& stream, const ScalarIngestOptions& options,
             }
         const bool constant = hi - lo <= tol;
         if (constant && std::abs(lo - options.background) <= tol && std::abs(hi - options.background) <= tol) {
-          state[b] = 0;
+          state[b] = BlockState::Empty;
         } else if (constant && r.complete()) {
-          state[b] = 1;
+          state[b] = BlockState::Tile;
           tileValue[b] = lo;
         } else {
-          state[b] = 2;
+          state[b] = BlockState::Leaf;
           auto* leaf = new FieldGrid::TreeType::LeafNodeType(
               openvdb::Coord(r.x0, r.y0, static_cast<int>(z0)), options.background, false);
           for (int z = 0; z < r.depth; ++z)
@@ -175,15 +185,7 @@ Volume ingestScalar(io::SliceStream& stream, const ScalarIngestOptions& options,
         }
       }
     });
-    for (std::size_t b = 0; b < state.size(); ++b) {
-      const openvdb::Coord origin(static_cast<int>(b % blocksX) * kLeafDim,
-                                  static_cast<int>(b / blocksX) * kLeafDim, static_cast<int>(z0));
-      if (state[b] == 1) tree.addTile(1, origin, tileValue[b], true);
-      if (state[b] == 2) {
-        tree.addLeaf(leaves[b]);
-        leaves[b] = nullptr;
-      }
-    }
+    insertBlocks(tree, state, leaves, blocksX, z0, [&](std::size_t b) { return tileValue[b]; });
     if ((z0 + kLeafDim) % kPruneEvery == 0) openvdb::tools::prune(tree, tol);
     progress.update(static_cast<double>(z0 + depth), static_cast<double>(nz));
   }
