@@ -8,6 +8,7 @@
 #include "isovdb/contour/adaptive_contour.h"
 #include "isovdb/contour/regular_contour.h"
 #include "isovdb/errors.h"
+#include "isovdb/volume/grids.h"
 #include "isovdb/volume/meta_cells.h"
 
 namespace isovdb::pipeline {
@@ -28,15 +29,15 @@ mesh::Mesh contourWithOctree(const volume::Volume& field, const OctreeContourOpt
                              Interrupter* interrupter, Statistics* stats) {
   if (field.kind() == volume::VolumeKind::Mask)
     throw InputError("'" + field.name() + "': octree contouring needs a distance field or a scalar field");
-  const volume::GridStats grid = field.stats();
-  if (grid.activeVoxels == 0) return {};
-
-  // One meta-cell around the whole active band (no stitching yet).
+  // One meta-cell around the whole active band (no stitching yet). Only the
+  // bounding box is needed, not Volume::stats()'s value range and memory walk.
+  openvdb::CoordBBox band;
+  if (!volume::fieldGrid(field).tree().evalActiveVoxelBoundingBox(band)) return {};
   std::array<int, 3> origin;
   int extent = 1;
   for (int a = 0; a < 3; ++a) {
-    origin[a] = grid.bboxMin[a] - kMargin;
-    extent = std::max(extent, grid.bboxMax[a] + kMargin - origin[a]);
+    origin[a] = band.min()[a] - kMargin;
+    extent = std::max(extent, band.max()[a] + kMargin - origin[a]);
   }
   const int size = nextPowerOfTwo(extent);
   // Until stitching lands the block is dense: refuse clearly rather than let the
