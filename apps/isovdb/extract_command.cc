@@ -4,6 +4,8 @@
 #include "isovdb/errors.h"
 #include "isovdb/io/atomic_file.h"
 #include "isovdb/io/mesh_file.h"
+#include "isovdb/io/path_util.h"
+#include "isovdb/io/ply_stream_writer.h"
 #include "isovdb/pipeline/extract.h"
 #include "isovdb/pipeline/load_volume.h"
 #include "isovdb/pipeline/mesh_report.h"
@@ -37,6 +39,12 @@ void addExtractCommand(CLI::App& app, Context& context) {
   command->add_option("--closing", state->options.distance.closingSteps,
                       "Morphological closing steps before the distance field (changes topology)")
       ->capture_default_str();
+  command->add_option("--meta-cell", state->options.octree.metaCellSize,
+                      "regular/adaptive: meta-cell size in voxels (power of two, 16..512; 0 = one block around "
+                      "the whole volume, no stitching)")
+      ->capture_default_str();
+  command->add_option("--threads", state->options.threads, "Worker threads (0 = every core); the output is the same")
+      ->capture_default_str();
   command->add_option("--min-level", state->options.octree.minLevel,
                       "regular/adaptive: uniform subdivision down to this depth under the meta-cell "
                       "(-1: --max-cell-size decides)")
@@ -61,6 +69,7 @@ void addExtractCommand(CLI::App& app, Context& context) {
   command->add_option("--stats", state->statsPath, "Write every figure shown as JSON");
   state->flags.add(*command);
   command->callback([state, &context] {
+    mesh::Mesh mesh;
     const auto method = pipeline::parseContourMethod(state->method);
     if (!method) throw InputError("--method: unknown method '" + state->method + "', expected vdb, regular or adaptive");
     state->options.method = *method;
@@ -72,14 +81,28 @@ void addExtractCommand(CLI::App& app, Context& context) {
     pipeline::Statistics stats;
     const volume::Volume input =
         pipeline::loadVolume(state->input, state->flags.toOptions(state->input), context.interrupter(), &stats);
-    const mesh::Mesh mesh = pipeline::extractMesh(input, state->options, context.interrupter(), &stats);
-    if (mesh.empty())
-      std::fprintf(stderr, "isovdb: warning: '%s': no surface at iso %g (empty mesh)\n", state->input.c_str(),
-                   state->options.iso);
-    {
+    // The octree methods stream a .ply meta-cell by meta-cell (the mesh is never
+    // held whole); --check and .obj need the mesh in memory.
+    const bool stream = state->options.method != pipeline::ContourMethod::Vdb && !state->check &&
+                        io::lowerExtension(state->output) == ".ply";
+    std::uint64_t triangles = 0;
+    if (stream) {
+      const volume::Geometry& g = input.geometry();
+      io::PlyStreamWriter writer(state->output, g.spacing, g.origin);
+      pipeline::extractInto(input, state->options, writer, context.interrupter(), &stats);
+      triangles = writer.triangleCount();
+      pipeline::Statistics::StageTimer timer(&stats, "write");
+      writer.commit();
+      stats["output"]["streamed"] = true;
+    } else {
+      mesh = pipeline::extractMesh(input, state->options, context.interrupter(), &stats);
+      triangles = mesh.triangles.size();
       pipeline::Statistics::StageTimer timer(&stats, "write");
       io::writeMesh(state->output, mesh);
     }
+    if (triangles == 0)
+      std::fprintf(stderr, "isovdb: warning: '%s': no surface at iso %g (empty mesh)\n", state->input.c_str(),
+                   state->options.iso);
     stats["output"]["path"] = state->output;
     if (state->check) {
       pipeline::Statistics::StageTimer timer(&stats, "check");

@@ -90,6 +90,45 @@ INSTANTIATE_TEST_SUITE_P(Shapes, CliExtract,
                            return name + "_" + std::get<1>(info.param);
                          });
 
+TEST(CliExtract, StreamsMetaCellsAndCheckAgreesWithTheObject) {
+  TempDir dir;
+  const auto genus2 = writeShape(dir, samples::ShapeKind::Genus2, 48);
+  for (const std::string method : {"regular", "adaptive"}) {
+    const auto mesh = dir / (method + ".ply");
+    const auto stats = dir / (method + ".json");
+    std::string output;
+    ASSERT_EQ(runCommand(cliPath().string() + " -q extract " + genus2.string() + " -o " + mesh.string() +
+                             " --method " + method + " --meta-cell 16 --threads 1 --stats " + stats.string(),
+                         &output),
+              0)
+        << output;
+    const nlohmann::json json = readJson(stats);
+    EXPECT_TRUE(json["output"]["streamed"].get<bool>());
+    EXPECT_GT(json["meta_cells"]["contoured"].get<int>(), 8);
+    EXPECT_GT(json["stitch"]["meta_edges"].get<int>(), 0);
+    // The streamed file is closed, with the object's topology (check exits 1 otherwise).
+    EXPECT_EQ(runCommand(cliPath().string() + " -q check " + mesh.string() + " --against " + genus2.string() +
+                             (method == "regular" ? " --adjacency 6" : ""),
+                         &output),
+              0)
+        << method << ": " << output;
+  }
+}
+
+TEST(CliExtract, RejectsABadMetaCellSizeWithoutWritingAnything) {
+  TempDir dir;
+  const auto sphere = writeShape(dir, samples::ShapeKind::Sphere, 32);
+  const auto mesh = dir / "sphere.ply";
+  std::string output;
+  EXPECT_EQ(runCommand(cliPath().string() + " -q extract " + sphere.string() + " -o " + mesh.string() +
+                           " --method regular --meta-cell 24",
+                       &output),
+            2);
+  EXPECT_NE(output.find("--meta-cell"), std::string::npos) << output;
+  EXPECT_FALSE(std::filesystem::exists(mesh));
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 1);  // only the input
+}
+
 TEST(CliCheck, FailsOnATopologyMismatch) {
   TempDir dir;
   const auto sphere = writeShape(dir, samples::ShapeKind::Sphere, 48);

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "isovdb/errors.h"
+#include "isovdb/io/ply_stream_writer.h"
 #include "support/test_support.h"
 
 namespace isovdb::io {
@@ -232,6 +233,47 @@ TEST(Ply, FailedWriteLeavesNoFile) {
   bad.triangles.push_back({0, 1, 4});
   EXPECT_THROW(writePly(dir / "bad.ply", bad), InputError);
   EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+}
+
+TEST(PlyStreamWriter, PiecesMakeTheSameFileAsWritePlyApartFromHeaderPadding) {
+  test::TempDir dir;
+  const Mesh mesh = tetrahedron();
+  {
+    PlyStreamWriter writer(dir / "streamed.ply", {2, 2, 2}, {1, 0, 0});
+    writer.addVertices(std::span(mesh.positions).first(2));
+    writer.addTriangles({});  // an empty piece is fine
+    writer.addVertices(std::span(mesh.positions).subspan(2));
+    writer.addTriangles(std::span(mesh.triangles).first(1));
+    writer.addTriangles(std::span(mesh.triangles).subspan(1));
+    EXPECT_EQ(writer.vertexCount(), mesh.positions.size());
+    EXPECT_EQ(writer.triangleCount(), mesh.triangles.size());
+    EXPECT_FALSE(std::filesystem::exists(dir / "streamed.ply"));  // nothing before commit
+    writer.commit();
+  }
+  const Mesh back = readPly(dir / "streamed.ply");
+  ASSERT_EQ(back.positions.size(), mesh.positions.size());
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i)
+    for (int a = 0; a < 3; ++a) EXPECT_EQ(back.positions[i][a], (a == 0 ? 1.0f : 0.0f) + 2.0f * mesh.positions[i][a]);
+  EXPECT_EQ(back.triangles, mesh.triangles);
+  // Only the temporaries' names hold the output's name: none is left behind.
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 1);
+}
+
+TEST(PlyStreamWriter, ABadTriangleOrAnAbandonedWriterLeavesNoFile) {
+  test::TempDir dir;
+  const Mesh mesh = tetrahedron();
+  {
+    PlyStreamWriter writer(dir / "bad.ply");
+    writer.addVertices(mesh.positions);
+    const std::array<mesh::Triangle, 1> bad{mesh::Triangle{0, 1, 4}};
+    EXPECT_THROW(writer.addTriangles(bad), InputError);
+  }
+  {
+    PlyStreamWriter writer(dir / "abandoned.ply");  // an interrupted run never commits
+    writer.addVertices(mesh.positions);
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+  EXPECT_THROW(PlyStreamWriter(dir / "no" / "dir.ply"), IoError);
 }
 
 }  // namespace

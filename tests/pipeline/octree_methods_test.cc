@@ -112,7 +112,7 @@ TEST(OctreeMethodsTopology, RegularMeshIsTheSixEighteenReadingPlusTheFixedPairs)
     const volume::Volume sdf = toContourable(volume::ingestMask(stream, {}), {});
     const mesh::Mesh mesh = contourWithOctree(sdf, {.method = OctreeMethod::Regular}, nullptr, &stats);
     const mesh::MeshReport report = mesh::validateMesh(mesh, {.selfIntersections = false});
-    const std::int64_t fixedPairs = stats["octree"]["manifold_fixes"].get<std::int64_t>() / 2;
+    const std::int64_t fixedPairs = stats["meta_cells"]["manifold_fixes"].get<std::int64_t>() / 2;
     EXPECT_TRUE(report.closed) << seed;
     EXPECT_TRUE(report.manifold) << seed;
     EXPECT_GT(fixedPairs, 0) << seed;

@@ -15,10 +15,10 @@
 ///
 /// Meta-cell boundary: an edge with fewer leaves around it than needed (it lies
 /// on the meta-cell's boundary, LinearOctree returns kNone) is skipped and
-/// counted in AdaptiveContourStats::boundaryEdges; such edges are left to the
-/// stitching stage. Until stitching lands, contour a single meta-cell that
-/// covers the whole volume with a margin (the pipeline pads it) so that the
-/// surface never reaches the meta-cell boundary; the mesh is then closed.
+/// counted in AdaptiveContourStats::boundaryEdges; contourAdaptiveMetaCell
+/// keeps the leaves around such edges (and the face points made on faces that
+/// touch the boundary) for stitch/, which contours them with the same per-edge
+/// routine (adaptive_edges.h).
 ///
 /// Topology: one vertex per leaf, so a minimal face whose four corners alternate
 /// in sign (an ambiguous face, 4 bipolar edges) makes its two cells' vertices
@@ -42,6 +42,7 @@
 
 #include <cstdint>
 
+#include "isovdb/contour/seam_cell.h"
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/octree/linear_octree.h"
 #include "isovdb/octree/meta_cell_samples.h"
@@ -67,6 +68,7 @@ struct AdaptiveContourStats {
                                           ///< and polygons routed through face points
   std::int64_t boundaryEdges = 0;         ///< sign-changing minimal edges skipped on the meta-cell boundary
   std::int64_t edgesWithoutVertex = 0;    ///< skipped because a leaf around had no dual vertex (should stay 0)
+  std::int64_t seamCells = 0;             ///< leaves kept for stitching
 };
 
 /// @brief Contours the octree of one meta-cell (adaptive mode).
@@ -79,5 +81,12 @@ struct AdaptiveContourStats {
 /// @throw InputError if the sizes differ.
 mesh::Mesh contourAdaptive(const octree::MetaCellSamples& samples, const octree::LinearOctree& tree,
                            const AdaptiveContourOptions& options = {}, AdaptiveContourStats* stats = nullptr);
+
+/// @brief contourAdaptive plus the seam (seam_cell.h): leaves with a sign change
+///        that touch the meta-cell boundary, and the face points made into
+///        vertices on faces that touch it.
+MetaCellMesh contourAdaptiveMetaCell(const octree::MetaCellSamples& samples, const octree::LinearOctree& tree,
+                                     const AdaptiveContourOptions& options = {},
+                                     AdaptiveContourStats* stats = nullptr);
 
 }  // namespace isovdb::contour

@@ -51,24 +51,56 @@ double triangleQuality(const mesh::Vec3f& a, const mesh::Vec3f& b, const mesh::V
   return sum > 0.0 ? 2.0 * std::sqrt(3.0) * area2 / sum : 0.0;
 }
 
-/// One quad per owned edge; vertices in cyclic order, oriented outward.
-using Quad = std::array<std::uint32_t, 4>;
+/// Configuration of the cell [origin, origin + size] from the samples, or -1 if it leaves the apron.
+int cellConfigAt(const MetaCellSamples& samples, const std::array<int, 3>& origin, int size, float iso) noexcept {
+  for (int a = 0; a < 3; ++a)
+    if (origin[a] < -samples.apron || origin[a] + size > samples.size + samples.apron) return -1;
+  OctreeLeaf cell;
+  cell.origin = origin;
+  cell.size = size;
+  return cellConfig(samples, cell, iso);
+}
 
-struct LeafQuads {
-  std::array<Quad, 3> quads{};
+/// Triangles of each leaf's owned edges (up to 3 quads).
+struct LeafTriangles {
+  std::array<mesh::Triangle, 6> triangles{};
   std::uint8_t count = 0;
 };
 
 }  // namespace
 
-mesh::Mesh contourRegular(const MetaCellSamples& samples, const LinearOctree& regularTree,
-                          const RegularContourOptions& options, RegularContourStats* stats) {
+int regularVertexOfEdge(std::uint8_t config, bool alternative, int axis, int quadrant) noexcept {
+  // The edge is the cell's local edge 4 * axis + (3 - quadrant): the cell on the
+  // +u side has the edge on its min-u side.
+  return dmcEntry(config, alternative).vertexOfEdge[static_cast<std::size_t>(4 * axis + (3 - quadrant))];
+}
+
+std::array<mesh::Triangle, 2> regularEdgeQuad(const std::array<std::uint32_t, 4>& v,
+                                              const std::array<mesh::Vec3f, 4>& p, int axis,
+                                              bool minEndInside) noexcept {
+  // Quadrants 0,1,3,2 turn counter-clockwise in the (u, v) plane: normal +axis for x and z
+  // ((u, v, axis) right-handed), -axis for y. Outward = from the inside end to the outside end.
+  const bool plusAxis = minEndInside;  // the normal must point towards +axis
+  const bool ccwIsPlus = axis != 1;
+  std::array<int, 4> order{0, 1, 3, 2};
+  if (plusAxis != ccwIsPlus) order = {0, 2, 3, 1};
+  const auto P = [&](int k) -> const mesh::Vec3f& { return p[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])]; };
+  const auto V = [&](int k) { return v[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])]; };
+  const double qa = std::min(triangleQuality(P(0), P(1), P(2)), triangleQuality(P(0), P(2), P(3)));
+  const double qb = std::min(triangleQuality(P(0), P(1), P(3)), triangleQuality(P(1), P(2), P(3)));
+  if (qa >= qb) return {mesh::Triangle{V(0), V(1), V(2)}, mesh::Triangle{V(0), V(2), V(3)}};
+  return {mesh::Triangle{V(0), V(1), V(3)}, mesh::Triangle{V(1), V(2), V(3)}};
+}
+
+MetaCellMesh contourRegularMetaCell(const MetaCellSamples& samples, const LinearOctree& regularTree,
+                                    const RegularContourOptions& options, RegularContourStats* stats) {
   if (samples.size != regularTree.metaCellSize())
     throw InputError("contourRegular: samples.size " + std::to_string(samples.size) +
                      " differs from the octree's meta-cell size " + std::to_string(regularTree.metaCellSize()));
 
   const std::size_t n = regularTree.leafCount();
   const auto& leaves = regularTree.leaves();
+  const int metaSize = regularTree.metaCellSize();
 
   // 1. Corner configurations, checked against the tree.
   std::vector<std::uint8_t> configs(n);
@@ -85,17 +117,23 @@ mesh::Mesh contourRegular(const MetaCellSamples& samples, const LinearOctree& re
                      " (octree built with another isovalue)");
 
   // 2. Wenger's manifold fix: both cells of a doubled ambiguous face take the alternative grouping.
+  // The neighbour across the face is a surface leaf of the same size (regular construction), also
+  // across the meta-cell boundary, so its configuration is read from the samples (apron included).
   std::vector<char> alternative(n, 0);
+  std::vector<char> beyondApron(n, 0);
   if (options.manifoldFix) {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kGrain), [&](const tbb::blocked_range<std::size_t>& r) {
       for (std::size_t i = r.begin(); i != r.end(); ++i) {
         const int face = dmcEntry(configs[i]).doubleFace;
         if (face < 0) continue;
-        const octree::MortonKey nk = octree::faceNeighbourKey(leaves[i].key, face);
-        if (nk == octree::kInvalidKey) continue;  // meta-cell boundary: left to seam stitching
-        const std::int64_t j = regularTree.findLeaf(nk);
-        if (j == LinearOctree::kNone) continue;
-        alternative[i] = dmcEntry(configs[static_cast<std::size_t>(j)]).doubleFace == (face ^ 1);
+        std::array<int, 3> neighbour = leaves[i].origin;
+        neighbour[static_cast<std::size_t>(face >> 1)] += (face & 1) ? leaves[i].size : -leaves[i].size;
+        const int config = cellConfigAt(samples, neighbour, leaves[i].size, options.iso);
+        if (config < 0) {
+          beyondApron[i] = 1;
+          continue;
+        }
+        alternative[i] = dmcEntry(static_cast<std::uint8_t>(config)).doubleFace == (face ^ 1);
       }
     });
   }
@@ -106,7 +144,8 @@ mesh::Mesh contourRegular(const MetaCellSamples& samples, const LinearOctree& re
   for (std::size_t i = 0; i < n; ++i) vertexBase[i + 1] = vertexBase[i] + entryOf(i).vertexCount;
   const std::size_t vertexCount = vertexBase[n];
 
-  mesh::Mesh out;
+  MetaCellMesh result;
+  mesh::Mesh& out = result.mesh;
   out.positions.resize(vertexCount);
   const DualVertexOptions vertexOptions{.iso = options.iso, .singularValueThreshold = options.singularValueThreshold};
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kGrain / 4), [&](const tbb::blocked_range<std::size_t>& r) {
@@ -127,84 +166,87 @@ mesh::Mesh contourRegular(const MetaCellSamples& samples, const LinearOctree& re
     }
   });
 
-  // 4. Quads: each interior bipolar edge by its owner leaf (the edge is the owner's local edge 4 * axis).
-  std::vector<LeafQuads> leafQuads(n);
+  // 4. Quads: each interior bipolar edge by its owner leaf (the edge is the owner's local edge 4 * axis,
+  // the owner in quadrant 3); edges on the meta-cell boundary are left to stitching.
+  std::vector<LeafTriangles> leafTriangles(n);
+  std::vector<std::int32_t> leafBoundaryEdges(n, 0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kGrain), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
       const std::uint16_t bipolar = octree::bipolarEdgeMask(configs[i]);
       if (bipolar == 0) continue;
       const OctreeLeaf& leaf = leaves[i];
-      LeafQuads& lq = leafQuads[i];
+      LeafTriangles& lt = leafTriangles[i];
       for (int axis = 0; axis < 3; ++axis) {
-        const int edge = 4 * axis;
-        if (((bipolar >> edge) & 1) == 0) continue;
+        if (((bipolar >> (4 * axis)) & 1) == 0) continue;
         const auto around = regularTree.leavesAroundEdge(leaf.origin, axis);
         assert(around[3] == static_cast<std::int64_t>(i));
-        if (std::find(around.begin(), around.end(), LinearOctree::kNone) != around.end()) continue;  // boundary
-        std::array<std::uint32_t, 4> v{};  // by quadrant
+        if (std::find(around.begin(), around.end(), LinearOctree::kNone) != around.end()) {
+          ++leafBoundaryEdges[i];
+          continue;
+        }
+        std::array<std::uint32_t, 4> v{};
+        std::array<mesh::Vec3f, 4> p{};
         bool ok = true;
         for (int q = 0; q < 4; ++q) {
           const auto j = static_cast<std::size_t>(around[static_cast<std::size_t>(q)]);
-          // The edge is local edge 4 * axis + (3 - q) of the leaf in quadrant q.
-          const int local = 4 * axis + (3 - q);
-          const int g = entryOf(j).vertexOfEdge[static_cast<std::size_t>(local)];
+          const int g = regularVertexOfEdge(configs[j], alternative[j] != 0, axis, q);
           if (g < 0 || leaves[j].size != leaf.size) {
             ok = false;  // not a regular octree around this edge (violates the precondition)
             break;
           }
           v[static_cast<std::size_t>(q)] = vertexBase[j] + static_cast<std::uint32_t>(g);
+          p[static_cast<std::size_t>(q)] = out.positions[v[static_cast<std::size_t>(q)]];
         }
         assert(ok);
         if (!ok) continue;
-        // Quadrants 0,1,3,2 turn counter-clockwise in the (u, v) plane: normal +axis for x and z
-        // ((u, v, axis) right-handed), -axis for y. Outward = from the inside end to the outside end.
-        const bool minEndInside = (configs[i] & 1) != 0;  // corner 0 of the owner is the edge's min end
-        const bool plusAxis = minEndInside;                // the normal must point towards +axis
-        const bool ccwIsPlus = axis != 1;
-        Quad quad{v[0], v[1], v[3], v[2]};
-        if (plusAxis != ccwIsPlus) quad = Quad{v[0], v[2], v[3], v[1]};
-        lq.quads[lq.count++] = quad;
+        const auto tris = regularEdgeQuad(v, p, axis, (configs[i] & 1) != 0);
+        lt.triangles[lt.count++] = tris[0];
+        lt.triangles[lt.count++] = tris[1];
       }
     }
   });
 
-  std::vector<std::size_t> quadBase(n + 1, 0);
-  for (std::size_t i = 0; i < n; ++i) quadBase[i + 1] = quadBase[i] + leafQuads[i].count;
-  const std::size_t quadCount = quadBase[n];
+  std::size_t triangleCount = 0;
+  for (const LeafTriangles& lt : leafTriangles) triangleCount += lt.count;
+  out.triangles.reserve(triangleCount);
+  for (const LeafTriangles& lt : leafTriangles) out.triangles.insert(out.triangles.end(), lt.triangles.begin(), lt.triangles.begin() + lt.count);
 
-  // 5. Each quad into two triangles along the diagonal whose worse triangle is better.
-  out.triangles.resize(2 * quadCount);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kGrain), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t i = r.begin(); i != r.end(); ++i) {
-      const LeafQuads& lq = leafQuads[i];
-      for (int k = 0; k < lq.count; ++k) {
-        const Quad& q = lq.quads[static_cast<std::size_t>(k)];
-        const auto& p = out.positions;
-        const double qa = std::min(triangleQuality(p[q[0]], p[q[1]], p[q[2]]), triangleQuality(p[q[0]], p[q[2]], p[q[3]]));
-        const double qb = std::min(triangleQuality(p[q[0]], p[q[1]], p[q[3]]), triangleQuality(p[q[1]], p[q[2]], p[q[3]]));
-        const std::size_t t = 2 * (quadBase[i] + static_cast<std::size_t>(k));
-        if (qa >= qb) {
-          out.triangles[t] = {q[0], q[1], q[2]};
-          out.triangles[t + 1] = {q[0], q[2], q[3]};
-        } else {
-          out.triangles[t] = {q[0], q[1], q[3]};
-          out.triangles[t + 1] = {q[1], q[2], q[3]};
-        }
-      }
-    }
-  });
+  // 5. Seam: leaves with dual vertices on the meta-cell boundary, in key (Z) order.
+  for (std::size_t i = 0; i < n; ++i) {
+    const OctreeLeaf& leaf = leaves[i];
+    const DmcEntry& entry = entryOf(i);
+    if (entry.vertexCount == 0 || !touchesMetaCellBoundary(leaf.origin, leaf.size, metaSize)) continue;
+    SeamCell cell;
+    cell.key = leaf.key;
+    for (int a = 0; a < 3; ++a) cell.origin[a] = samples.origin[a] + leaf.origin[a];
+    cell.size = leaf.size;
+    cell.cornerSigns = configs[i];
+    cell.alternative = alternative[i] != 0;
+    cell.firstVertex = vertexBase[i];
+    for (int g = 0; g < entry.vertexCount; ++g)
+      cell.positions[static_cast<std::size_t>(g)] = out.positions[vertexBase[i] + static_cast<std::size_t>(g)];
+    result.seam.cells.push_back(cell);
+  }
 
   if (stats) {
     RegularContourStats s;
     for (std::size_t i = 0; i < n; ++i) {
       if (entryOf(i).vertexCount > 0) ++s.cells;
       if (alternative[i]) ++s.manifoldFixes;
+      s.fixesBeyondApron += beyondApron[i];
+      s.boundaryEdges += leafBoundaryEdges[i];
     }
     s.vertices = static_cast<std::int64_t>(vertexCount);
-    s.quads = static_cast<std::int64_t>(quadCount);
+    s.quads = static_cast<std::int64_t>(triangleCount / 2);
+    s.seamCells = static_cast<std::int64_t>(result.seam.cells.size());
     *stats = s;
   }
-  return out;
+  return result;
+}
+
+mesh::Mesh contourRegular(const MetaCellSamples& samples, const LinearOctree& regularTree,
+                          const RegularContourOptions& options, RegularContourStats* stats) {
+  return contourRegularMetaCell(samples, regularTree, options, stats).mesh;
 }
 
 }  // namespace isovdb::contour

@@ -18,10 +18,12 @@
 /// are oriented with their normals pointing from inside to outside.
 ///
 /// Meta-cell boundary: edges with fewer than four leaves around them (on the
-/// meta-cell's boundary faces) are skipped, so the mesh is closed only if the
-/// surface does not reach the meta-cell boundary (pad a whole-volume meta-cell
-/// by at least one outside sample). Seam stitching between meta-cells will
-/// supply those edges later.
+/// meta-cell's boundary faces) are skipped; contourRegularMetaCell keeps the
+/// leaves around them as SeamCells for stitch/ (seam_cell.h), which contours
+/// them with regularEdgeQuad, the same routine. Wenger's fix looks at the
+/// neighbour cell across the meta-cell boundary through the samples' apron
+/// (give an apron of at least the finest cell size), so a cell's grouping is
+/// final when its meta-cell is contoured.
 ///
 /// Output: positions in global voxel index coordinates, shared (indexed)
 /// vertices, no normals. Parallel with TBB and deterministic: the result
@@ -29,8 +31,10 @@
 /// the mesh.
 #pragma once
 
+#include <array>
 #include <cstdint>
 
+#include "isovdb/contour/seam_cell.h"
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/octree/linear_octree.h"
 #include "isovdb/octree/meta_cell_samples.h"
@@ -51,6 +55,10 @@ struct RegularContourStats {
   std::int64_t vertices = 0;       ///< dual vertices (= mesh positions)
   std::int64_t quads = 0;          ///< interior bipolar edges contoured (two triangles each)
   std::int64_t manifoldFixes = 0;  ///< cells that used Wenger's alternative grouping
+  std::int64_t seamCells = 0;      ///< leaves kept for stitching (touch the boundary, have dual vertices)
+  std::int64_t boundaryEdges = 0;  ///< bipolar edges left to stitching (on the meta-cell boundary)
+  std::int64_t fixesBeyondApron = 0;  ///< doubled faces on the boundary whose neighbour lies beyond the
+                                      ///< samples' apron (left unfixed; 0 with an apron >= the finest cell)
 };
 
 /// @brief Contours one meta-cell's regular octree with manifold Dual Marching Cubes.
@@ -65,5 +73,27 @@ struct RegularContourStats {
 ///        signs differ from the samples at `options.iso` (tree built with another isovalue).
 mesh::Mesh contourRegular(const octree::MetaCellSamples& samples, const octree::LinearOctree& regularTree,
                           const RegularContourOptions& options = {}, RegularContourStats* stats = nullptr);
+
+/// @brief contourRegular plus the seam: the leaves with dual vertices that touch
+///        the meta-cell boundary, in key order (see seam_cell.h).
+MetaCellMesh contourRegularMetaCell(const octree::MetaCellSamples& samples, const octree::LinearOctree& regularTree,
+                                    const RegularContourOptions& options = {}, RegularContourStats* stats = nullptr);
+
+/// @brief Index (0..3) of the dual vertex of a cell with corner signs `config`
+///        (and grouping `alternative`) that represents its cell edge along `axis`
+///        on which the cell sits in quadrant `quadrant` around that edge
+///        (bit 0 = the cell is on the +u side, bit 1 = +v; u < v the other axes);
+///        -1 if that edge is not bipolar.
+int regularVertexOfEdge(std::uint8_t config, bool alternative, int axis, int quadrant) noexcept;
+
+/// @brief The two triangles of one bipolar edge's quad (Algorithm 4.1), oriented
+///        outward, split along the diagonal whose worse triangle is better shaped.
+/// @param vertices   the four cells' vertex ids by quadrant (bit 0 = +u, bit 1 = +v)
+/// @param positions  their positions
+/// @param axis       the edge's axis
+/// @param minEndInside the edge's min end is inside (value <= iso)
+std::array<mesh::Triangle, 2> regularEdgeQuad(const std::array<std::uint32_t, 4>& vertices,
+                                              const std::array<mesh::Vec3f, 4>& positions, int axis,
+                                              bool minEndInside) noexcept;
 
 }  // namespace isovdb::contour

@@ -54,6 +54,17 @@ void AtomicFile::write(const void* data, std::size_t bytes) {
     throw IoError("cannot write '" + path_.string() + "': " + osError());
 }
 
+void AtomicFile::overwrite(std::uint64_t offset, const void* data, std::size_t bytes) {
+  if (!file_) throw IoError("cannot write '" + path_.string() + "': stream already closed");
+  if (std::fseek(file_, static_cast<long>(offset), SEEK_SET) != 0) throw IoError("cannot write '" + path_.string() + "': " + osError());
+  write(data, bytes);
+  if (std::fseek(file_, 0, SEEK_END) != 0) throw IoError("cannot write '" + path_.string() + "': " + osError());
+}
+
+void AtomicFile::flush() {
+  if (file_ && std::fflush(file_) != 0) throw IoError("cannot write '" + path_.string() + "': " + osError());
+}
+
 void AtomicFile::closeStream() {
   if (!file_) return;
   const bool ok = std::fclose(file_) == 0;

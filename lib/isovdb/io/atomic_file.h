@@ -3,6 +3,7 @@
 ///        so a failed or interrupted run never leaves a partial output file.
 #pragma once
 
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -22,6 +23,15 @@ class AtomicFile {
   /// Appends bytes. @throw IoError on a failed write (disk full, ...).
   void write(const void* data, std::size_t bytes);
   void write(const std::string& text) { write(text.data(), text.size()); }
+
+  /// Overwrites bytes already written at `offset` (a header whose counts are
+  /// known only at the end), then continues appending at the end.
+  /// @throw IoError on a failed seek or write.
+  void overwrite(std::uint64_t offset, const void* data, std::size_t bytes);
+
+  /// Flushes buffered bytes to the temporary file (so it can be read back).
+  /// @throw IoError on failure.
+  void flush();
 
   /// Flushes, closes and renames the temporary onto the final path.
   /// @throw IoError when any of those fails (the temporary is removed).

@@ -7,7 +7,8 @@
 
 namespace isovdb::octree {
 
-LinearOctree::LinearOctree(int metaCellSize, std::array<int, 3> metaCellOrigin, std::vector<OctreeLeaf> leaves)
+LinearOctree::LinearOctree(int metaCellSize, std::array<int, 3> metaCellOrigin, std::vector<OctreeLeaf> leaves,
+                           [[maybe_unused]] bool partial)
     : size_(metaCellSize),
       finestDepth_(depthForCellSize(metaCellSize, 1)),
       origin_(metaCellOrigin),
@@ -21,7 +22,7 @@ LinearOctree::LinearOctree(int metaCellSize, std::array<int, 3> metaCellOrigin, 
 #ifndef NDEBUG
   std::uint64_t volume = 0;
   for (const auto& l : leaves_) volume += std::uint64_t{1} << (3 * (fd - l.depth));
-  assert(leaves_.empty() || volume == (std::uint64_t{1} << (3 * fd)));
+  assert(partial || leaves_.empty() || volume == (std::uint64_t{1} << (3 * fd)));
 #endif
 }
 

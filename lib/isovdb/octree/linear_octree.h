@@ -54,8 +54,11 @@ class LinearOctree {
   /// @brief Takes leaves in any order and sorts them in Z order.
   /// @param metaCellSize S (power of two).
   /// @param metaCellOrigin global index coordinate of the meta-cell's min corner.
-  /// @pre the leaves tile the meta-cell cube exactly (checked with assert only).
-  LinearOctree(int metaCellSize, std::array<int, 3> metaCellOrigin, std::vector<OctreeLeaf> leaves);
+  /// @param partial false: the leaves tile the meta-cell cube exactly (checked with
+  ///        assert only); true: they need not (a seam's edge-octree, stitch/), and
+  ///        lookups where no leaf lies return kNone.
+  LinearOctree(int metaCellSize, std::array<int, 3> metaCellOrigin, std::vector<OctreeLeaf> leaves,
+               bool partial = false);
 
   int metaCellSize() const noexcept { return size_; }
   /// Depth of 1-voxel cells, log2(S).

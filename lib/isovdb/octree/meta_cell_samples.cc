@@ -6,13 +6,17 @@
 
 namespace isovdb::octree {
 
-void MetaCellSamples::allocate(int newSize, std::array<int, 3> newOrigin, float fill) {
+void MetaCellSamples::allocate(int newSize, std::array<int, 3> newOrigin, float fill, int newApron) {
   if (newSize < 1 || newSize > (1 << 16) || (newSize & (newSize - 1)) != 0)
     throw InputError("meta-cell size: expected a power of two in [1, 65536], got " +
                      std::to_string(newSize));
+  if (newApron < 1 || newApron > newSize)
+    throw InputError("meta-cell apron: expected 1.." + std::to_string(newSize) + " samples, got " +
+                     std::to_string(newApron));
   size = newSize;
+  apron = newApron;
   origin = newOrigin;
-  const std::size_t n = static_cast<std::size_t>(newSize + 3);
+  const std::size_t n = static_cast<std::size_t>(newSize + 1 + 2 * newApron);
   values.assign(n * n * n, fill);
 }
 

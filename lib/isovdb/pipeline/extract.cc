@@ -1,6 +1,9 @@
 #include "isovdb/pipeline/extract.h"
 
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
+
+#include <optional>
 
 #include "isovdb/contour/vdb_mesher.h"
 #include "isovdb/errors.h"
@@ -64,29 +67,40 @@ void indexToWorld(mesh::Mesh& mesh, const volume::Geometry& geometry) {
   });
 }
 
-mesh::Mesh extractMesh(const volume::Volume& volume, const ExtractOptions& options, Interrupter* interrupter,
-                       Statistics* stats) {
+void extractInto(const volume::Volume& volume, const ExtractOptions& options, mesh::MeshSink& sink,
+                 Interrupter* interrupter, Statistics* stats) {
+  if (options.threads < 0) throw InputError("--threads: expected 0 (every core) or more, got " + std::to_string(options.threads));
+  std::optional<tbb::global_control> threads;
+  if (options.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, options.threads);
   const volume::Volume field = toContourable(volume, options.distance, interrupter, stats);
-  mesh::Mesh mesh;
   if (options.method == ContourMethod::Vdb) {
     Statistics::StageTimer timer(stats, "contour");
-    mesh = contour::contourWithOpenVdb(field, {.iso = options.iso, .adaptivity = options.adaptivity}, interrupter);
+    const mesh::Mesh mesh =
+        contour::contourWithOpenVdb(field, {.iso = options.iso, .adaptivity = options.adaptivity}, interrupter);
+    sink.addVertices(mesh.positions);
+    sink.addTriangles(mesh.triangles);
   } else {
     OctreeContourOptions octree = options.octree;
     octree.method = options.method == ContourMethod::Regular ? OctreeMethod::Regular : OctreeMethod::Adaptive;
     octree.iso = static_cast<float>(options.iso);
-    mesh = contourWithOctree(field, octree, interrupter, stats);
+    contourWithOctree(field, octree, sink, interrupter, stats);
   }
-  indexToWorld(mesh, field.geometry());
   if (stats) {
     Statistics::Json& section = (*stats)["contour"];
     section["method"] = std::string(contourMethodName(options.method));
     section["iso"] = options.iso;
     if (options.method == ContourMethod::Vdb) section["adaptivity"] = options.adaptivity;
-    section["vertices"] = mesh.positions.size();
-    section["triangles"] = mesh.triangles.size();
+    section["vertices"] = sink.vertexCount();
+    section["triangles"] = sink.triangleCount();
   }
-  return mesh;
+}
+
+mesh::Mesh extractMesh(const volume::Volume& volume, const ExtractOptions& options, Interrupter* interrupter,
+                       Statistics* stats) {
+  mesh::MeshCollector collector;
+  extractInto(volume, options, collector, interrupter, stats);
+  indexToWorld(collector.mesh, volume.geometry());
+  return std::move(collector.mesh);
 }
 
 }  // namespace isovdb::pipeline

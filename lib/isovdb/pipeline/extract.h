@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "isovdb/mesh/mesh.h"
+#include "isovdb/mesh/mesh_sink.h"
 #include "isovdb/pipeline/octree_contour.h"
 #include "isovdb/pipeline/statistics.h"
 #include "isovdb/progress.h"
@@ -37,6 +38,8 @@ struct ExtractOptions {
   volume::DistanceFieldOptions distance;
   /// `regular` and `adaptive` methods (iso and method are taken from above).
   OctreeContourOptions octree;
+  /// Worker threads for the whole job (TBB); 0 = every core. The output does not depend on it.
+  int threads = 0;
 };
 
 /// A mask becomes its distance field; distance fields and scalars pass through.
@@ -48,6 +51,12 @@ volume::Volume toContourable(const volume::Volume& volume, const volume::Distanc
 /// @throw InputError for invalid options; Interrupted on cancellation.
 mesh::Mesh extractMesh(const volume::Volume& volume, const ExtractOptions& options,
                        Interrupter* interrupter = nullptr, Statistics* stats = nullptr);
+
+/// The same, streamed into `sink` in voxel INDEX space (the octree methods hand
+/// it one meta-cell at a time; apply volume.geometry() in the sink, e.g.
+/// io::PlyStreamWriter's transform).
+void extractInto(const volume::Volume& volume, const ExtractOptions& options, mesh::MeshSink& sink,
+                 Interrupter* interrupter = nullptr, Statistics* stats = nullptr);
 
 /// world = origin + spacing * index, applied in place (flips nothing: spacings are positive).
 void indexToWorld(mesh::Mesh& mesh, const volume::Geometry& geometry);

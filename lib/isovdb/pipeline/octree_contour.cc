@@ -1,13 +1,19 @@
 #include "isovdb/pipeline/octree_contour.h"
 
+#include <tbb/global_control.h>
+#include <tbb/parallel_pipeline.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <memory>
 
 #include "isovdb/contour/adaptive_contour.h"
 #include "isovdb/contour/regular_contour.h"
 #include "isovdb/errors.h"
+#include "isovdb/stitch/stitch_seams.h"
 #include "isovdb/volume/grids.h"
 #include "isovdb/volume/meta_cells.h"
 
@@ -15,7 +21,7 @@ namespace isovdb::pipeline {
 
 namespace {
 
-constexpr int kMargin = 2;  // voxels between the band and the meta-cell boundary
+constexpr int kMargin = 2;  // single block: voxels between the band and the meta-cell boundary
 
 int nextPowerOfTwo(int v) {
   int p = 1;
@@ -23,16 +29,117 @@ int nextPowerOfTwo(int v) {
   return p;
 }
 
-}  // namespace
+/// The octree options of a meta-cell of `size` voxels.
+octree::OctreeOptions treeOptionsFor(const OctreeContourOptions& options, int size, float iso) {
+  octree::OctreeOptions t;
+  t.construction = options.method == OctreeMethod::Regular ? octree::OctreeConstruction::Regular
+                                                           : octree::OctreeConstruction::Adaptive;
+  t.minDepth = options.minLevel;
+  if (options.minLevel < 0) t.maxCellSize = std::min(options.maxCellSize, size);
+  t.maxDepth = options.maxLevel;
+  if (options.maxLevel < 0) t.finestCellSize = options.finestCellSize;
+  t.qefTolerance = options.method == OctreeMethod::Adaptive ? options.qefTolerance : -1.f;
+  t.iso = iso;
+  return t;
+}
 
-mesh::Mesh contourWithOctree(const volume::Volume& field, const OctreeContourOptions& options,
-                             Interrupter* interrupter, Statistics* stats) {
-  if (field.kind() == volume::VolumeKind::Mask)
-    throw InputError("'" + field.name() + "': octree contouring needs a distance field or a scalar field");
-  // One meta-cell around the whole active band (no stitching yet). Only the
-  // bounding box is needed, not Volume::stats()'s value range and memory walk.
+/// Figures summed over meta-cells (CPU seconds, counts).
+struct MetaCellTotals {
+  double readSeconds = 0, octreeSeconds = 0, contourSeconds = 0;
+  std::int64_t leaves = 0, complexCells = 0, unresolvedComplexLeaves = 0, geometricSplits = 0;
+  std::int64_t manifoldFixes = 0, fixesBeyondApron = 0, boundaryEdges = 0, seamCells = 0;
+  std::int64_t minimalEdges = 0, fannedEdges = 0, trianglesAddedByFans = 0;
+
+  void add(const MetaCellTotals& o) {
+    readSeconds += o.readSeconds;
+    octreeSeconds += o.octreeSeconds;
+    contourSeconds += o.contourSeconds;
+    leaves += o.leaves;
+    complexCells += o.complexCells;
+    unresolvedComplexLeaves += o.unresolvedComplexLeaves;
+    geometricSplits += o.geometricSplits;
+    manifoldFixes += o.manifoldFixes;
+    fixesBeyondApron += o.fixesBeyondApron;
+    boundaryEdges += o.boundaryEdges;
+    seamCells += o.seamCells;
+    minimalEdges += o.minimalEdges;
+    fannedEdges += o.fannedEdges;
+    trianglesAddedByFans += o.trianglesAddedByFans;
+  }
+};
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// Builds the octree of one block of samples and contours it (edges inside the block; the seam kept).
+contour::MetaCellMesh contourBlock(const octree::MetaCellSamples& samples, const OctreeContourOptions& options,
+                                   float iso, MetaCellTotals& totals, Interrupter* interrupter) {
+  auto t0 = std::chrono::steady_clock::now();
+  octree::OctreeBuildStats buildStats;
+  const octree::LinearOctree tree =
+      octree::buildOctree(samples, treeOptionsFor(options, samples.size, iso), &buildStats, interrupter);
+  totals.octreeSeconds += secondsSince(t0);
+  totals.leaves += static_cast<std::int64_t>(tree.leafCount());
+  totals.complexCells += static_cast<std::int64_t>(buildStats.complexCells);
+  totals.unresolvedComplexLeaves += static_cast<std::int64_t>(buildStats.unresolvedComplexLeaves);
+  totals.geometricSplits += static_cast<std::int64_t>(buildStats.geometricSplits);
+  t0 = std::chrono::steady_clock::now();
+  contour::MetaCellMesh result;
+  if (options.method == OctreeMethod::Regular) {
+    contour::RegularContourStats s;
+    result = contour::contourRegularMetaCell(samples, tree, {.iso = iso, .manifoldFix = options.manifoldFix}, &s);
+    totals.manifoldFixes += s.manifoldFixes;
+    totals.fixesBeyondApron += s.fixesBeyondApron;
+    totals.boundaryEdges += s.boundaryEdges;
+    totals.seamCells += s.seamCells;
+  } else {
+    contour::AdaptiveContourStats s;
+    result = contour::contourAdaptiveMetaCell(samples, tree, {.iso = iso, .intersectionFree = options.intersectionFree},
+                                              &s);
+    totals.boundaryEdges += s.boundaryEdges;
+    totals.seamCells += s.seamCells;
+    totals.minimalEdges += s.minimalEdges;
+    totals.fannedEdges += s.fannedEdges;
+    totals.trianglesAddedByFans += s.trianglesAddedByFans;
+  }
+  totals.contourSeconds += secondsSince(t0);
+  return result;
+}
+
+/// The engine's inside is value <= iso; a scalar's inside is above the isovalue.
+float engineIso(const volume::Volume& field, float iso, octree::MetaCellSamples& samples) {
+  if (field.kind() != volume::VolumeKind::Scalar) return iso;
+  for (float& v : samples.values) v = -v;
+  return -iso;
+}
+
+void recordTotals(const MetaCellTotals& totals, const OctreeContourOptions& options, Statistics::Json& section) {
+  section["leaves"] = totals.leaves;
+  section["complex_cells"] = totals.complexCells;
+  section["unresolved_complex_leaves"] = totals.unresolvedComplexLeaves;
+  section["boundary_cells_kept"] = totals.seamCells;
+  section["edges_left_to_stitching"] = totals.boundaryEdges;
+  if (options.method == OctreeMethod::Regular) {
+    section["manifold_fixes"] = totals.manifoldFixes;
+    section["manifold_fixes_beyond_apron"] = totals.fixesBeyondApron;
+  } else {
+    section["geometric_splits"] = totals.geometricSplits;
+    section["intersection_free"] = options.intersectionFree;
+    section["minimal_edges"] = totals.minimalEdges;
+    section["fanned_edges"] = totals.fannedEdges;
+    section["triangles_added_by_fans"] = totals.trianglesAddedByFans;
+  }
+  section["cpu_seconds_read"] = totals.readSeconds;
+  section["cpu_seconds_octree"] = totals.octreeSeconds;
+  section["cpu_seconds_contour"] = totals.contourSeconds;
+}
+
+/// One padded meta-cell around the whole band (no seams).
+void contourSingleBlock(const volume::Volume& field, const OctreeContourOptions& options, mesh::MeshSink& sink,
+                        Interrupter* interrupter, Statistics* stats) {
   openvdb::CoordBBox band;
-  if (!volume::fieldGrid(field).tree().evalActiveVoxelBoundingBox(band)) return {};
+  if (!volume::fieldGrid(field).tree().evalActiveVoxelBoundingBox(band)) return;
   std::array<int, 3> origin;
   int extent = 1;
   for (int a = 0; a < 3; ++a) {
@@ -40,70 +147,163 @@ mesh::Mesh contourWithOctree(const volume::Volume& field, const OctreeContourOpt
     extent = std::max(extent, band.max()[a] + kMargin - origin[a]);
   }
   const int size = nextPowerOfTwo(extent);
-  // Until stitching lands the block is dense: refuse clearly rather than let the
-  // kernel kill the process half-way.
+  // The block is dense: refuse clearly rather than let the kernel kill the process half-way.
   const double blockBytes = std::pow(static_cast<double>(size) + 3.0, 3.0) * sizeof(float);
   const double physicalBytes = static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * ::sysconf(_SC_PAGE_SIZE);
   if (physicalBytes > 0 && blockBytes > 0.5 * physicalBytes)
     throw InputError("'" + field.name() + "': the surface spans " + std::to_string(extent) +
                      " voxels; one meta-cell of " + std::to_string(size) + "^3 samples needs " +
                      std::to_string(static_cast<long long>(blockBytes / (1 << 20))) +
-                     " MiB, more than half of this machine's memory (use --method vdb until seam stitching lands)");
+                     " MiB, more than half of this machine's memory (use --meta-cell 128)");
+  MetaCellTotals totals;
   octree::MetaCellSamples samples;
   float iso = options.iso;
   {
     Statistics::StageTimer timer(stats, "read_meta_cells");
     volume::readBlock(field, origin, size, samples);
-    // The engine's inside is value <= iso; a scalar's inside is above the isovalue.
-    if (field.kind() == volume::VolumeKind::Scalar) {
-      for (float& v : samples.values) v = -v;
-      iso = -iso;
-    }
+    iso = engineIso(field, iso, samples);
+  }
+  contour::MetaCellMesh block;
+  {
+    Statistics::StageTimer timer(stats, "contour_meta_cells");
+    block = contourBlock(samples, options, iso, totals, interrupter);
+  }
+  sink.addVertices(block.mesh.positions);
+  sink.addTriangles(block.mesh.triangles);
+  if (stats) {
+    Statistics::Json section = Statistics::Json::object();
+    section["meta_cell_size"] = size;
+    section["meta_cell_origin"] = origin;
+    section["single_block"] = true;
+    recordTotals(totals, options, section);
+    (*stats)["octree"] = section;
+  }
+}
+
+/// One meta-cell's result on its way through the pipeline.
+struct MetaCellJob {
+  std::size_t position = 0;
+  bool contoured = false;  ///< its samples change sign
+  contour::MetaCellMesh result;
+  MetaCellTotals totals;
+};
+
+/// Every meta-cell in parallel, output in meta-cell order, then the seams.
+void contourMetaCells(const volume::Volume& field, const OctreeContourOptions& options, mesh::MeshSink& sink,
+                      Interrupter* interrupter, Statistics* stats) {
+  const int s = options.metaCellSize;
+  if (s < 16 || s > 512 || (s & (s - 1)) != 0)
+    throw InputError("--meta-cell: expected a power of two in 16..512 (or 0 for one block), got " + std::to_string(s));
+  volume::MetaCellPartition partition;
+  {
+    Statistics::StageTimer timer(stats, "partition");
+    partition = volume::partitionMetaCells(field, s, options.iso);
+  }
+  // Regular mode reads one finest cell beyond the meta-cell, for Wenger's fix across the seam.
+  const octree::OctreeDepths depths = octree::resolveDepths(treeOptionsFor(options, s, options.iso), s);
+  const int apron = options.method == OctreeMethod::Regular ? std::max(1, octree::cellSizeAtDepth(s, depths.maxDepth)) : 1;
+
+  const std::size_t tokens =
+      std::max<std::size_t>(1, tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+  stitch::SeamStore seams;
+  MetaCellTotals totals;
+  std::size_t next = 0, contoured = 0, done = 0;
+  const std::size_t total = partition.cells.size();
+  {
+    Statistics::StageTimer timer(stats, "contour_meta_cells");
+    ProgressStage progress(interrupter, "contouring meta-cells");
+    tbb::parallel_pipeline(
+        tokens,
+        tbb::make_filter<void, std::shared_ptr<MetaCellJob>>(
+            tbb::filter_mode::serial_in_order,
+            [&](tbb::flow_control& control) -> std::shared_ptr<MetaCellJob> {
+              if (next >= total) {
+                control.stop();
+                return nullptr;
+              }
+              auto job = std::make_shared<MetaCellJob>();
+              job->position = next++;
+              return job;
+            }) &
+            tbb::make_filter<std::shared_ptr<MetaCellJob>, std::shared_ptr<MetaCellJob>>(
+                tbb::filter_mode::parallel,
+                [&](std::shared_ptr<MetaCellJob> job) {
+                  const auto t0 = std::chrono::steady_clock::now();
+                  octree::MetaCellSamples samples;
+                  volume::readMetaCell(field, partition.cells[job->position], s, samples, apron);
+                  const float iso = engineIso(field, options.iso, samples);
+                  job->totals.readSeconds += secondsSince(t0);
+                  job->contoured = volume::hasSignChange(samples, iso);
+                  if (job->contoured) job->result = contourBlock(samples, options, iso, job->totals, nullptr);
+                  return job;
+                }) &
+            tbb::make_filter<std::shared_ptr<MetaCellJob>, void>(
+                tbb::filter_mode::serial_in_order, [&](std::shared_ptr<MetaCellJob> job) {
+                  totals.add(job->totals);
+                  if (job->contoured) {
+                    ++contoured;
+                    const auto base = static_cast<std::uint32_t>(sink.vertexCount());
+                    for (mesh::Triangle& t : job->result.mesh.triangles)
+                      for (std::uint32_t& v : t) v += base;
+                    sink.addVertices(job->result.mesh.positions);
+                    sink.addTriangles(job->result.mesh.triangles);
+                    contour::rebaseSeam(job->result.seam, base);
+                    seams.add(partition.cells[job->position], std::move(job->result.seam));
+                  }
+                  progress.update(static_cast<double>(++done), static_cast<double>(total));
+                }));
   }
 
-  octree::OctreeOptions treeOptions;
-  treeOptions.construction = options.method == OctreeMethod::Regular ? octree::OctreeConstruction::Regular
-                                                                     : octree::OctreeConstruction::Adaptive;
-  treeOptions.minDepth = options.minLevel;
-  if (options.minLevel < 0) treeOptions.maxCellSize = std::min(options.maxCellSize, size);
-  treeOptions.maxDepth = options.maxLevel;
-  if (options.maxLevel < 0) treeOptions.finestCellSize = options.finestCellSize;
-  treeOptions.qefTolerance = options.method == OctreeMethod::Adaptive ? options.qefTolerance : -1.f;
-  treeOptions.iso = iso;
-  octree::OctreeBuildStats buildStats;
-  octree::LinearOctree tree;
+  stitch::StitchStats stitchStats;
   {
-    Statistics::StageTimer timer(stats, "octree");
-    tree = octree::buildOctree(samples, treeOptions, &buildStats, interrupter);
+    Statistics::StageTimer timer(stats, "stitch");
+    mesh::Mesh tail;
+    stitch::stitchSeams(seams,
+                        {.method = options.method == OctreeMethod::Regular ? stitch::StitchMethod::Regular
+                                                                           : stitch::StitchMethod::Adaptive,
+                         .metaCellSize = s,
+                         .intersectionFree = options.intersectionFree},
+                        static_cast<std::uint32_t>(sink.vertexCount()), tail, &stitchStats, interrupter);
+    sink.addVertices(tail.positions);
+    sink.addTriangles(tail.triangles);
   }
+  if (stats) {
+    Statistics::Json section = Statistics::Json::object();
+    section["meta_cell_size"] = s;
+    section["apron"] = apron;
+    section["threads"] = tokens;
+    section["candidates"] = total;
+    section["contoured"] = contoured;
+    section["skipped_without_sign_change"] = total - contoured;
+    section["leaves_scanned_for_partition"] = partition.leavesScanned;
+    recordTotals(totals, options, section);
+    (*stats)["meta_cells"] = section;
+    Statistics::Json st = Statistics::Json::object();
+    st["meta_faces"] = stitchStats.metaFaces;
+    st["meta_edges"] = stitchStats.metaEdges;
+    st["seam_cells"] = stitchStats.seamCells;
+    st["edges"] = stitchStats.edges;
+    if (options.method == OctreeMethod::Adaptive) st["fanned_edges"] = stitchStats.fannedEdges;
+    st["missing_cells"] = stitchStats.missingCells;
+    (*stats)["stitch"] = st;
+  }
+}
 
-  mesh::Mesh mesh;
-  Statistics::Json section = Statistics::Json::object();
-  section["meta_cell_size"] = size;
-  section["meta_cell_origin"] = origin;
-  section["leaves"] = tree.leafCount();
-  section["complex_cells"] = buildStats.complexCells;
-  section["unresolved_complex_leaves"] = buildStats.unresolvedComplexLeaves;
-  section["geometric_splits"] = buildStats.geometricSplits;
-  {
-    Statistics::StageTimer timer(stats, "contour");
-    if (options.method == OctreeMethod::Regular) {
-      contour::RegularContourStats contourStats;
-      mesh = contour::contourRegular(samples, tree, {.iso = iso, .manifoldFix = options.manifoldFix}, &contourStats);
-      section["manifold_fixes"] = contourStats.manifoldFixes;
-      section["quads"] = contourStats.quads;
-    } else {
-      contour::AdaptiveContourStats contourStats;
-      mesh = contour::contourAdaptive(samples, tree, {.iso = iso, .intersectionFree = options.intersectionFree},
-                                      &contourStats);
-      section["intersection_free"] = options.intersectionFree;
-      section["minimal_edges"] = contourStats.minimalEdges;
-      section["fanned_edges"] = contourStats.fannedEdges;
-      section["triangles_added_by_fans"] = contourStats.trianglesAddedByFans;
-    }
-  }
-  if (stats) (*stats)["octree"] = section;
-  return mesh;
+}  // namespace
+
+void contourWithOctree(const volume::Volume& field, const OctreeContourOptions& options, mesh::MeshSink& sink,
+                       Interrupter* interrupter, Statistics* stats) {
+  if (field.kind() == volume::VolumeKind::Mask)
+    throw InputError("'" + field.name() + "': octree contouring needs a distance field or a scalar field");
+  if (options.metaCellSize == 0) contourSingleBlock(field, options, sink, interrupter, stats);
+  else contourMetaCells(field, options, sink, interrupter, stats);
+}
+
+mesh::Mesh contourWithOctree(const volume::Volume& field, const OctreeContourOptions& options,
+                             Interrupter* interrupter, Statistics* stats) {
+  mesh::MeshCollector collector;
+  contourWithOctree(field, options, collector, interrupter, stats);
+  return std::move(collector.mesh);
 }
 
 }  // namespace isovdb::pipeline

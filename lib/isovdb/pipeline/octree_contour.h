@@ -1,14 +1,23 @@
 /// @file octree_contour.h
-/// @brief Our own contouring methods on a distance field: octree per meta-cell,
-///        then regular (manifold DMC) or adaptive (DC + Ju–Udeshi) contouring.
+/// @brief Our own contouring methods on a distance field: the field cut into
+///        meta-cells, each contoured with its own octree (regular: manifold DMC;
+///        adaptive: DC + Ju–Udeshi), in parallel, and the seams between them
+///        closed by edge-octree stitching (paper 000, sections 4.1–4.3).
 ///
-/// Until seam stitching lands, the whole volume is one meta-cell: the smallest
-/// power-of-two cube that holds the field's active band plus a margin of two
-/// voxels, so the surface never reaches the meta-cell boundary and the mesh is
-/// closed. Memory: (S+3)^3 floats for that cube (e.g. 550 MB for S = 512).
+/// Per meta-cell (one TBB pipeline token each; `--threads 1` = one meta-cell in
+/// memory): read its (S + 1 + 2A)^3 samples, build the octree, contour the
+/// edges inside it, hand the mesh to the sink in meta-cell order (so output
+/// bytes do not depend on the thread count) and keep only the boundary cells
+/// (contour/seam_cell.h). Then stitch/ contours the seams. Memory: the field,
+/// one meta-cell's working set per token, and the kept cells; the mesh itself
+/// goes to the sink (a file, when streaming).
+///
+/// `metaCellSize` 0 keeps the single-block path: one padded meta-cell around the
+/// whole band, no seams (a dense block of the band's size; for comparison).
 #pragma once
 
 #include "isovdb/mesh/mesh.h"
+#include "isovdb/mesh/mesh_sink.h"
 #include "isovdb/octree/build.h"
 #include "isovdb/pipeline/statistics.h"
 #include "isovdb/progress.h"
@@ -24,6 +33,8 @@ enum class OctreeMethod {
 struct OctreeContourOptions {
   OctreeMethod method = OctreeMethod::Regular;
   float iso = 0.f;          ///< isovalue (voxels on distance fields)
+  int metaCellSize = 128;   ///< S, voxels per meta-cell edge (power of two, 16..512; 128 = VDB level-1 nodes);
+                            ///< 0 = one meta-cell around the whole band (no stitching)
   int minLevel = -1;        ///< uniform subdivision down to this depth under the meta-cell; -1: maxCellSize decides
   int maxCellSize = 16;     ///< largest leaf in voxels when minLevel is -1 (coarser cells miss smooth detail:
                             ///< the QEF residual hardly grows on cells with few crossings)
@@ -37,8 +48,14 @@ struct OctreeContourOptions {
 };
 
 /// Contours a DistanceField (inside = value <= iso) or a Scalar volume (inside =
-/// value >= iso) with our octree methods. Mesh in voxel index space, outward-oriented.
-/// @throw InputError for a mask volume or invalid levels; Interrupted on cancellation.
+/// value >= iso) with our octree methods into `sink` (voxel index space,
+/// outward-oriented triangles).
+/// @throw InputError for a mask volume, an invalid meta-cell size or invalid levels;
+///        Interrupted on cancellation.
+void contourWithOctree(const volume::Volume& field, const OctreeContourOptions& options, mesh::MeshSink& sink,
+                       Interrupter* interrupter = nullptr, Statistics* stats = nullptr);
+
+/// The same, collected into a mesh.
 mesh::Mesh contourWithOctree(const volume::Volume& field, const OctreeContourOptions& options,
                              Interrupter* interrupter = nullptr, Statistics* stats = nullptr);
 

@@ -26,14 +26,10 @@ MetaCellPartition partitionMetaCells(const Volume& field, int size, float iso) {
   partition.size = size;
   // Leaf indices can repeat across leaves: collect in an ordered set (z, y, x).
   std::set<std::array<int, 3>> cells;
-  for (auto leaf = grid.tree().cbeginLeaf(); leaf; ++leaf) {
-    ++partition.leavesScanned;
-    bool near = false;
-    for (auto it = leaf->cbeginValueAll(); it && !near; ++it) near = std::abs(*it - iso) <= 1.f;
-    if (!near) continue;
-    // The leaf's samples, grown by one for crossings with its neighbours, belong
-    // to every meta-cell whose closed range [i*S, i*S+S] they touch.
-    const openvdb::CoordBBox box = leaf->getNodeBoundingBox().expandBy(1);
+  // The box's samples, grown by one for crossings with their neighbours, belong
+  // to every meta-cell whose closed range [i*S, i*S+S] they touch.
+  auto addBox = [&](openvdb::CoordBBox box) {
+    box.expand(1);
     std::array<int, 3> lo, hi;
     for (int a = 0; a < 3; ++a) {
       lo[a] = floorDiv(box.min()[a] - 1, size);
@@ -49,21 +45,33 @@ MetaCellPartition partitionMetaCells(const Volume& field, int size, float iso) {
             overlaps = overlaps && box.max()[a] >= idx[a] * size && box.min()[a] <= idx[a] * size + size;
           if (overlaps) cells.insert({k, j, i});
         }
+  };
+  const bool distance = field.kind() == VolumeKind::DistanceField;
+  for (auto leaf = grid.tree().cbeginLeaf(); leaf; ++leaf) {
+    ++partition.leavesScanned;
+    bool near = !distance;
+    for (auto it = leaf->cbeginValueAll(); it && !near; ++it) near = std::abs(*it - iso) <= 1.f;
+    if (near) addBox(leaf->getNodeBoundingBox());
   }
+  if (!distance)
+    for (auto tile = grid.tree().cbeginValueOn(); tile; ++tile)
+      if (!tile.isVoxelValue()) addBox(tile.getBoundingBox());
   for (const auto& zyx : cells) partition.cells.push_back({zyx[2], zyx[1], zyx[0]});
   return partition;
 }
 
-void readMetaCell(const Volume& field, const MetaCellIndex& index, int size, octree::MetaCellSamples& out) {
-  readBlock(field, {index[0] * size, index[1] * size, index[2] * size}, size, out);
+void readMetaCell(const Volume& field, const MetaCellIndex& index, int size, octree::MetaCellSamples& out,
+                  int apron) {
+  readBlock(field, {index[0] * size, index[1] * size, index[2] * size}, size, out, apron);
 }
 
-void readBlock(const Volume& field, const std::array<int, 3>& origin, int size, octree::MetaCellSamples& out) {
+void readBlock(const Volume& field, const std::array<int, 3>& origin, int size, octree::MetaCellSamples& out,
+               int apron) {
   const FieldGrid& grid = fieldGrid(field);
-  out.allocate(size, origin, grid.background());
+  out.allocate(size, origin, grid.background(), apron);
   // The sample block with its apron, x fastest: exactly openvdb's LayoutXYZ.
-  const openvdb::CoordBBox box(openvdb::Coord(origin[0] - 1, origin[1] - 1, origin[2] - 1),
-                               openvdb::Coord(origin[0] + size + 1, origin[1] + size + 1, origin[2] + size + 1));
+  const openvdb::Coord lo(origin[0] - apron, origin[1] - apron, origin[2] - apron);
+  const openvdb::CoordBBox box(lo, lo.offsetBy(out.stride() - 1));
   openvdb::tools::Dense<float, openvdb::tools::LayoutXYZ> dense(box, out.values.data());
   openvdb::tools::copyToDense(grid, dense);
 }

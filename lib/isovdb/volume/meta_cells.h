@@ -27,20 +27,25 @@ struct MetaCellPartition {
   std::int64_t leavesScanned = 0;      ///< SDF leaves looked at (no voxel of a tile is read)
 };
 
-/// Meta-cells of size `size` that may hold a sign change of `field` across `iso`:
-/// those touching a leaf with a value within one voxel of the isovalue (a distance
-/// field changes by at most one per voxel, so every crossing lies in such a leaf).
+/// Meta-cells of size `size` that may hold a sign change of `field` across `iso`.
+/// Distance field: those touching a leaf with a value within one voxel of the
+/// isovalue (a distance field changes by at most one per voxel, so every
+/// crossing lies in such a leaf); tiles are never read. Scalar field (values
+/// may jump by any amount): those touching any leaf or active tile, grown by one
+/// voxel. Callers still test each meta-cell's samples (hasSignChange).
 /// @pre field is a DistanceField or Scalar volume; size is a power of two in [8, 4096].
 /// @throw InputError otherwise.
 MetaCellPartition partitionMetaCells(const Volume& field, int size, float iso = 0.f);
 
-/// Fills `out` with the samples of meta-cell `index` (offsets -1..S+1 on each
-/// axis), inactive voxels reading as the grid's signed background.
-void readMetaCell(const Volume& field, const MetaCellIndex& index, int size, octree::MetaCellSamples& out);
+/// Fills `out` with the samples of meta-cell `index` (offsets -A..S+A on each
+/// axis, A = `apron`), inactive voxels reading as the grid's signed background.
+void readMetaCell(const Volume& field, const MetaCellIndex& index, int size, octree::MetaCellSamples& out,
+                  int apron = 1);
 
 /// Fills `out` with the samples of the cube of `size` cells whose minimum corner
 /// is `origin` (any index position, not only multiples of size), apron included.
-void readBlock(const Volume& field, const std::array<int, 3>& origin, int size, octree::MetaCellSamples& out);
+void readBlock(const Volume& field, const std::array<int, 3>& origin, int size, octree::MetaCellSamples& out,
+               int apron = 1);
 
 /// True when the samples 0..S of `samples` hold both sides of `iso` (inside: value <= iso).
 bool hasSignChange(const octree::MetaCellSamples& samples, float iso);

@@ -1,0 +1,187 @@
+#include "isovdb/contour/adaptive_edges.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+#include "isovdb/octree/morton.h"
+
+namespace isovdb::contour {
+namespace {
+
+using octree::LinearOctree;
+using octree::OctreeLeaf;
+
+/// Quadrant visited at each position of the cycle around an edge (bit 0 = +u, bit 1 = +v):
+/// counter-clockwise seen from +axis when (u, v, axis) is right-handed (axis x and z).
+constexpr std::array<int, 4> kCycle{0, 1, 3, 2};
+
+}  // namespace
+
+Vec3d cellPointInside(const mesh::Vec3f& vertex, const OctreeLeaf& leaf, const std::array<int, 3>& treeOrigin) {
+  Vec3d p{};
+  const double m = kInteriorMargin * leaf.size;
+  for (int a = 0; a < 3; ++a) {
+    const double lo = treeOrigin[a] + leaf.origin[a];
+    p[a] = std::clamp(static_cast<double>(vertex[a]), lo + m, lo + leaf.size - m);
+  }
+  return p;
+}
+
+void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool intersectionFree, LeafEdges& out) {
+  const LinearOctree& tree = *source.tree;
+  const std::vector<Vec3d>& cellPoints = *source.cellPoints;
+  const std::vector<char>& hasVertex = *source.hasVertex;
+  const OctreeLeaf& leaf = tree.leaf(leafIndex);
+  const std::uint16_t bipolar = leaf.bipolarEdges();
+  const int s = leaf.size;
+  const std::array<int, 3>& g = source.origin;
+  for (int e = 0; e < 12; ++e) {
+    if (!((bipolar >> e) & 1)) continue;
+    const int axis = octree::cellEdgeAxis(e);
+    const int c0 = octree::cellEdgeCorner(e, 0);
+    const auto uv = octree::otherAxes(axis);
+    std::array<int, 3> start = leaf.origin;
+    for (int a = 0; a < 3; ++a) start[a] += ((c0 >> a) & 1) * s;
+    if (source.inRegion && !source.inRegion(start, axis)) continue;
+    const std::array<std::int64_t, 4> around = tree.leavesAroundEdge(start, axis);
+    // This leaf's quadrant: on the min side of the edge where the edge is on its max side.
+    const int own = (1 - ((c0 >> uv[0]) & 1)) | ((1 - ((c0 >> uv[1]) & 1)) << 1);
+    // Minimal: no leaf around is smaller. Owner: the first quadrant holding a leaf of this size.
+    bool minimal = true, owner = true, outside = false;
+    for (int q = 0; q < 4; ++q) {
+      const std::int64_t l = around[static_cast<std::size_t>(q)];
+      if (l == LinearOctree::kNone) {
+        // In a seam's partial tree the missing leaf is a finer one with equal corner
+        // signs (not kept): the edge is not minimal, and a finer edge carries the crossing.
+        if (source.partial) minimal = false;
+        outside = true;
+        continue;
+      }
+      const int size = tree.leaf(static_cast<std::size_t>(l)).size;
+      if (size < s) minimal = false;
+      if (size == s && q < own) owner = false;
+    }
+    if (!minimal || !owner) continue;
+    if (outside) {
+      ++out.boundary;
+      continue;
+    }
+    // Distinct leaves in cyclic order (a coarser leaf fills two consecutive quadrants).
+    std::array<std::int64_t, 4> cells{};
+    int k = 0;
+    for (int pos = 0; pos < 4; ++pos) {
+      const int q = kCycle[static_cast<std::size_t>(pos)];
+      const std::int64_t l = around[static_cast<std::size_t>(q)];
+      if (k > 0 && cells[static_cast<std::size_t>(k - 1)] == l) continue;
+      cells[static_cast<std::size_t>(k)] = l;
+      ++k;
+    }
+    if (k > 1 && cells[static_cast<std::size_t>(k - 1)] == cells[0]) --k;
+    bool haveVertices = k >= 3;
+    for (int i = 0; i < k; ++i)
+      if (!hasVertex[static_cast<std::size_t>(cells[static_cast<std::size_t>(i)])]) haveVertices = false;
+    if (!haveVertices) {
+      ++out.withoutVertex;
+      continue;
+    }
+    // Outward orientation: the normal points from the inside end to the outside end.
+    const bool startInside = (leaf.cornerSigns >> c0) & 1;
+    const bool ccw = axis != 1;
+    if (ccw != startInside) std::reverse(cells.begin(), cells.begin() + k);
+    // Quadrants of each leaf (bit mask over the 4 quadrants).
+    auto quadrantsOf = [&](std::int64_t l) {
+      int mask = 0;
+      for (int q = 0; q < 4; ++q)
+        if (around[static_cast<std::size_t>(q)] == l) mask |= 1 << q;
+      return mask;
+    };
+
+    EdgeRecord r;
+    r.cellCount = k;
+    r.cells = cells;
+    EdgeEnvelope env;
+    env.cellCount = k;
+    std::array<bool, 4> crossed{};
+    for (int i = 0; i < k; ++i) {
+      const std::int64_t a = cells[static_cast<std::size_t>(i)];
+      const std::int64_t b = cells[static_cast<std::size_t>((i + 1) % k)];
+      env.cellPoints[static_cast<std::size_t>(i)] = cellPoints[static_cast<std::size_t>(a)];
+      // The two leaves touch across the quadrant boundary on axis uv[bit].
+      const int qa = quadrantsOf(a), qb = quadrantsOf(b);
+      int bit = -1, sideA = 0;
+      for (int x = 0; x < 4 && bit < 0; ++x)
+        for (int y = 0; y < 4 && bit < 0; ++y)
+          if (((qa >> x) & 1) && ((qb >> y) & 1) && std::popcount(static_cast<unsigned>(x ^ y)) == 1) {
+            bit = (x ^ y) == 1 ? 0 : 1;
+            sideA = (x >> bit) & 1;
+          }
+      const int n = uv[static_cast<std::size_t>(bit)];
+      const OctreeLeaf& la = tree.leaf(static_cast<std::size_t>(a));
+      const OctreeLeaf& lb = tree.leaf(static_cast<std::size_t>(b));
+      // The minimal face is the smaller leaf's face; on a tie, the min-side leaf's max face.
+      const bool aIsFace = la.size < lb.size || (la.size == lb.size && sideA == 0);
+      const OctreeLeaf& lf = aIsFace ? la : lb;
+      FaceKey& key = r.faces[static_cast<std::size_t>(i)];
+      key.axis = n;
+      key.size = lf.size;
+      for (int x = 0; x < 3; ++x) key.min[x] = g[x] + lf.origin[x];
+      key.min[n] = g[n] + start[n];
+      MinimalFace face;
+      face.axis = n;
+      face.coordinate = static_cast<double>(key.min[n]);
+      for (int x = 0; x < 3; ++x) face.min[x] = static_cast<double>(key.min[x]);
+      face.size = lf.size;
+      const Vec3d& pa = cellPoints[static_cast<std::size_t>(a)];
+      const Vec3d& pb = cellPoints[static_cast<std::size_t>(b)];
+      const FacePoint fp = sideA == 0 ? computeFacePoint(pa, pb, face) : computeFacePoint(pb, pa, face);
+      r.facePoints[static_cast<std::size_t>(i)] = fp.point;
+      env.facePoints[static_cast<std::size_t>(i)] = fp.point;
+      crossed[static_cast<std::size_t>(i)] = fp.crossed;
+      if (!fp.crossed) r.uncrossedFace = true;
+    }
+    for (int a = 0; a < 3; ++a) {
+      env.edgeStart[a] = g[a] + start[a];
+      env.edgeEnd[a] = g[a] + start[a] + (a == axis ? s : 0);
+    }
+    // Edge point v_e: the crossing on the edge, kept off its ends.
+    r.edgePoint = env.edgeStart;
+    double t = source.crossing ? source.crossing(leafIndex, e) : 0.5 * s;
+    if (!std::isfinite(t)) t = 0.5 * s;
+    const double m = kInteriorMargin * s;
+    r.edgePoint[axis] = env.edgeStart[axis] + std::clamp(t, m, s - m);
+    r.how = chooseTriangulation(env, crossed, intersectionFree);
+    if (intersectionFree) r.crossed = crossed;
+    out.records.push_back(r);
+  }
+}
+
+VertexAdder appendingTo(mesh::Mesh& mesh, std::uint32_t base) {
+  return [&mesh, base](const Vec3d& p) {
+    mesh.positions.push_back({static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])});
+    return base + static_cast<std::uint32_t>(mesh.positions.size() - 1);
+  };
+}
+
+std::size_t emitEdgeRecord(const EdgeRecord& r, const std::function<std::uint32_t(std::int64_t leaf)>& cellVertex,
+                           const VertexAdder& addVertex, FaceVertexMap& faceVertices,
+                           std::vector<mesh::Triangle>& triangles) {
+  const int k = r.cellCount;
+  std::array<std::uint32_t, 9> index{};
+  for (int i = 0; i < k; ++i) {
+    index[static_cast<std::size_t>(i)] = cellVertex(r.cells[static_cast<std::size_t>(i)]);
+    if (r.crossed[static_cast<std::size_t>(i)]) continue;
+    auto [it, inserted] = faceVertices.try_emplace(r.faces[static_cast<std::size_t>(i)], 0u);
+    if (inserted) it->second = addVertex(r.facePoints[static_cast<std::size_t>(i)]);
+    index[static_cast<std::size_t>(kFaceVertex + i)] = it->second;
+  }
+  if (r.how.fan) index[kEdgeVertex] = addVertex(r.edgePoint);
+  thread_local std::vector<std::array<int, 3>> local;
+  triangulateEdge(k, r.crossed, r.how, local);
+  for (const auto& t : local)
+    triangles.push_back({index[static_cast<std::size_t>(t[0])], index[static_cast<std::size_t>(t[1])],
+                              index[static_cast<std::size_t>(t[2])]});
+  return local.size();
+}
+
+}  // namespace isovdb::contour

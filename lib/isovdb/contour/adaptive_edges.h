@@ -1,0 +1,93 @@
+/// @file adaptive_edges.h
+/// @brief The per-edge routine of adaptive mode, shared by a meta-cell's
+///        contouring and by seam stitching: find the sign-changing minimal
+///        edges a leaf owns, build their Ju–Udeshi envelopes, and turn them
+///        into triangles (paper 000, sections 4.2.3.2 and 4.3).
+///
+/// The routine sees an octree only through AdaptiveTree: a LinearOctree (a
+/// meta-cell's, or the partial edge-octree of a seam) plus, per leaf, its
+/// cell point and the crossings on its edges. Faces are named by global
+/// coordinates (FaceKey), so the face point v_f of a face that two passes
+/// share (a meta-cell and a seam) becomes one mesh vertex.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <vector>
+
+#include "isovdb/contour/ju_udeshi.h"
+#include "isovdb/contour/seam_cell.h"
+#include "isovdb/mesh/mesh.h"
+#include "isovdb/octree/linear_octree.h"
+
+namespace isovdb::contour {
+
+/// Cell vertices and edge points keep this fraction of the cell / edge size
+/// away from the cell boundary / edge ends, so that the envelopes are not
+/// degenerate (the dual vertex solver returns points in the closed cell).
+inline constexpr double kInteriorMargin = 1e-3;
+
+/// An octree as the edge routine sees it.
+struct AdaptiveTree {
+  const octree::LinearOctree* tree = nullptr;
+  std::array<int, 3> origin{0, 0, 0};       ///< global index coordinate of the tree's offset (0, 0, 0)
+  const std::vector<char>* hasVertex = nullptr;     ///< per leaf: it has a dual vertex
+  const std::vector<Vec3d>* cellPoints = nullptr;   ///< per leaf: v_c, global coordinates, strictly inside
+  /// Crossing on edge e of leaf l, in voxels from the edge's start corner; NaN if unknown (mid-edge is used).
+  std::function<double(std::size_t leaf, int edge)> crossing;
+  /// Which edges to contour, by start (tree offsets) and axis; empty = every edge with all leaves around.
+  std::function<bool(const std::array<int, 3>& start, int axis)> inRegion;
+  /// The tree holds only a seam's kept cells (stitch/): a place without a leaf is a finer
+  /// leaf without a sign change, so an edge next to it is not minimal.
+  bool partial = false;
+};
+
+/// One sign-changing minimal edge, ready to be triangulated.
+struct EdgeRecord {
+  int cellCount = 0;
+  std::array<std::int64_t, 4> cells{};    ///< leaf indices in polygon order (outward orientation)
+  std::array<FaceKey, 4> faces{};         ///< the minimal face between cell i and i + 1
+  std::array<Vec3d, 4> facePoints{};
+  Vec3d edgePoint{0, 0, 0};
+  std::array<bool, 4> crossed{true, true, true, true};  ///< per face: the cell-to-cell segment crosses it
+  EdgeTriangulation how;
+  bool uncrossedFace = false;  ///< a face's cell-to-cell segment misses it
+};
+
+/// Records of one leaf's owned edges plus its skip counters.
+struct LeafEdges {
+  std::vector<EdgeRecord> records;
+  std::int32_t boundary = 0;       ///< owned edges with a leaf missing around (left to stitching)
+  std::int32_t withoutVertex = 0;  ///< owned edges with a leaf around that has no vertex
+};
+
+/// @brief v_c of a leaf: its dual vertex clamped strictly inside the cell
+///        (global coordinates; `treeOrigin` = global coordinate of the tree's offset 0).
+Vec3d cellPointInside(const mesh::Vec3f& vertex, const octree::OctreeLeaf& leaf, const std::array<int, 3>& treeOrigin);
+
+/// @brief The sign-changing minimal edges that `leafIndex` owns (the first
+///        quadrant around the edge holding a leaf of the edge's size), with
+///        their envelopes and triangulations.
+void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool intersectionFree, LeafEdges& out);
+
+/// Mesh vertices of the face points v_f that polygons go through, by face.
+using FaceVertexMap = std::map<FaceKey, std::uint32_t>;
+
+/// Adds a mesh vertex and returns its id.
+using VertexAdder = std::function<std::uint32_t(const Vec3d& position)>;
+
+/// @brief Appends the triangles of `record` to `triangles`.
+/// @param cellVertex  the mesh vertex of a leaf (the caller adds it on first use).
+/// @param addVertex  adds face points (first use of a face) and edge points (fans).
+/// @param faceVertices  face points already in the mesh; new ones are added to both.
+/// @return the number of triangles appended.
+std::size_t emitEdgeRecord(const EdgeRecord& record, const std::function<std::uint32_t(std::int64_t leaf)>& cellVertex,
+                           const VertexAdder& addVertex, FaceVertexMap& faceVertices,
+                           std::vector<mesh::Triangle>& triangles);
+
+/// @brief A VertexAdder that appends to `mesh.positions` (ids = positions' indices + `base`).
+VertexAdder appendingTo(mesh::Mesh& mesh, std::uint32_t base = 0);
+
+}  // namespace isovdb::contour

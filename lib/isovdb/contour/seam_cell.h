@@ -1,0 +1,96 @@
+/// @file seam_cell.h
+/// @brief What one meta-cell's contouring hands to seam stitching: the surface
+///        leaves around its deferred edges, with their dual vertices, and the
+///        face points it already made into mesh vertices (paper 000, section 4.3).
+///
+/// A meta-cell's contourer skips every sign-changing edge that lies on the
+/// meta-cell's boundary (some of the leaves around it belong to a neighbour)
+/// and keeps, as SeamCells, its leaves that have a sign change and touch the
+/// boundary: exactly the leaves that can lie around such an edge (a leaf with
+/// equal corner signs has no crossing on its faces, see octree/criteria.h).
+/// Everything else is freed with the meta-cell.
+///
+/// Unlike the paper, edges of boundary leaves that lie inside the meta-cell
+/// are contoured with the meta-cell, not deferred: our meta-cell samples carry
+/// an apron (octree/meta_cell_samples.h), so a boundary leaf's Prewitt
+/// normals, dual vertices and (regular mode) Wenger grouping are already exact
+/// there, and the stitcher needs only the vertices, never the samples.
+///
+/// Vertex ids are local to the meta-cell's mesh until the pipeline appends it
+/// to the output; it then offsets them (rebaseSeam) so they become output ids.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "isovdb/mesh/mesh.h"
+#include "isovdb/octree/morton.h"
+
+namespace isovdb::contour {
+
+/// Id of a vertex not (yet) in the output.
+inline constexpr std::uint32_t kNoVertex = std::numeric_limits<std::uint32_t>::max();
+
+/// A surface leaf kept for stitching.
+struct SeamCell {
+  octree::MortonKey key = octree::kInvalidKey;  ///< key under its meta-cell's root
+  std::array<int, 3> origin{0, 0, 0};           ///< min corner, global voxel index coordinates
+  int size = 0;                                  ///< side in voxels
+  std::uint8_t cornerSigns = 0;                  ///< bit c set iff corner c is inside
+
+  /// Regular mode: Wenger's alternative grouping was used; the cell's dual
+  /// vertices are firstVertex + g for the groups g of dmcEntry(cornerSigns, alternative).
+  bool alternative = false;
+  /// Regular: id of the first dual vertex. Adaptive: id of the cell's vertex, or
+  /// kNoVertex until a polygon uses it (the stitcher then adds cellPoint).
+  std::uint32_t firstVertex = kNoVertex;
+  /// Regular: positions of the (up to 4) dual vertices, for the choice of quad diagonals.
+  std::array<mesh::Vec3f, 4> positions{};
+  /// Adaptive: the cell vertex as the envelopes use it (double precision, strictly inside the cell).
+  std::array<double, 3> cellPoint{0, 0, 0};
+  /// Adaptive: crossing of each bipolar cell edge as a fraction of the edge (NaN for the others),
+  /// for the edge points of Ju–Udeshi fans.
+  std::array<float, 12> edgeCrossing{};
+};
+
+/// A minimal face in global voxel index coordinates: the square of side `size`
+/// on the plane x[axis] = min[axis] whose min corner is `min`.
+struct FaceKey {
+  std::array<int, 3> min{0, 0, 0};
+  std::int32_t size = 0;
+  std::int32_t axis = 0;
+  friend auto operator<=>(const FaceKey&, const FaceKey&) = default;
+};
+
+/// A face point v_f that became a mesh vertex, on a face touching the meta-cell boundary.
+struct SeamFace {
+  FaceKey face;
+  std::uint32_t vertex = kNoVertex;
+};
+
+/// Everything one meta-cell leaves to the stitcher.
+struct MetaCellSeam {
+  std::vector<SeamCell> cells;   ///< in the Z order of the meta-cell's octree
+  std::vector<SeamFace> faces;   ///< adaptive only
+};
+
+/// @brief Adds `base` to every vertex id of `seam` (when its mesh is appended after `base` vertices).
+void rebaseSeam(MetaCellSeam& seam, std::uint32_t base) noexcept;
+
+/// @brief The mesh of one meta-cell and what it leaves to the stitcher.
+struct MetaCellMesh {
+  mesh::Mesh mesh;   ///< global voxel index coordinates; ids local to this mesh
+  MetaCellSeam seam;
+};
+
+/// @brief True if the cell [origin, origin + size] touches the boundary of the
+///        meta-cell [0, metaCellSize]^3 (meta-cell offsets).
+inline bool touchesMetaCellBoundary(const std::array<int, 3>& origin, int size, int metaCellSize) noexcept {
+  for (int a = 0; a < 3; ++a)
+    if (origin[a] == 0 || origin[a] + size == metaCellSize) return true;
+  return false;
+}
+
+}  // namespace isovdb::contour

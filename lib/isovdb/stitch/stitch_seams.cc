@@ -1,0 +1,146 @@
+#include "isovdb/stitch/stitch_seams.h"
+
+#include <cmath>
+#include <vector>
+
+#include "isovdb/contour/adaptive_edges.h"
+#include "isovdb/contour/regular_contour.h"
+#include "isovdb/octree/morton.h"
+
+namespace isovdb::stitch {
+
+namespace {
+
+using contour::SeamCell;
+using octree::LinearOctree;
+
+/// Regular mode: the quad of every bipolar edge the seam owns, by its owner (the leaf in quadrant 3).
+void stitchRegular(const Seam& seam, const EdgeOctree& edgeTree, int s, mesh::Mesh& out, StitchStats& stats) {
+  const LinearOctree& tree = edgeTree.tree;
+  for (std::size_t i = 0; i < tree.leafCount(); ++i) {
+    const octree::OctreeLeaf& leaf = tree.leaf(i);
+    const std::uint16_t bipolar = octree::bipolarEdgeMask(leaf.cornerSigns);
+    for (int axis = 0; axis < 3; ++axis) {
+      if (((bipolar >> (4 * axis)) & 1) == 0 || !seam.ownsEdge(leaf.origin, axis, s)) continue;
+      const auto around = tree.leavesAroundEdge(leaf.origin, axis);
+      std::array<std::uint32_t, 4> v{};
+      std::array<mesh::Vec3f, 4> p{};
+      bool complete = true;
+      for (int q = 0; q < 4 && complete; ++q) {
+        const std::int64_t j = around[static_cast<std::size_t>(q)];
+        if (j == LinearOctree::kNone) {
+          complete = false;
+          break;
+        }
+        const SeamCell& cell = *edgeTree.cells[static_cast<std::size_t>(j)];
+        const int g = contour::regularVertexOfEdge(cell.cornerSigns, cell.alternative, axis, q);
+        if (g < 0 || cell.size != leaf.size) {
+          complete = false;
+          break;
+        }
+        v[static_cast<std::size_t>(q)] = cell.firstVertex + static_cast<std::uint32_t>(g);
+        p[static_cast<std::size_t>(q)] = cell.positions[static_cast<std::size_t>(g)];
+      }
+      if (!complete) {
+        ++stats.missingCells;
+        continue;
+      }
+      const auto triangles = contour::regularEdgeQuad(v, p, axis, (leaf.cornerSigns & 1) != 0);
+      out.triangles.insert(out.triangles.end(), triangles.begin(), triangles.end());
+      ++stats.edges;
+    }
+  }
+}
+
+/// Adaptive mode: the minimal edges the seam owns, with Ju–Udeshi envelopes; cell
+/// vertices the meta-cells did not use yet are added on first use.
+void stitchAdaptive(const Seam& seam, const EdgeOctree& edgeTree, int s, bool intersectionFree,
+                    const contour::VertexAdder& addVertex, contour::FaceVertexMap& faceVertices, mesh::Mesh& out,
+                    StitchStats& stats) {
+  const LinearOctree& tree = edgeTree.tree;
+  const std::size_t n = tree.leafCount();
+  std::vector<char> hasVertex(n, 1);
+  std::vector<contour::Vec3d> cellPoints(n);
+  for (std::size_t i = 0; i < n; ++i) cellPoints[i] = edgeTree.cells[i]->cellPoint;
+  const contour::AdaptiveTree source{
+      .tree = &tree,
+      .origin = tree.origin(),
+      .hasVertex = &hasVertex,
+      .cellPoints = &cellPoints,
+      .crossing = [&](std::size_t leaf, int e) -> double {
+        return static_cast<double>(edgeTree.cells[leaf]->edgeCrossing[static_cast<std::size_t>(e)]);
+      },
+      .inRegion = [&](const std::array<int, 3>& start, int axis) { return seam.ownsEdge(start, axis, s); },
+      .partial = true};
+  const auto cellVertex = [&](std::int64_t leaf) {
+    SeamCell& cell = *edgeTree.cells[static_cast<std::size_t>(leaf)];
+    if (cell.firstVertex == contour::kNoVertex) cell.firstVertex = addVertex(cell.cellPoint);
+    return cell.firstVertex;
+  };
+  contour::LeafEdges edges;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (tree.leaf(i).bipolarEdges() == 0) continue;
+    edges.records.clear();
+    contour::collectMinimalEdges(source, i, intersectionFree, edges);
+    for (const contour::EdgeRecord& r : edges.records) {
+      contour::emitEdgeRecord(r, cellVertex, addVertex, faceVertices, out.triangles);
+      ++stats.edges;
+      if (r.how.fan) ++stats.fannedEdges;
+    }
+  }
+  stats.missingCells += edges.boundary + edges.withoutVertex;
+}
+
+}  // namespace
+
+void SeamStore::add(const MetaCellIndex& index, contour::MetaCellSeam seam) {
+  cells_ += seam.cells.size();
+  seams_[{index[2], index[1], index[0]}] = std::move(seam);
+}
+
+contour::MetaCellSeam* SeamStore::find(const MetaCellIndex& index) {
+  const auto it = seams_.find({index[2], index[1], index[0]});
+  return it == seams_.end() ? nullptr : &it->second;
+}
+
+void stitchSeams(SeamStore& store, const StitchOptions& options, std::uint32_t vertexBase, mesh::Mesh& out,
+                 StitchStats* stats, Interrupter* interrupter) {
+  ProgressStage progress(interrupter, "stitching seams");
+  StitchStats local;
+  local.seamCells = static_cast<std::int64_t>(store.cellCount());
+  const int s = options.metaCellSize;
+  const contour::VertexAdder addVertex = contour::appendingTo(out, vertexBase);
+  contour::FaceVertexMap faceVertices;
+  for (const auto& [zyx, seam] : store.byZyx())
+    for (const contour::SeamFace& face : seam.faces) faceVertices.emplace(face.face, face.vertex);
+
+  auto stitch = [&](const Seam& seam) {
+    const std::vector<int> octants = seam.octants();
+    std::vector<std::vector<SeamCell>*> around;
+    for (const int o : octants) {
+      const MetaCellIndex index{seam.reference[0] + (o & 1), seam.reference[1] + ((o >> 1) & 1),
+                                seam.reference[2] + ((o >> 2) & 1)};
+      contour::MetaCellSeam* m = store.find(index);
+      if (!m || m->cells.empty()) return;  // a sign change on the seam would have made it a contoured meta-cell
+      around.push_back(&m->cells);
+    }
+    const EdgeOctree edgeTree = buildEdgeOctree(seam, around, s);
+    if (options.method == StitchMethod::Regular) stitchRegular(seam, edgeTree, s, out, local);
+    else stitchAdaptive(seam, edgeTree, s, options.intersectionFree, addVertex, faceVertices, out, local);
+    ++(seam.kind == Seam::Kind::Face ? local.metaFaces : local.metaEdges);
+  };
+
+  std::size_t visited = 0;
+  const std::size_t total = store.metaCellCount();
+  std::vector<MetaCellIndex> references;
+  references.reserve(total);
+  for (const auto& [zyx, seam] : store.byZyx()) references.push_back({zyx[2], zyx[1], zyx[0]});
+  for (const MetaCellIndex& reference : references) {
+    for (int axis = 0; axis < 3; ++axis) stitch(Seam{Seam::Kind::Face, reference, axis});
+    for (int axis = 0; axis < 3; ++axis) stitch(Seam{Seam::Kind::Edge, reference, axis});
+    progress.update(static_cast<double>(++visited), static_cast<double>(total));
+  }
+  if (stats) *stats = local;
+}
+
+}  // namespace isovdb::stitch
