@@ -2,9 +2,14 @@
 
 #include <tbb/parallel_for.h>
 
+#include <cmath>
+#include <sstream>
+
 #include "isovdb/contour/vdb_mesher.h"
 #include "isovdb/errors.h"
 #include "isovdb/pipeline/load_volume.h"
+#include "isovdb/volume/ingest.h"
+#include "isovdb/volume/sampled_box.h"
 
 namespace isovdb::pipeline {
 
@@ -66,6 +71,14 @@ void indexToWorld(mesh::Mesh& mesh, const volume::Geometry& geometry) {
 
 mesh::Mesh extractMesh(const volume::Volume& volume, const ExtractOptions& options, Interrupter* interrupter,
                        Statistics* stats) {
+  const float deadBand = volume::deadBandOf(volume);
+  if (volume.kind() == volume::VolumeKind::Scalar && std::abs(options.iso) < deadBand)
+  {
+    std::ostringstream message;
+    message << "'" << volume.name() << "': --iso " << options.iso << " lies inside the dead band |value| < "
+            << deadBand << " (--clip): choose |iso| >= clip or a smaller --clip";
+    throw InputError(message.str());
+  }
   const volume::Volume field = toContourable(volume, options.distance, interrupter, stats);
   mesh::Mesh mesh;
   if (options.method == ContourMethod::Vdb) {
@@ -77,9 +90,15 @@ mesh::Mesh extractMesh(const volume::Volume& volume, const ExtractOptions& optio
     octree.iso = static_cast<float>(options.iso);
     mesh = contourWithOctree(field, octree, interrupter, stats);
   }
+  const std::optional<volume::IndexBox> box = volume::sampledBox(volume);
+  const std::int64_t dropped = box ? applyDataBoundary(mesh, *box, options.boundary) : 0;
   indexToWorld(mesh, field.geometry());
   if (stats) {
     Statistics::Json& section = (*stats)["contour"];
+    if (box) {
+      section["boundary"] = std::string(boundaryModeName(options.boundary));
+      section["cap_triangles_dropped"] = dropped;
+    }
     section["method"] = std::string(contourMethodName(options.method));
     section["iso"] = options.iso;
     if (options.method == ContourMethod::Vdb) section["adaptivity"] = options.adaptivity;

@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "isovdb/mesh/mesh.h"
+#include "isovdb/pipeline/data_boundary.h"
 #include "isovdb/pipeline/octree_contour.h"
 #include "isovdb/pipeline/statistics.h"
 #include "isovdb/progress.h"
@@ -37,6 +38,9 @@ struct ExtractOptions {
   volume::DistanceFieldOptions distance;
   /// `regular` and `adaptive` methods (iso and method are taken from above).
   OctreeContourOptions octree;
+  /// Surfaces reaching the sampled data's boundary: capped there (closed mesh) or
+  /// left open on it (data_boundary.h). Volumes without a sampled box are left as contoured.
+  BoundaryMode boundary = BoundaryMode::Cap;
 };
 
 /// A mask becomes its distance field; distance fields and scalars pass through.
@@ -44,8 +48,10 @@ volume::Volume toContourable(const volume::Volume& volume, const volume::Distanc
                              Interrupter* interrupter = nullptr, Statistics* stats = nullptr);
 
 /// Contours `volume` (any kind) and returns the mesh in world space
-/// (Volume::geometry() applied), outward-oriented. Records timings and counts in `stats`.
-/// @throw InputError for invalid options; Interrupted on cancellation.
+/// (Volume::geometry() applied), outward-oriented, with `options.boundary` applied
+/// on the volume's sampled box. Records timings and counts in `stats`.
+/// @throw InputError for invalid options, or an iso inside a scalar's dead band
+///        (|iso| < clip: the surface would follow clipped samples); Interrupted on cancellation.
 mesh::Mesh extractMesh(const volume::Volume& volume, const ExtractOptions& options,
                        Interrupter* interrupter = nullptr, Statistics* stats = nullptr);
 
