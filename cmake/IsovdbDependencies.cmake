@@ -8,3 +8,12 @@ find_package(ZLIB REQUIRED)
 find_package(CLI11 QUIET CONFIG)
 find_package(nlohmann_json 3 REQUIRED)
 find_package(CGAL REQUIRED)
+# SEG-Y reading: segyio's C library (Debian libsegyio-dev). Its packaged CMake
+# config lacks the per-configuration file, so the target is made here.
+find_path(SEGYIO_INCLUDE_DIR segyio/segy.h REQUIRED)
+find_library(SEGYIO_LIBRARY segyio REQUIRED)
+if(NOT TARGET isovdb_segyio)
+  add_library(isovdb_segyio UNKNOWN IMPORTED)
+  set_target_properties(isovdb_segyio PROPERTIES IMPORTED_LOCATION "${SEGYIO_LIBRARY}"
+    INTERFACE_INCLUDE_DIRECTORIES "${SEGYIO_INCLUDE_DIR}" INTERFACE_LINK_LIBRARIES m)
+endif()

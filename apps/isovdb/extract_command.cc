@@ -14,7 +14,7 @@ namespace isovdb::cli {
 
 void addExtractCommand(CLI::App& app, Context& context) {
   struct State {
-    std::string input, output, statsPath, method = "vdb";
+    std::string input, output, statsPath, method = "vdb", boundary = "cap";
     InputFlags flags;
     pipeline::ExtractOptions options;
     bool check = false;
@@ -22,7 +22,7 @@ void addExtractCommand(CLI::App& app, Context& context) {
   };
   auto state = std::make_shared<State>();
   CLI::App* command = app.add_subcommand("extract", "Volume -> triangle mesh (.ply or .obj)");
-  command->add_option("IN", state->input, "Volume file (.raw, .nrrd, .nhdr, .mhd, .mha, .vdb)")->required();
+  command->add_option("IN", state->input, "Volume file (.raw, .nrrd, .nhdr, .mhd, .mha, .sgy, .segy, .vdb)")->required();
   command->add_option("-o,--output", state->output, "Output mesh (.ply binary, or .obj)")->required();
   command->add_option("--method", state->method, "Contouring method: vdb (OpenVDB volumeToMesh), regular (manifold DMC), adaptive (DC + Ju-Udeshi)")
       ->capture_default_str();
@@ -63,6 +63,10 @@ void addExtractCommand(CLI::App& app, Context& context) {
       ->capture_default_str();
   command->add_flag("!--no-intersection-free", state->options.octree.intersectionFree,
                     "adaptive: plain dual contouring without Ju-Udeshi fans (for comparison)");
+  command->add_option("--boundary", state->boundary,
+                      "Surfaces reaching the data boundary (survey edge): cap (closed mesh, caps on the boundary) "
+                      "or open (caps dropped, the mesh ends on the boundary)")
+      ->capture_default_str();
   command->add_flag("--check", state->check, "Validate the mesh (closed, manifold, self-intersections, Euler)");
   command->add_flag("--no-self-intersections", state->noSelfIntersections,
                     "With --check: skip the self-intersection test");
@@ -73,6 +77,9 @@ void addExtractCommand(CLI::App& app, Context& context) {
     const auto method = pipeline::parseContourMethod(state->method);
     if (!method) throw InputError("--method: unknown method '" + state->method + "', expected vdb, regular or adaptive");
     state->options.method = *method;
+    const auto boundary = pipeline::parseBoundaryMode(state->boundary);
+    if (!boundary) throw InputError("--boundary: unknown mode '" + state->boundary + "', expected cap or open");
+    state->options.boundary = *boundary;
     if (!io::isMeshPath(state->output))
       throw InputError("'" + state->output + "': unknown mesh format, expected .ply or .obj");
     io::AtomicFile::checkWritable(state->output);

@@ -13,8 +13,9 @@ void addInfoCommand(CLI::App& app, Context& context) {
     std::string statsPath;
   };
   auto state = std::make_shared<State>();
-  CLI::App* command = app.add_subcommand("info", "Describe a volume: header, active voxels, leaves, tiles, memory");
-  command->add_option("IN", state->input, "Volume file (.raw, .nrrd, .nhdr, .mhd, .mha, .vdb)")->required();
+  CLI::App* command = app.add_subcommand("info", "Describe a volume: header (SEG-Y geometry), value range and percentiles, fraction active for --clip, "
+      "active voxels, leaves, tiles, memory");
+  command->add_option("IN", state->input, "Volume file (.raw, .nrrd, .nhdr, .mhd, .mha, .sgy, .segy, .vdb)")->required();
   command->add_option("--stats", state->statsPath, "Also write the figures as JSON");
   state->flags.add(*command);
   command->callback([state, &context] {
@@ -25,7 +26,9 @@ void addInfoCommand(CLI::App& app, Context& context) {
       for (const io::VdbGridInfo& grid : io::listVdbGrids(state->input))
         grids.push_back({{"name", grid.name}, {"value_type", grid.valueType}, {"class", grid.gridClass}});
     }
-    pipeline::loadVolume(state->input, state->flags.toOptions(state->input), context.interrupter(), &stats);
+    pipeline::InputOptions options = state->flags.toOptions(state->input);
+    options.sampleStatistics = !pipeline::isVdbPath(state->input);  // range, percentiles, active fraction
+    pipeline::loadVolume(state->input, options, context.interrupter(), &stats);
     stats.recordMemory();
     if (!state->statsPath.empty()) stats.write(state->statsPath);
     printStatistics(stats);

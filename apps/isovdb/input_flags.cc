@@ -16,12 +16,13 @@ void InputFlags::add(CLI::App& command) {
       ->delimiter(',');
   command.add_flag("--scalar", scalar, "Contour the samples as a scalar field at --iso instead of a mask");
   command.add_option("--grid", grid, ".vdb inputs: name of the grid to read (default: first float/bool grid)");
+  seismic.add(command);
 }
 
 pipeline::InputOptions InputFlags::toOptions(const std::string& path) const {
   pipeline::InputOptions options;
   options.denseAs = scalar ? pipeline::DenseAs::Scalar : pipeline::DenseAs::Mask;
-  options.rule.threshold = threshold;
+  options.rule.threshold = threshold.value_or(0.0);
   options.rule.labels = labels;
   options.gridName = grid;
   if (!dims.empty() || !type.empty()) {
@@ -39,6 +40,7 @@ pipeline::InputOptions InputFlags::toOptions(const std::string& path) const {
     raw.headerBytes = headerBytes;
     options.raw = raw;
   }
+  seismic.apply(path, threshold.has_value() || !labels.empty(), options);
   return options;
 }
 

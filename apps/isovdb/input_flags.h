@@ -5,10 +5,12 @@
 
 #include <CLI/CLI.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "isovdb/pipeline/load_volume.h"
+#include "seismic_flags.h"
 
 namespace isovdb::cli {
 
@@ -18,10 +20,11 @@ struct InputFlags {
   bool bigEndian = false;
   std::vector<double> spacing;
   std::int64_t headerBytes = 0;
-  double threshold = 0.0;
+  std::optional<double> threshold;
   std::vector<double> labels;
   bool scalar = false;
   std::string grid;
+  SeismicFlags seismic;
 
   /// Registers the flags on a subcommand (`prefix` distinguishes a second input).
   void add(CLI::App& command);

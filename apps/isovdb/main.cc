@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   cli::addExtractCommand(app, context);
   cli::addCheckCommand(app, context);
   cli::addOctreeCommand(app, context);
+  cli::addConvertCommand(app, context);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

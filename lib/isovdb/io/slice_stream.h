@@ -4,6 +4,9 @@
 /// Coordinates: voxel (x, y, z) with x fastest, as in raw, NRRD and MetaImage
 /// files. `spacing` and `origin` map index space to world space:
 /// world = origin + spacing * index (axis-aligned; rotations are not supported).
+/// A stream's axes are the file's storage order; `gridAxis` says which axis of
+/// the sparse grid each one becomes (the identity for dense files; SEG-Y stores
+/// traces, samples fastest, and its samples become the grid's z).
 #pragma once
 
 #include <array>
@@ -22,6 +25,9 @@ struct VolumeHeader {
   bool bigEndian = false;                     ///< byte order of the file's samples
   std::array<double, 3> spacing{1.0, 1.0, 1.0};  ///< world units per voxel
   std::array<double, 3> origin{0.0, 0.0, 0.0};   ///< world position of voxel (0,0,0)
+  /// Grid axis (0 = x, 1 = y, 2 = z) of each stream axis: a permutation of {0, 1, 2}.
+  /// dims, spacing and origin are per stream axis; ingest permutes them.
+  std::array<int, 3> gridAxis{0, 1, 2};
 
   std::int64_t sliceSamples() const { return dims[0] * dims[1]; }
 };

@@ -4,10 +4,14 @@
 #include <tbb/parallel_for.h>
 
 #include <optional>
+#include <cmath>
+#include <sstream>
 
 #include "isovdb/contour/vdb_mesher.h"
 #include "isovdb/errors.h"
 #include "isovdb/pipeline/load_volume.h"
+#include "isovdb/volume/ingest.h"
+#include "isovdb/volume/sampled_box.h"
 
 namespace isovdb::pipeline {
 
@@ -72,21 +76,45 @@ void extractInto(const volume::Volume& volume, const ExtractOptions& options, me
   if (options.threads < 0) throw InputError("--threads: expected 0 (every core) or more, got " + std::to_string(options.threads));
   std::optional<tbb::global_control> threads;
   if (options.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, options.threads);
+  const float deadBand = volume::deadBandOf(volume);
+  if (volume.kind() == volume::VolumeKind::Scalar && std::abs(options.iso) < deadBand)
+  {
+    std::ostringstream message;
+    message << "'" << volume.name() << "': --iso " << options.iso << " lies inside the dead band |value| < "
+            << deadBand << " (--clip): choose |iso| >= clip or a smaller --clip";
+    throw InputError(message.str());
+  }
   const volume::Volume field = toContourable(volume, options.distance, interrupter, stats);
+  // Caps are flattened piece by piece (the mesh still streams); dropping them
+  // (Open) needs the whole mesh, so it is collected first.
+  const std::optional<volume::IndexBox> box = volume::sampledBox(volume);
+  const bool open = box && options.boundary == BoundaryMode::Open;
+  mesh::MeshCollector whole;
+  CappingSink capped(open ? static_cast<mesh::MeshSink&>(whole) : sink, box);
   if (options.method == ContourMethod::Vdb) {
     Statistics::StageTimer timer(stats, "contour");
     const mesh::Mesh mesh =
         contour::contourWithOpenVdb(field, {.iso = options.iso, .adaptivity = options.adaptivity}, interrupter);
-    sink.addVertices(mesh.positions);
-    sink.addTriangles(mesh.triangles);
+    capped.addVertices(mesh.positions);
+    capped.addTriangles(mesh.triangles);
   } else {
     OctreeContourOptions octree = options.octree;
     octree.method = options.method == ContourMethod::Regular ? OctreeMethod::Regular : OctreeMethod::Adaptive;
     octree.iso = static_cast<float>(options.iso);
-    contourWithOctree(field, octree, sink, interrupter, stats);
+    contourWithOctree(field, octree, capped, interrupter, stats);
+  }
+  std::int64_t dropped = 0;
+  if (open) {
+    dropped = applyDataBoundary(whole.mesh, *box, BoundaryMode::Open);
+    sink.addVertices(whole.mesh.positions);
+    sink.addTriangles(whole.mesh.triangles);
   }
   if (stats) {
     Statistics::Json& section = (*stats)["contour"];
+    if (box) {
+      section["boundary"] = std::string(boundaryModeName(options.boundary));
+      section["cap_triangles_dropped"] = dropped;
+    }
     section["method"] = std::string(contourMethodName(options.method));
     section["iso"] = options.iso;
     if (options.method == ContourMethod::Vdb) section["adaptivity"] = options.adaptivity;

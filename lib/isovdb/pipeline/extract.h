@@ -9,6 +9,7 @@
 
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/mesh/mesh_sink.h"
+#include "isovdb/pipeline/data_boundary.h"
 #include "isovdb/pipeline/octree_contour.h"
 #include "isovdb/pipeline/statistics.h"
 #include "isovdb/progress.h"
@@ -40,6 +41,9 @@ struct ExtractOptions {
   OctreeContourOptions octree;
   /// Worker threads for the whole job (TBB); 0 = every core. The output does not depend on it.
   int threads = 0;
+  /// Surfaces reaching the sampled data's boundary: capped there (closed mesh) or
+  /// left open on it (data_boundary.h). Volumes without a sampled box are left as contoured.
+  BoundaryMode boundary = BoundaryMode::Cap;
 };
 
 /// A mask becomes its distance field; distance fields and scalars pass through.
@@ -47,8 +51,10 @@ volume::Volume toContourable(const volume::Volume& volume, const volume::Distanc
                              Interrupter* interrupter = nullptr, Statistics* stats = nullptr);
 
 /// Contours `volume` (any kind) and returns the mesh in world space
-/// (Volume::geometry() applied), outward-oriented. Records timings and counts in `stats`.
-/// @throw InputError for invalid options; Interrupted on cancellation.
+/// (Volume::geometry() applied), outward-oriented, with `options.boundary` applied
+/// on the volume's sampled box. Records timings and counts in `stats`.
+/// @throw InputError for invalid options, or an iso inside a scalar's dead band
+///        (|iso| < clip: the surface would follow clipped samples); Interrupted on cancellation.
 mesh::Mesh extractMesh(const volume::Volume& volume, const ExtractOptions& options,
                        Interrupter* interrupter = nullptr, Statistics* stats = nullptr);
 

@@ -2,8 +2,11 @@
 
 #include <string>
 
+#include "isovdb/errors.h"
 #include "isovdb/io/dense_volume.h"
 #include "isovdb/io/path_util.h"
+#include "isovdb/io/sample_statistics.h"
+#include "isovdb/io/segy_metadata.h"
 #include "isovdb/io/vdb_file.h"
 #include "isovdb/volume/ingest.h"
 
@@ -28,6 +31,75 @@ void recordGridStats(const volume::Volume& volume, Statistics::Json& section) {
   }
 }
 
+namespace {
+
+Statistics::Json lineAxisJson(const io::SegyLineAxis& axis) {
+  return {{"first", axis.first}, {"last", axis.last()}, {"step", axis.step}, {"count", axis.count},
+          {"spacing", axis.spacing}};
+}
+
+Statistics::Json segyJson(const io::SegyGeometry& g) {
+  Statistics::Json json = Statistics::Json::object();
+  json["sample_format"] = io::segyFormatName(g.formatCode);
+  json["byte_order"] = g.littleEndian ? "little-endian" : "big-endian";
+  json["sorting"] = g.sorting == io::SegySorting::Inline ? "inline" : "crossline";
+  json["header_bytes"] = {{"inline", g.bytes.inlineByte}, {"crossline", g.bytes.crosslineByte}};
+  json["traces"] = g.traces;
+  json["missing_traces"] = g.missingTraces;
+  json["inlines"] = lineAxisJson(g.inlines);
+  json["crosslines"] = lineAxisJson(g.crosslines);
+  json["samples"] = g.samples;
+  json["sample_interval_us"] = g.sampleIntervalUs;
+  json["first_sample_ms"] = g.firstSampleMs;
+  json["spacing_from_cdp_coordinates"] = g.spacingFromCoordinates;
+  json["origin_cdp"] = g.originCdp;
+  json["rotation_deg"] = g.rotationDegrees;
+  return json;
+}
+
+Statistics::Json samplesJson(const io::SampleStatistics& statistics) {
+  const io::SampleSummary& s = statistics.summary();
+  Statistics::Json json = Statistics::Json::object();
+  json["count"] = s.samples;
+  json["holes"] = s.holes;
+  json["min"] = s.minValue;
+  json["max"] = s.maxValue;
+  Statistics::Json& percentiles = json["percentiles"];
+  for (const double p : {1.0, 5.0, 25.0, 50.0, 75.0, 95.0, 99.0})
+    percentiles["p" + std::to_string(static_cast<int>(p))] = statistics.percentile(p);
+  Statistics::Json& magnitudes = json["abs_percentiles"];
+  for (const double p : {50.0, 75.0, 90.0, 95.0, 99.0})
+    magnitudes["p" + std::to_string(static_cast<int>(p))] = statistics.absPercentile(p);
+  json["clip"] = s.clip;
+  json["active_fraction"] = s.activeFraction();
+  return json;
+}
+
+/// Ingests a stream as a mask or a scalar field, gathering sample statistics on the way when asked.
+volume::Volume ingest(io::SliceStream& stream, const InputOptions& options, Interrupter* interrupter,
+                      Statistics::Json& input) {
+  std::optional<io::SampleStatistics> statistics;
+  std::optional<io::ObservedSliceStream> observed;
+  io::SliceStream* source = &stream;
+  if (options.sampleStatistics) {
+    statistics.emplace(options.clip);
+    source = &observed.emplace(stream, *statistics);
+  }
+  volume::Volume result;
+  if (options.denseAs == DenseAs::Mask) {
+    input["mask_rule"] = options.rule.describe();
+    result = volume::ingestMask(*source, options.rule, interrupter);
+  } else {
+    if (options.clip < 0) throw InputError("--clip: must be >= 0, got " + std::to_string(options.clip));
+    if (options.clip > 0) input["clip"] = options.clip;
+    result = volume::ingestScalar(*source, {.background = options.clip, .deadBand = options.clip}, interrupter);
+  }
+  if (statistics) input["samples"] = samplesJson(*statistics);
+  return result;
+}
+
+}  // namespace
+
 volume::Volume loadVolume(const std::filesystem::path& path, const InputOptions& options,
                           Interrupter* interrupter, Statistics* stats) {
   Statistics::StageTimer timer(stats, "read");
@@ -37,18 +109,19 @@ volume::Volume loadVolume(const std::filesystem::path& path, const InputOptions&
   if (isVdbPath(path)) {
     input["format"] = "vdb";
     result = io::readVdb(path, options.gridName);
+  } else if (options.segy || io::isSegyPath(path)) {
+    const std::unique_ptr<io::SegyStream> stream = io::openSegy(path, options.segy.value_or(io::SegyOptions{}));
+    input["format"] = "segy";
+    input["segy"] = segyJson(stream->geometry());
+    result = ingest(*stream, options, interrupter, input);
+    io::recordSegyMetadata(result, stream->geometry());
   } else {
     std::unique_ptr<io::SliceStream> stream = io::openDenseVolume(path, options.raw);
     const io::VolumeHeader& header = stream->header();
     input["format"] = "dense";
     input["dims"] = header.dims;
     input["sample_type"] = std::string(io::sampleTypeName(header.sampleType));
-    if (options.denseAs == DenseAs::Mask) {
-      input["mask_rule"] = options.rule.describe();
-      result = volume::ingestMask(*stream, options.rule, interrupter);
-    } else {
-      result = volume::ingestScalar(*stream, {}, interrupter);
-    }
+    result = ingest(*stream, options, interrupter, input);
   }
   recordGridStats(result, input);
   if (stats) (*stats)["input"] = input;

@@ -1,5 +1,5 @@
 /// @file load_volume.h
-/// @brief Opens any supported input (raw, NRRD, MetaImage, .vdb) as a sparse Volume.
+/// @brief Opens any supported input (raw, NRRD, MetaImage, SEG-Y, .vdb) as a sparse Volume.
 #pragma once
 
 #include <filesystem>
@@ -7,6 +7,7 @@
 #include <string>
 
 #include "isovdb/io/raw_reader.h"
+#include "isovdb/io/segy_reader.h"
 #include "isovdb/pipeline/statistics.h"
 #include "isovdb/progress.h"
 #include "isovdb/volume/mask_rule.h"
@@ -22,14 +23,25 @@ enum class DenseAs {
 
 struct InputOptions {
   std::optional<io::RawOptions> raw;  ///< dims and type of a headerless raw file
+  /// Read as SEG-Y, with these header byte positions; .sgy/.segy files are SEG-Y
+  /// without it (with the default positions).
+  std::optional<io::SegyOptions> segy;
   DenseAs denseAs = DenseAs::Mask;
   volume::MaskRule rule;              ///< inside test for DenseAs::Mask
+  /// DenseAs::Scalar: clip value. Samples with |value| < clip stay inactive and the
+  /// grid's background is the clip value (a quiet amplitude cube costs little).
+  /// 0 keeps every sample.
+  float clip = 0.f;
+  /// Also record the samples' range, percentiles and the fraction |value| >= clip
+  /// under "input.samples" (gathered during the same read; 12 MiB of histograms).
+  bool sampleStatistics = false;
   std::string gridName;               ///< .vdb: grid to read (empty: first float/bool grid)
 };
 
-/// Reads `path` into a Volume, streaming dense files slab by slab. Records the
-/// input's figures (format, dimensions, active voxels, leaves, tiles, memory)
-/// in `stats` under "input".
+/// Reads `path` into a Volume, streaming dense files slab by slab and SEG-Y files
+/// line by line (its survey geometry goes into the grid's metadata). Records the
+/// input's figures (format, dimensions, SEG-Y geometry, active voxels, leaves,
+/// tiles, memory) in `stats` under "input".
 /// @throw IoError (missing file), InputError (bad header or data; names the file).
 volume::Volume loadVolume(const std::filesystem::path& path, const InputOptions& options,
                           Interrupter* interrupter = nullptr, Statistics* stats = nullptr);

@@ -5,10 +5,13 @@
 #include <openvdb/tools/Prune.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "isovdb/volume/grids.h"
+#include "isovdb/volume/sampled_box.h"
 
 namespace isovdb::volume {
 
@@ -16,9 +19,38 @@ namespace {
 
 constexpr int kLeafDim = 8;  // OpenVDB leaf nodes are 8^3
 constexpr int kPruneEvery = 128;  // level-1 internal nodes span 128 voxels
+constexpr const char* kDeadBandKey = "isovdb_dead_band";
+
+/// Maps stream coordinates (x fastest, z = slice) to grid coordinates (VolumeHeader::gridAxis).
+struct AxisMap {
+  std::array<int, 3> gridAxis;
+  openvdb::Coord operator()(int x, int y, int z) const {
+    openvdb::Coord c;
+    c[gridAxis[0]] = x;
+    c[gridAxis[1]] = y;
+    c[gridAxis[2]] = z;
+    return c;
+  }
+};
 
 Geometry geometryOf(const io::VolumeHeader& header) {
-  return Geometry{.spacing = header.spacing, .origin = header.origin};
+  Geometry geometry;
+  for (int a = 0; a < 3; ++a) {
+    geometry.spacing[header.gridAxis[a]] = header.spacing[a];
+    geometry.origin[header.gridAxis[a]] = header.origin[a];
+  }
+  return geometry;
+}
+
+/// Records the file's dims, in grid axes, as the volume's sampled box.
+Volume withSampledBox(Volume volume, const io::VolumeHeader& header) {
+  IndexBox box;
+  for (int a = 0; a < 3; ++a) {
+    box.min[header.gridAxis[a]] = 0;
+    box.max[header.gridAxis[a]] = static_cast<int>(header.dims[a] - 1);
+  }
+  setSampledBox(volume, box);
+  return volume;
 }
 
 /// Reads up to 8 slices into `slab` (x fastest, then y, then z) and returns how many.
@@ -54,10 +86,10 @@ enum class BlockState : std::uint8_t { Empty, Tile, Leaf };
 template <typename TreeT, typename TileValue>
 void insertBlocks(TreeT& tree, const std::vector<BlockState>& state,
                   std::vector<typename TreeT::LeafNodeType*>& leaves, int blocksX, std::int64_t z0,
-                  TileValue&& tileValue) {
+                  const AxisMap& toGrid, TileValue&& tileValue) {
   for (std::size_t b = 0; b < state.size(); ++b) {
-    const openvdb::Coord origin(static_cast<int>(b % blocksX) * kLeafDim,
-                                static_cast<int>(b / blocksX) * kLeafDim, static_cast<int>(z0));
+    const openvdb::Coord origin = toGrid(static_cast<int>(b % blocksX) * kLeafDim,
+                                         static_cast<int>(b / blocksX) * kLeafDim, static_cast<int>(z0));
     if (state[b] == BlockState::Tile) tree.addTile(1, origin, tileValue(b), true);
     if (state[b] == BlockState::Leaf) {
       tree.addLeaf(leaves[b]);
@@ -73,6 +105,10 @@ void checkDims(const io::SliceStream& stream) {
     if (dims[a] <= 0 || dims[a] > kMaxDim)
       throw InputError("'" + stream.source() + "': dimension " + std::to_string(a) + " is " +
                        std::to_string(dims[a]) + ", expected 1.." + std::to_string(kMaxDim));
+  std::array<int, 3> axes = stream.header().gridAxis;
+  std::sort(axes.begin(), axes.end());
+  if (axes != std::array<int, 3>{0, 1, 2})
+    throw InputError("'" + stream.source() + "': grid axes are not a permutation of x, y, z");
 }
 
 }  // namespace
@@ -85,6 +121,7 @@ Volume ingestMask(io::SliceStream& stream, const MaskRule& rule, Interrupter* in
   const int blocksX = static_cast<int>((nx + kLeafDim - 1) / kLeafDim);
   const int blocksY = static_cast<int>((ny + kLeafDim - 1) / kLeafDim);
 
+  const AxisMap toGrid{header.gridAxis};
   auto grid = MaskGrid::create(false);
   MaskGrid::TreeType& tree = grid->tree();
   std::vector<float> slice(static_cast<std::size_t>(nx * ny));
@@ -112,24 +149,22 @@ Volume ingestMask(io::SliceStream& stream, const MaskRule& rule, Interrupter* in
           state[b] = BlockState::Tile;
         } else {
           state[b] = BlockState::Leaf;
-          auto* leaf = new MaskGrid::TreeType::LeafNodeType(
-              openvdb::Coord(r.x0, r.y0, static_cast<int>(z0)), false, false);
+          auto* leaf = new MaskGrid::TreeType::LeafNodeType(toGrid(r.x0, r.y0, static_cast<int>(z0)), false, false);
           for (int z = 0; z < r.depth; ++z)
             for (int y = r.y0; y < r.y1; ++y)
               for (int x = r.x0; x < r.x1; ++x)
-                if (inside[(z * ny + y) * nx + x])
-                  leaf->setValueOn(openvdb::Coord(x, y, static_cast<int>(z0) + z), true);
+                if (inside[(z * ny + y) * nx + x]) leaf->setValueOn(toGrid(x, y, static_cast<int>(z0) + z), true);
           leaves[b] = leaf;
         }
       }
     });
-    insertBlocks(tree, state, leaves, blocksX, z0, [](std::size_t) { return true; });
+    insertBlocks(tree, state, leaves, blocksX, z0, toGrid, [](std::size_t) { return true; });
     if ((z0 + kLeafDim) % kPruneEvery == 0) openvdb::tools::prune(tree);
     progress.update(static_cast<double>(z0 + depth), static_cast<double>(nz));
   }
   openvdb::tools::prune(tree);
   grid->setName("mask");
-  return Volume(VolumeKind::Mask, grid, geometryOf(header), stream.source());
+  return withSampledBox(Volume(VolumeKind::Mask, grid, geometryOf(header), stream.source()), header);
 }
 
 Volume ingestScalar(io::SliceStream& stream, const ScalarIngestOptions& options,
@@ -141,6 +176,7 @@ Volume ingestScalar(io::SliceStream& stream, const ScalarIngestOptions& options,
   const int blocksX = static_cast<int>((nx + kLeafDim - 1) / kLeafDim);
   const int blocksY = static_cast<int>((ny + kLeafDim - 1) / kLeafDim);
 
+  const AxisMap toGrid{header.gridAxis};
   auto grid = FieldGrid::create(options.background);
   FieldGrid::TreeType& tree = grid->tree();
   std::vector<float> slice(static_cast<std::size_t>(nx * ny));
@@ -149,6 +185,8 @@ Volume ingestScalar(io::SliceStream& stream, const ScalarIngestOptions& options,
   std::vector<BlockState> state(leaves.size());
   std::vector<float> tileValue(leaves.size());
   const float tol = options.tolerance;
+  const float deadBand = options.deadBand;
+  const auto isActive = [deadBand](float v) { return !std::isnan(v) && !(std::abs(v) < deadBand); };
 
   for (std::int64_t z0 = 0; z0 < nz; z0 += kLeafDim) {
     const int depth = readSlab(stream, slice, [&](int z, const std::vector<float>& values) {
@@ -158,40 +196,57 @@ Volume ingestScalar(io::SliceStream& stream, const ScalarIngestOptions& options,
       for (int bx = 0; bx < blocksX; ++bx) {
         const BlockRange r = blockRange(header, bx, by, depth);
         const std::size_t b = static_cast<std::size_t>(by) * blocksX + bx;
-        float lo = slab[(0 * ny + r.y0) * nx + r.x0], hi = lo;
+        int active = 0;
+        float lo = std::numeric_limits<float>::max(), hi = std::numeric_limits<float>::lowest();
         for (int z = 0; z < r.depth; ++z)
           for (int y = r.y0; y < r.y1; ++y)
             for (int x = r.x0; x < r.x1; ++x) {
               const float v = slab[(z * ny + y) * nx + x];
+              if (!isActive(v)) continue;
+              ++active;
               lo = std::min(lo, v);
               hi = std::max(hi, v);
             }
-        const bool constant = hi - lo <= tol;
-        if (constant && std::abs(lo - options.background) <= tol && std::abs(hi - options.background) <= tol) {
+        const bool all = active == r.depth * (r.y1 - r.y0) * (r.x1 - r.x0);
+        const bool constant = all && hi - lo <= tol;
+        if (active == 0 ||
+            (constant && std::abs(lo - options.background) <= tol && std::abs(hi - options.background) <= tol)) {
           state[b] = BlockState::Empty;
         } else if (constant && r.complete()) {
           state[b] = BlockState::Tile;
           tileValue[b] = lo;
         } else {
           state[b] = BlockState::Leaf;
-          auto* leaf = new FieldGrid::TreeType::LeafNodeType(
-              openvdb::Coord(r.x0, r.y0, static_cast<int>(z0)), options.background, false);
+          auto* leaf = new FieldGrid::TreeType::LeafNodeType(toGrid(r.x0, r.y0, static_cast<int>(z0)),
+                                                             options.background, false);
           for (int z = 0; z < r.depth; ++z)
             for (int y = r.y0; y < r.y1; ++y)
-              for (int x = r.x0; x < r.x1; ++x)
-                leaf->setValueOn(openvdb::Coord(x, y, static_cast<int>(z0) + z),
-                                 slab[(z * ny + y) * nx + x]);
+              for (int x = r.x0; x < r.x1; ++x) {
+                const float v = slab[(z * ny + y) * nx + x];
+                if (isActive(v)) leaf->setValueOn(toGrid(x, y, static_cast<int>(z0) + z), v);
+              }
           leaves[b] = leaf;
         }
       }
     });
-    insertBlocks(tree, state, leaves, blocksX, z0, [&](std::size_t b) { return tileValue[b]; });
+    insertBlocks(tree, state, leaves, blocksX, z0, toGrid, [&](std::size_t b) { return tileValue[b]; });
     if ((z0 + kLeafDim) % kPruneEvery == 0) openvdb::tools::prune(tree, tol);
     progress.update(static_cast<double>(z0 + depth), static_cast<double>(nz));
   }
   openvdb::tools::prune(tree, tol);
   grid->setName("field");
-  return Volume(VolumeKind::Scalar, grid, geometryOf(header), stream.source());
+  if (deadBand > 0) grid->insertMeta(kDeadBandKey, openvdb::FloatMetadata(deadBand));
+  return withSampledBox(Volume(VolumeKind::Scalar, grid, geometryOf(header), stream.source()), header);
+}
+
+}  // namespace isovdb::volume
+
+namespace isovdb::volume {
+
+float deadBandOf(const Volume& volume) {
+  if (!volume.grid()) return 0.f;
+  const auto meta = volume.grid()->getMetadata<openvdb::FloatMetadata>(kDeadBandKey);
+  return meta ? meta->value() : 0.f;
 }
 
 }  // namespace isovdb::volume

@@ -5,7 +5,9 @@
 /// the dense volume is never held. Homogeneous 8^3 blocks become tiles of the
 /// level-1 internal nodes, homogeneous 128^3 blocks become tiles of the level-2
 /// nodes (pruned every 128 slices), so the grid's size follows the surface.
-/// Output is in voxel index space; the file's spacing/origin go to Volume::geometry().
+/// Output is in voxel index space, axes permuted by VolumeHeader::gridAxis; the
+/// file's spacing/origin go to Volume::geometry() and its dims to sampledBox().
+/// Mask ingest: NaN samples (holes) are outside.
 #pragma once
 
 #include "isovdb/io/slice_stream.h"
@@ -27,11 +29,20 @@ struct ScalarIngestOptions {
   /// Blocks whose values differ from one another by at most this much collapse
   /// into tiles. 0 keeps the data exactly.
   float tolerance = 0.f;
+  /// Dead band: samples with |value| < deadBand stay inactive (they read as the
+  /// background), so a mostly quiet amplitude cube costs little. 0 keeps every
+  /// sample. Seismic cubes use background = deadBand = the clip value.
+  float deadBand = 0.f;
 };
 
 /// Scalar field: a FloatGrid holding the samples, constant blocks as tiles.
+/// NaN samples (holes: SEG-Y positions without a trace) stay inactive. The dead
+/// band, when > 0, is recorded in the grid's metadata (deadBandOf()).
 /// @throw InputError / IoError from the stream; Interrupted on cancellation.
 Volume ingestScalar(io::SliceStream& stream, const ScalarIngestOptions& options = {},
                     Interrupter* interrupter = nullptr);
+
+/// The dead band a Scalar volume was ingested with (0 when none).
+float deadBandOf(const Volume& volume);
 
 }  // namespace isovdb::volume

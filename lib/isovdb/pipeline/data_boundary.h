@@ -1,0 +1,58 @@
+/// @file data_boundary.h
+/// @brief What a mesh does where its surface reaches the boundary of the sampled data
+///        (the survey boundary of a seismic cube, the faces of a dense volume).
+///
+/// Outside the sampled box counts as outside the object (the quiet side of an
+/// amplitude, the background of a mask), so every contouring method closes a
+/// surface that leaves the data with a cap just beyond the last samples. Here
+/// that cap is either flattened onto the boundary or dropped:
+/// - Cap: vertices beyond the box are moved onto it (clamped per axis). The mesh
+///   stays closed and its caps lie exactly on the box faces.
+/// - Open: the same, then the cap triangles (all three vertices on one box face)
+///   are dropped and unused vertices removed. The mesh's boundary edges lie on
+///   the box faces, and only there.
+/// The box is the sampled box's sample positions, [min, max] in index space: the
+/// outermost traces and samples, not half a voxel beyond.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+#include "isovdb/mesh/mesh.h"
+#include "isovdb/mesh/mesh_sink.h"
+#include "isovdb/volume/sampled_box.h"
+
+namespace isovdb::pipeline {
+
+enum class BoundaryMode {
+  Cap,   ///< closed mesh, caps flattened onto the data boundary
+  Open,  ///< caps dropped: the mesh ends on the data boundary
+};
+
+/// "cap" or "open"; std::nullopt otherwise.
+std::optional<BoundaryMode> parseBoundaryMode(std::string_view name);
+std::string_view boundaryModeName(BoundaryMode mode);
+
+/// Applies `mode` to a mesh in index space (before indexToWorld). Normals of moved
+/// vertices are kept. Returns the number of triangles dropped (0 for Cap).
+/// O(triangles + vertices).
+std::int64_t applyDataBoundary(mesh::Mesh& mesh, const volume::IndexBox& box, BoundaryMode mode);
+
+/// Cap mode piece by piece: clamps the positions of every batch into the box
+/// (when there is one) and forwards everything to `target`, so a streamed mesh
+/// gets the same caps as applyDataBoundary(..., Cap) would give it.
+class CappingSink final : public mesh::MeshSink {
+ public:
+  CappingSink(mesh::MeshSink& target, std::optional<volume::IndexBox> box) : target_(target), box_(box) {}
+  void addVertices(std::span<const mesh::Vec3f> positions) override;
+  void addTriangles(std::span<const mesh::Triangle> triangles) override { target_.addTriangles(triangles); }
+  std::uint64_t vertexCount() const override { return target_.vertexCount(); }
+  std::uint64_t triangleCount() const override { return target_.triangleCount(); }
+
+ private:
+  mesh::MeshSink& target_;
+  std::optional<volume::IndexBox> box_;
+};
+
+}  // namespace isovdb::pipeline
