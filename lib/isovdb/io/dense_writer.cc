@@ -1,12 +1,12 @@
 #include "isovdb/io/dense_writer.h"
 
-#include <bit>
 #include <cstring>
 #include <sstream>
 #include <vector>
 
 #include "isovdb/errors.h"
 #include "isovdb/io/atomic_file.h"
+#include "isovdb/io/little_endian.h"
 #include "isovdb/io/path_util.h"
 #include "isovdb/volume/grids.h"
 #include "isovdb/volume/sampled_box.h"
@@ -38,16 +38,15 @@ template <typename GridT, typename ToFloat>
 void writeSamples(AtomicFile& file, const GridT& grid, const volume::IndexBox& box, ToFloat&& toFloat) {
   typename GridT::ConstAccessor accessor = grid.getConstAccessor();
   const std::size_t nx = static_cast<std::size_t>(box.max[0] - box.min[0] + 1);
-  std::vector<float> row(nx);
-  std::vector<std::uint32_t> bytes(nx);
+  std::vector<char> bytes;
+  bytes.reserve(nx * sizeof(float));
   for (int z = box.min[2]; z <= box.max[2]; ++z)
     for (int y = box.min[1]; y <= box.max[1]; ++y) {
-      for (std::size_t i = 0; i < nx; ++i) {
-        const float v = toFloat(accessor.getValue(openvdb::Coord(box.min[0] + static_cast<int>(i), y, z)));
-        const auto b = std::bit_cast<std::uint32_t>(v);
-        bytes[i] = std::endian::native == std::endian::little ? b : __builtin_bswap32(b);
-      }
-      file.write(bytes.data(), bytes.size() * sizeof(std::uint32_t));
+      bytes.clear();
+      for (std::size_t i = 0; i < nx; ++i)
+        appendLittleEndian(bytes, static_cast<float>(toFloat(accessor.getValue(
+                                      openvdb::Coord(box.min[0] + static_cast<int>(i), y, z)))));
+      file.write(bytes.data(), bytes.size());
     }
 }
 

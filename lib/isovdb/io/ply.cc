@@ -16,6 +16,7 @@
 
 #include "isovdb/errors.h"
 #include "isovdb/io/atomic_file.h"
+#include "isovdb/io/little_endian.h"
 #include "isovdb/io/mesh_write_check.h"
 #include "isovdb/io/sample_type.h"
 
@@ -45,22 +46,21 @@ class BlockWriter {
   void put(const void* data, std::size_t bytes) {
     const auto* p = static_cast<const char*>(data);
     buffer_.insert(buffer_.end(), p, p + bytes);
-    if (buffer_.size() >= kBlock) flush();
+    flushIfFull();
   }
-  void putUInt8(std::uint8_t v) { put(&v, 1); }
-  void put32(std::uint32_t v) {
-    if constexpr (!kNativeLittle) v = byteswap32(v);
-    put(&v, 4);
+  template <class T>
+  void putLittleEndian(T value) {
+    appendLittleEndian(buffer_, value);
+    flushIfFull();
   }
-  void putFloat(float f) { put32(std::bit_cast<std::uint32_t>(f)); }
   void flush() {
     file_.write(buffer_.data(), buffer_.size());
     buffer_.clear();
   }
 
  private:
-  static std::uint32_t byteswap32(std::uint32_t v) {
-    return (v >> 24) | ((v >> 8) & 0xff00u) | ((v << 8) & 0xff0000u) | (v << 24);
+  void flushIfFull() {
+    if (buffer_.size() >= kBlock) flush();
   }
   static constexpr std::size_t kBlock = std::size_t{1} << 20;
   AtomicFile& file_;
@@ -478,27 +478,37 @@ std::string readWholeFile(const std::filesystem::path& path) {
 
 }  // namespace
 
+namespace detail {
+
+std::string binaryPlyHeader(std::uint64_t vertices, std::uint64_t triangles, bool normals, std::size_t padding) {
+  std::string header = "ply\nformat binary_little_endian 1.0\ncomment written by isovdb\n";
+  if (padding > 0) header += "comment " + std::string(padding, ' ') + "\n";
+  header += "element vertex " + std::to_string(vertices) + "\n";
+  header += "property float x\nproperty float y\nproperty float z\n";
+  if (normals) header += "property float nx\nproperty float ny\nproperty float nz\n";
+  header += "element face " + std::to_string(triangles) + "\n";
+  header += "property list uchar uint vertex_indices\nend_header\n";
+  return header;
+}
+
+}  // namespace detail
+
 void writePly(const std::filesystem::path& path, const Mesh& mesh) {
   checkMesh(path, mesh);
   const bool normals = !mesh.normals.empty();
-  std::string header = "ply\nformat binary_little_endian 1.0\ncomment written by isovdb\n";
-  header += "element vertex " + std::to_string(mesh.positions.size()) + "\n";
-  header += "property float x\nproperty float y\nproperty float z\n";
-  if (normals) header += "property float nx\nproperty float ny\nproperty float nz\n";
-  header += "element face " + std::to_string(mesh.triangles.size()) + "\n";
-  header += "property list uchar uint vertex_indices\nend_header\n";
+  const std::string header = detail::binaryPlyHeader(mesh.positions.size(), mesh.triangles.size(), normals);
 
   AtomicFile file(path);
   BlockWriter out(file);
   out.put(header.data(), header.size());
   for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
-    for (const float c : mesh.positions[i]) out.putFloat(c);
+    for (const float c : mesh.positions[i]) out.putLittleEndian(c);
     if (normals)
-      for (const float c : mesh.normals[i]) out.putFloat(c);
+      for (const float c : mesh.normals[i]) out.putLittleEndian(c);
   }
   for (const mesh::Triangle& t : mesh.triangles) {
-    out.putUInt8(3);
-    for (const std::uint32_t v : t) out.put32(v);
+    out.putLittleEndian(std::uint8_t{3});
+    for (const std::uint32_t v : t) out.putLittleEndian(v);
   }
   out.flush();
   file.commit();

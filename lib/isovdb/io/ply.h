@@ -5,7 +5,10 @@
 /// the index-to-world transform before calling writePly().
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
+#include <string>
 
 #include "isovdb/mesh/mesh.h"
 
@@ -45,5 +48,15 @@ void writePly(const std::filesystem::path& path, const mesh::Mesh& mesh);
 ///        malformed data, a face with fewer than three corners, an index out
 ///        of range, a non-finite coordinate
 mesh::Mesh readPly(const std::filesystem::path& path);
+
+namespace detail {
+
+/// @brief The header writePly and PlyStreamWriter write: binary little-endian,
+///        float x y z (+ nx ny nz), uchar/uint face lists. `padding` > 0 adds a
+///        comment line of that many spaces after "comment " (a header whose
+///        size must not change when the counts are rewritten).
+std::string binaryPlyHeader(std::uint64_t vertices, std::uint64_t triangles, bool normals, std::size_t padding = 0);
+
+}  // namespace detail
 
 }  // namespace isovdb::io
