@@ -25,12 +25,12 @@ using octree::OctreeLeaf;
 
 constexpr std::size_t kGrain = 256;
 
-/// Corner sign configuration of a cell from the samples (bit c = corner c inside).
-std::uint8_t cellConfig(const MetaCellSamples& samples, const OctreeLeaf& leaf, float iso) noexcept {
+/// Corner sign configuration of the cell [origin, origin + size] from the samples (bit c = corner c inside).
+std::uint8_t cellConfig(const MetaCellSamples& samples, const std::array<int, 3>& origin, int size, float iso) noexcept {
   std::uint8_t config = 0;
   for (int c = 0; c < 8; ++c) {
-    const std::array<int, 3> p{leaf.origin[0] + (c & 1) * leaf.size, leaf.origin[1] + ((c >> 1) & 1) * leaf.size,
-                               leaf.origin[2] + ((c >> 2) & 1) * leaf.size};
+    const std::array<int, 3> p{origin[0] + (c & 1) * size, origin[1] + ((c >> 1) & 1) * size,
+                               origin[2] + ((c >> 2) & 1) * size};
     if (octree::isInside(samples.value(p), iso)) config = static_cast<std::uint8_t>(config | (1u << c));
   }
   return config;
@@ -55,10 +55,7 @@ double triangleQuality(const mesh::Vec3f& a, const mesh::Vec3f& b, const mesh::V
 int cellConfigAt(const MetaCellSamples& samples, const std::array<int, 3>& origin, int size, float iso) noexcept {
   for (int a = 0; a < 3; ++a)
     if (origin[a] < -samples.apron || origin[a] + size > samples.size + samples.apron) return -1;
-  OctreeLeaf cell;
-  cell.origin = origin;
-  cell.size = size;
-  return cellConfig(samples, cell, iso);
+  return cellConfig(samples, origin, size, iso);
 }
 
 /// Triangles of each leaf's owned edges (up to 3 quads).
@@ -107,7 +104,7 @@ MetaCellMesh contourRegularMetaCell(const MetaCellSamples& samples, const Linear
   std::vector<char> mismatch(n, 0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kGrain), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
-      configs[i] = cellConfig(samples, leaves[i], options.iso);
+      configs[i] = cellConfig(samples, leaves[i].origin, leaves[i].size, options.iso);
       mismatch[i] = configs[i] != leaves[i].cornerSigns;
     }
   });

@@ -130,12 +130,11 @@ void stitchSeams(SeamStore& store, const StitchOptions& options, std::uint32_t v
     ++(seam.kind == Seam::Kind::Face ? local.metaFaces : local.metaEdges);
   };
 
+  // Stitching only changes kept cells (adaptive vertex ids), never the store's map.
   std::size_t visited = 0;
   const std::size_t total = store.metaCellCount();
-  std::vector<MetaCellIndex> references;
-  references.reserve(total);
-  for (const auto& [zyx, seam] : store.byZyx()) references.push_back({zyx[2], zyx[1], zyx[0]});
-  for (const MetaCellIndex& reference : references) {
+  for (const auto& [zyx, seam] : store.byZyx()) {
+    const MetaCellIndex reference{zyx[2], zyx[1], zyx[0]};
     for (int axis = 0; axis < 3; ++axis) stitch(Seam{Seam::Kind::Face, reference, axis});
     for (int axis = 0; axis < 3; ++axis) stitch(Seam{Seam::Kind::Edge, reference, axis});
     progress.update(static_cast<double>(++visited), static_cast<double>(total));

@@ -39,7 +39,6 @@ class SeamStore {
   std::size_t cellCount() const noexcept { return cells_; }
   /// Meta-cells in order (z, y, x).
   const std::map<std::array<int, 3>, contour::MetaCellSeam>& byZyx() const noexcept { return seams_; }
-  std::map<std::array<int, 3>, contour::MetaCellSeam>& byZyx() noexcept { return seams_; }
 
  private:
   std::map<std::array<int, 3>, contour::MetaCellSeam> seams_;  // key (k, j, i)
