@@ -122,6 +122,28 @@ TEST(Criteria, InteriorBlobIsDetectedOnlyWhenAsked) {
   EXPECT_FALSE(without.isHeterogeneous());
 }
 
+TEST(Criteria, BubbleInACellCrossedByTheSurfaceIsHidden) {
+  // A plane crosses the 8-cell (its faces are not one phase, so classifyCell does not
+  // look inside); a 1-voxel outside bubble below it touches no face.
+  MetaCellSamples s = makeMetaCellSamples(16, {0, 0, 0}, [](int, int, int z) { return z - 5.5f; });
+  FaceLabeller labeller;
+  const CellTopology plane = classifyCell(s, {0, 0, 0}, 8, {}, labeller);
+  EXPECT_FALSE(plane.isComplex());
+  EXPECT_FALSE(plane.boundaryUniform);
+  EXPECT_FALSE(hasHiddenComponent(s, {0, 0, 0}, 8, 0.0f));
+  s.value(3, 4, 2) = 1.0f;  // outside, inside the inside half
+  EXPECT_FALSE(classifyCell(s, {0, 0, 0}, 8, {}, labeller).isComplex()) << "the face criteria cannot see it";
+  EXPECT_TRUE(hasHiddenComponent(s, {0, 0, 0}, 8, 0.0f));
+  // On a face it is the face criteria's business, not hidden.
+  s.value(3, 4, 2) = -2.5f;
+  s.value(0, 4, 2) = 1.0f;
+  EXPECT_FALSE(hasHiddenComponent(s, {0, 0, 0}, 8, 0.0f));
+  // An inside speck in the outside half.
+  s.value(4, 4, 7) = -1.0f;
+  EXPECT_TRUE(hasHiddenComponent(s, {0, 0, 0}, 8, 0.0f));
+  EXPECT_FALSE(hasHiddenComponent(s, {0, 0, 0}, 1, 0.0f));
+}
+
 TEST(Criteria, UniformCellIsSimpleAndHomogeneous) {
   const MetaCellSamples s = outsideBlock();
   FaceLabeller labeller;

@@ -89,6 +89,24 @@ TEST(OctreeMethodsRealSample, FrogSkeletonRegularNeedsTheManifoldFix) {
       << "the frog skeleton has 2B/3B cells sharing an ambiguous face: without Wenger's fix it is non-manifold";
 }
 
+TEST(OctreeMethodsRealSample, FrogSkeletonAdaptiveIsClosedManifoldWithRegularsTopology) {
+  // The skeleton is full of 1-voxel ambiguous faces, doubled faces and 1-voxel cavities
+  // inside coarse cells: adaptive mode must come out as closed, manifold and of the same
+  // topology as regular mode, and free of self-intersections.
+  const auto path = test::dataDir() / "frog" / "frogtissue.mhd";
+  InputOptions input;
+  input.rule.labels = {13};
+  const volume::Volume sdf = toContourable(loadVolume(path, input), {});
+  const mesh::MeshReport regular = mesh::validateMesh(contour(sdf, OctreeMethod::Regular), {.selfIntersections = false});
+  const mesh::MeshReport adaptive = mesh::validateMesh(contour(sdf, OctreeMethod::Adaptive));
+  EXPECT_TRUE(adaptive.closed);
+  EXPECT_EQ(adaptive.nonManifoldEdges, 0);
+  EXPECT_EQ(adaptive.selfIntersectingPairs, 0);
+  EXPECT_EQ(adaptive.components, regular.components);
+  EXPECT_EQ(adaptive.eulerCharacteristic, regular.eulerCharacteristic);
+  EXPECT_LT(adaptive.triangles, regular.triangles);
+}
+
 }  // namespace
 }  // namespace isovdb::pipeline
 
@@ -117,6 +135,27 @@ TEST(OctreeMethodsTopology, RegularMeshIsTheSixEighteenReadingPlusTheFixedPairs)
     EXPECT_TRUE(report.manifold) << seed;
     EXPECT_GT(fixedPairs, 0) << seed;
     EXPECT_EQ(report.eulerCharacteristic, 2 * (solid + fixedPairs)) << seed;
+  }
+}
+
+/// Adaptive mode has regular mode's topology on the same voxels: one vertex per DMC
+/// group at the finest level with the same fix, and coarse leaves only where one
+/// vertex stands for a disk.
+TEST(OctreeMethodsTopology, AdaptiveMeshHasRegularsTopologyOnRandomVoxels) {
+  for (unsigned seed : {4u, 5u}) {
+    std::mt19937 random(seed);
+    std::bernoulli_distribution inside(0.35);
+    auto stream = test::VectorSliceStream::fromFunction({24, 24, 24}, [&](int x, int y, int z) {
+      const bool border = x == 0 || y == 0 || z == 0 || x == 23 || y == 23 || z == 23;
+      return !border && inside(random) ? 1.f : 0.f;
+    });
+    const volume::Volume sdf = toContourable(volume::ingestMask(stream, {}), {});
+    const mesh::MeshReport regular = mesh::validateMesh(contour(sdf, OctreeMethod::Regular), {.selfIntersections = false});
+    const mesh::MeshReport adaptive = mesh::validateMesh(contour(sdf, OctreeMethod::Adaptive), {.selfIntersections = false});
+    EXPECT_TRUE(adaptive.closed) << seed;
+    EXPECT_EQ(adaptive.nonManifoldEdges, 0) << seed;
+    EXPECT_EQ(adaptive.components, regular.components) << seed;
+    EXPECT_EQ(adaptive.eulerCharacteristic, regular.eulerCharacteristic) << seed;
   }
 }
 

@@ -11,6 +11,7 @@
 #include "isovdb/contour/adaptive_edges.h"
 #include "isovdb/contour/dual_vertex.h"
 #include "isovdb/contour/edge_intersection.h"
+#include "isovdb/contour/leaf_groups.h"
 #include "isovdb/errors.h"
 #include "isovdb/octree/morton.h"
 
@@ -26,16 +27,18 @@ MetaCellMesh contourAdaptiveMetaCell(const octree::MetaCellSamples& samples, con
   mesh::Mesh& mesh = result.mesh;
   const std::size_t leafCount = tree.leafCount();
   const int metaSize = tree.metaCellSize();
-  const std::vector<DualVertex> vertices = computeLeafVertices(
-      samples, tree, DualVertexOptions{.iso = options.iso, .singularValueThreshold = options.singularValueThreshold});
-  std::vector<Vec3d> cellPoints(leafCount);
-  std::vector<char> hasVertex(leafCount, 0);
+  // One vertex per DMC group (several only at the maximum depth, see octree/build.h),
+  // strictly inside its cell.
+  std::vector<std::uint8_t> configs(leafCount);
+  for (std::size_t i = 0; i < leafCount; ++i) configs[i] = tree.leaf(i).cornerSigns;
+  const LeafGroups groups = groupLeaves(samples, tree, std::move(configs), options.iso, options.manifoldFix);
+  const std::vector<mesh::Vec3f> positions = placeGroupVertices(
+      samples, tree, groups, DualVertexOptions{.iso = options.iso, .singularValueThreshold = options.singularValueThreshold});
+  std::vector<Vec3d> cellPoints(positions.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leafCount, 256), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i)
-      if (vertices[i].valid()) {
-        hasVertex[i] = 1;
-        cellPoints[i] = cellPointInside(vertices[i].position, tree.leaf(i), samples.origin);
-      }
+      for (std::uint32_t v = groups.firstVertex[i]; v < groups.firstVertex[i + 1]; ++v)
+        cellPoints[v] = cellPointInside(positions[v], tree.leaf(i), samples.origin);
   });
   // Crossing on edge e of a leaf, in voxels from the edge's start corner (NaN: none).
   auto crossing = [&](std::size_t leafIndex, int e) -> double {
@@ -48,35 +51,40 @@ MetaCellMesh contourAdaptiveMetaCell(const octree::MetaCellSamples& samples, con
     if (!intersectEdge(samples, start, axis, leaf.size, options.iso, ix)) return std::numeric_limits<double>::quiet_NaN();
     return static_cast<double>(ix.point[axis] - static_cast<float>(start[axis]));
   };
-  const AdaptiveTree source{.tree = &tree, .origin = samples.origin, .hasVertex = &hasVertex,
-                            .cellPoints = &cellPoints, .crossing = crossing, .inRegion = {}};
+  const AdaptiveTree source{.tree = &tree, .origin = samples.origin, .firstVertex = &groups.firstVertex,
+                            .cellPoints = &cellPoints, .alternative = &groups.alternative, .crossing = crossing,
+                            .inRegion = {}};
   std::vector<LeafEdges> perLeaf(leafCount);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leafCount, 64), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i)
       if (tree.leaf(i).bipolarEdges() != 0) collectMinimalEdges(source, i, options.intersectionFree, perLeaf[i]);
   });
 
-  // Seam cells: leaves with a sign change that touch the meta-cell boundary; they keep a vertex.
+  // Seam cells: leaves with a sign change that touch the meta-cell boundary; they keep their vertices.
   std::vector<char> isSeam(leafCount, 0);
   for (std::size_t i = 0; i < leafCount; ++i) {
     const octree::OctreeLeaf& leaf = tree.leaf(i);
-    isSeam[i] = hasVertex[i] && leaf.bipolarEdges() != 0 && touchesMetaCellBoundary(leaf.origin, leaf.size, metaSize);
+    isSeam[i] = groups.vertexCount(i) > 0 && touchesMetaCellBoundary(leaf.origin, leaf.size, metaSize);
   }
 
-  // Vertices: the used leaf vertices in leaf order, then face and edge points in edge order.
-  std::vector<std::uint32_t> leafVertex(leafCount, kNoVertex);
+  // Vertices: the used cell vertices in leaf and group order, then face and edge points in edge order.
+  std::vector<std::uint32_t> meshVertex(cellPoints.size(), kNoVertex);
+  constexpr std::uint32_t kUsed = 0;
   for (const LeafEdges& le : perLeaf) {
     local.boundaryEdges += le.boundary;
     local.edgesWithoutVertex += le.withoutVertex;
     for (const EdgeRecord& r : le.records)
-      for (int i = 0; i < r.cellCount; ++i) leafVertex[static_cast<std::size_t>(r.cells[static_cast<std::size_t>(i)])] = 0;
+      for (std::size_t i = 0; i < static_cast<std::size_t>(r.cellCount); ++i)
+        meshVertex[groups.firstVertex[static_cast<std::size_t>(r.cells[i])] + static_cast<std::size_t>(r.groups[i])] = kUsed;
   }
   const VertexAdder addVertex = appendingTo(mesh);
-  for (std::size_t i = 0; i < leafCount; ++i)
-    if (leafVertex[i] == 0) leafVertex[i] = addVertex(cellPoints[i]);
+  for (std::size_t v = 0; v < cellPoints.size(); ++v)
+    if (meshVertex[v] == kUsed) meshVertex[v] = addVertex(cellPoints[v]);
 
   FaceVertexMap faceVertices;
-  const auto cellVertex = [&](std::int64_t l) { return leafVertex[static_cast<std::size_t>(l)]; };
+  const auto cellVertex = [&](std::int64_t l, int g) {
+    return meshVertex[groups.firstVertex[static_cast<std::size_t>(l)] + static_cast<std::size_t>(g)];
+  };
   for (const LeafEdges& le : perLeaf) {
     for (const EdgeRecord& r : le.records) {
       emitEdgeRecord(r, cellVertex, addVertex, faceVertices, mesh.triangles);
@@ -100,8 +108,12 @@ MetaCellMesh contourAdaptiveMetaCell(const octree::MetaCellSamples& samples, con
     for (int a = 0; a < 3; ++a) cell.origin[a] = samples.origin[a] + leaf.origin[a];
     cell.size = leaf.size;
     cell.cornerSigns = leaf.cornerSigns;
-    cell.firstVertex = leafVertex[i];
-    cell.cellPoint = cellPoints[i];
+    cell.alternative = groups.alternative[i] != 0;
+    for (std::size_t g = 0; g < groups.vertexCount(i); ++g) {
+      cell.vertices[g] = meshVertex[groups.firstVertex[i] + g];
+      const Vec3d& p = cellPoints[groups.firstVertex[i] + g];  // float-exact (cellPointInside)
+      cell.positions[g] = {static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])};
+    }
     for (int e = 0; e < 12; ++e)
       cell.edgeCrossing[static_cast<std::size_t>(e)] =
           ((leaf.bipolarEdges() >> e) & 1) ? static_cast<float>(crossing(i, e)) : std::numeric_limits<float>::quiet_NaN();
@@ -118,6 +130,8 @@ MetaCellMesh contourAdaptiveMetaCell(const octree::MetaCellSamples& samples, con
     if (touches) result.seam.faces.push_back({face, vertex});
   }
   local.seamCells = static_cast<std::int64_t>(result.seam.cells.size());
+  local.manifoldFixes = groups.manifoldFixes;
+  for (std::size_t i = 0; i < leafCount; ++i) local.multiVertexCells += groups.vertexCount(i) > 1;
   if (stats) *stats = local;
   return result;
 }

@@ -3,7 +3,7 @@
 ///        edges (Ju et al. 2002), made intersection-free with the fans of
 ///        Ju & Udeshi 2006 (paper 000, section 4.2.3.2; Tables 5.1–5.2).
 ///
-/// One dual vertex per surface leaf (QEF, kept strictly inside its cell).
+/// One dual vertex per surface leaf and DMC group (QEF, kept strictly inside its cell).
 /// Every sign-changing minimal edge (an edge of a leaf that contains no
 /// smaller leaf edge) gives a polygon through the vertices of the leaves
 /// around it: 4 leaves make a quad, 3 leaves (one of them coarser) a triangle.
@@ -20,12 +20,19 @@
 /// touch the boundary) for stitch/, which contours them with the same per-edge
 /// routine (adaptive_edges.h).
 ///
-/// Topology: one vertex per leaf, so a minimal face whose four corners alternate
-/// in sign (an ambiguous face, 4 bipolar edges) makes its two cells' vertices
-/// share 4 polygons: a non-manifold edge. The criteria of octree/criteria.h do
-/// not flag ambiguous faces as complex (seen once on the salt body at 128^3,
-/// on a 1-voxel face at the maximum depth); such leaves, like complex leaves
-/// at the maximum depth, are where the Euler characteristic may differ.
+/// Topology: one vertex per leaf would let a minimal face whose four corners
+/// alternate in sign (an ambiguous face, 4 bipolar edges) make its two cells'
+/// vertices share 4 polygons: a non-manifold edge. So a leaf has one vertex per
+/// Dual Marching Cubes group of its configuration, with Wenger's fix
+/// (leaf_groups.h), as in regular mode; the adaptive construction subdivides
+/// every coarser cell with several groups or a doubled face (octree/build.h),
+/// so only leaves at the maximum depth have several vertices, and a polygon
+/// uses, in each leaf around its edge, the vertex whose group holds the edge.
+/// Complex leaves at the maximum depth (finest size > 1) are where the Euler
+/// characteristic may still differ. Two sheets through one finest cell each
+/// stay in their own edges' envelopes, but the envelopes of different groups
+/// of one cell are not disjoint, so Ju–Udeshi's guarantee does not cover
+/// them (the validator's exact count is the check).
 ///
 /// Octree: adaptive construction with OctreeOptions::qefTolerance about 0.25
 /// voxel and cells of at most 16 voxels at minDepth (smooth cells with 3-4
@@ -53,6 +60,7 @@ namespace isovdb::contour {
 struct AdaptiveContourOptions {
   float iso = 0.0f;                     ///< isovalue; inside iff value <= iso (must match the octree's)
   bool intersectionFree = true;         ///< Ju–Udeshi fans where needed; false (--no-intersection-free) = plain DC
+  bool manifoldFix = true;              ///< Wenger's fix on doubled ambiguous faces (leaf_groups.h); false only in tests
   float singularValueThreshold = 0.1f;  ///< QEF truncation of the dual vertices (see QefOptions); larger = smoother,
                                         ///< smaller = sharper features but noisier vertices
 };
@@ -69,6 +77,8 @@ struct AdaptiveContourStats {
   std::int64_t boundaryEdges = 0;         ///< sign-changing minimal edges skipped on the meta-cell boundary
   std::int64_t edgesWithoutVertex = 0;    ///< skipped because a leaf around had no dual vertex (should stay 0)
   std::int64_t seamCells = 0;             ///< leaves kept for stitching
+  std::int64_t multiVertexCells = 0;      ///< leaves with more than one vertex (DMC groups, maximum depth only)
+  std::int64_t manifoldFixes = 0;         ///< leaves with Wenger's alternative grouping
 };
 
 /// @brief Contours the octree of one meta-cell (adaptive mode).

@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 
+#include "isovdb/contour/dmc_table.h"
 #include "isovdb/octree/morton.h"
 
 namespace isovdb::contour {
@@ -22,8 +23,12 @@ Vec3d cellPointInside(const mesh::Vec3f& vertex, const OctreeLeaf& leaf, const s
   Vec3d p{};
   const double m = kInteriorMargin * leaf.size;
   for (int a = 0; a < 3; ++a) {
-    const double lo = treeOrigin[a] + leaf.origin[a];
-    p[a] = std::clamp(static_cast<double>(vertex[a]), lo + m, lo + leaf.size - m);
+    const double lo = treeOrigin[a] + leaf.origin[a], hi = lo + leaf.size;
+    // Rounded to the float the mesh stores (and a seam cell keeps), still strictly inside.
+    float x = static_cast<float>(std::clamp(static_cast<double>(vertex[a]), lo + m, hi - m));
+    if (x <= lo) x = std::nextafter(static_cast<float>(lo), static_cast<float>(hi));
+    if (x >= hi) x = std::nextafter(static_cast<float>(hi), static_cast<float>(lo));
+    p[a] = x;
   }
   return p;
 }
@@ -31,7 +36,8 @@ Vec3d cellPointInside(const mesh::Vec3f& vertex, const OctreeLeaf& leaf, const s
 void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool intersectionFree, LeafEdges& out) {
   const LinearOctree& tree = *source.tree;
   const std::vector<Vec3d>& cellPoints = *source.cellPoints;
-  const std::vector<char>& hasVertex = *source.hasVertex;
+  const std::vector<std::uint32_t>& firstVertex = *source.firstVertex;
+  const std::vector<char>& alternative = *source.alternative;
   const OctreeLeaf& leaf = tree.leaf(leafIndex);
   const std::uint16_t bipolar = leaf.bipolarEdges();
   const int s = leaf.size;
@@ -78,17 +84,6 @@ void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool
       ++k;
     }
     if (k > 1 && cells[static_cast<std::size_t>(k - 1)] == cells[0]) --k;
-    bool haveVertices = k >= 3;
-    for (int i = 0; i < k; ++i)
-      if (!hasVertex[static_cast<std::size_t>(cells[static_cast<std::size_t>(i)])]) haveVertices = false;
-    if (!haveVertices) {
-      ++out.withoutVertex;
-      continue;
-    }
-    // Outward orientation: the normal points from the inside end to the outside end.
-    const bool startInside = (leaf.cornerSigns >> c0) & 1;
-    const bool ccw = axis != 1;
-    if (ccw != startInside) std::reverse(cells.begin(), cells.begin() + k);
     // Quadrants of each leaf (bit mask over the 4 quadrants).
     auto quadrantsOf = [&](std::int64_t l) {
       int mask = 0;
@@ -96,17 +91,45 @@ void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool
         if (around[static_cast<std::size_t>(q)] == l) mask |= 1 << q;
       return mask;
     };
+    // The vertex of each leaf that represents this edge: a leaf of the edge's size has the
+    // edge as a cell edge (its group by the DMC table); a coarser leaf has one vertex.
+    std::array<std::int8_t, 4> groups{};
+    bool haveVertices = k >= 3;
+    for (int i = 0; i < k && haveVertices; ++i) {
+      const auto l = static_cast<std::size_t>(cells[static_cast<std::size_t>(i)]);
+      const OctreeLeaf& cell = tree.leaf(l);
+      const int quadrant = std::countr_zero(static_cast<unsigned>(quadrantsOf(cells[static_cast<std::size_t>(i)])));
+      const int g = cell.size == s ? dmcVertexOfEdge(cell.cornerSigns, alternative[l] != 0, axis, quadrant) : 0;
+      haveVertices = g >= 0 && static_cast<std::uint32_t>(g) < firstVertex[l + 1] - firstVertex[l];
+      groups[static_cast<std::size_t>(i)] = static_cast<std::int8_t>(g);
+    }
+    if (!haveVertices) {
+      ++out.withoutVertex;
+      continue;
+    }
+    // Outward orientation: the normal points from the inside end to the outside end.
+    const bool startInside = (leaf.cornerSigns >> c0) & 1;
+    const bool ccw = axis != 1;
+    if (ccw != startInside) {
+      std::reverse(cells.begin(), cells.begin() + k);
+      std::reverse(groups.begin(), groups.begin() + k);
+    }
+    const auto pointOf = [&](int i) -> const Vec3d& {
+      const auto l = static_cast<std::size_t>(cells[static_cast<std::size_t>(i)]);
+      return cellPoints[firstVertex[l] + static_cast<std::size_t>(groups[static_cast<std::size_t>(i)])];
+    };
 
     EdgeRecord r;
     r.cellCount = k;
     r.cells = cells;
+    r.groups = groups;
     EdgeEnvelope env;
     env.cellCount = k;
     std::array<bool, 4> crossed{};
     for (int i = 0; i < k; ++i) {
       const std::int64_t a = cells[static_cast<std::size_t>(i)];
       const std::int64_t b = cells[static_cast<std::size_t>((i + 1) % k)];
-      env.cellPoints[static_cast<std::size_t>(i)] = cellPoints[static_cast<std::size_t>(a)];
+      env.cellPoints[static_cast<std::size_t>(i)] = pointOf(i);
       // The two leaves touch across the quadrant boundary on axis uv[bit].
       const int qa = quadrantsOf(a), qb = quadrantsOf(b);
       int bit = -1, sideA = 0;
@@ -125,6 +148,7 @@ void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool
       FaceKey& key = r.faces[static_cast<std::size_t>(i)];
       key.axis = n;
       key.size = lf.size;
+      key.part = groups[static_cast<std::size_t>(aIsFace ? i : (i + 1) % k)];
       for (int x = 0; x < 3; ++x) key.min[x] = g[x] + lf.origin[x];
       key.min[n] = g[n] + start[n];
       MinimalFace face;
@@ -132,8 +156,8 @@ void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool
       face.coordinate = static_cast<double>(key.min[n]);
       for (int x = 0; x < 3; ++x) face.min[x] = static_cast<double>(key.min[x]);
       face.size = lf.size;
-      const Vec3d& pa = cellPoints[static_cast<std::size_t>(a)];
-      const Vec3d& pb = cellPoints[static_cast<std::size_t>(b)];
+      const Vec3d& pa = pointOf(i);
+      const Vec3d& pb = pointOf((i + 1) % k);
       const FacePoint fp = sideA == 0 ? computeFacePoint(pa, pb, face) : computeFacePoint(pb, pa, face);
       r.facePoints[static_cast<std::size_t>(i)] = fp.point;
       env.facePoints[static_cast<std::size_t>(i)] = fp.point;
@@ -163,13 +187,13 @@ VertexAdder appendingTo(mesh::Mesh& mesh, std::uint32_t base) {
   };
 }
 
-std::size_t emitEdgeRecord(const EdgeRecord& r, const std::function<std::uint32_t(std::int64_t leaf)>& cellVertex,
+std::size_t emitEdgeRecord(const EdgeRecord& r, const CellVertexFn& cellVertex,
                            const VertexAdder& addVertex, FaceVertexMap& faceVertices,
                            std::vector<mesh::Triangle>& triangles) {
   const int k = r.cellCount;
   std::array<std::uint32_t, 9> index{};
   for (int i = 0; i < k; ++i) {
-    index[static_cast<std::size_t>(i)] = cellVertex(r.cells[static_cast<std::size_t>(i)]);
+    index[static_cast<std::size_t>(i)] = cellVertex(r.cells[static_cast<std::size_t>(i)], r.groups[static_cast<std::size_t>(i)]);
     if (r.crossed[static_cast<std::size_t>(i)]) continue;
     auto [it, inserted] = faceVertices.try_emplace(r.faces[static_cast<std::size_t>(i)], 0u);
     if (inserted) it->second = addVertex(r.facePoints[static_cast<std::size_t>(i)]);

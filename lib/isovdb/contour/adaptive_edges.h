@@ -30,11 +30,18 @@ namespace isovdb::contour {
 inline constexpr double kInteriorMargin = 1e-3;
 
 /// An octree as the edge routine sees it.
+///
+/// Vertices: a leaf has one cell vertex per Dual Marching Cubes group of its
+/// configuration (leaf_groups.h): several only at the maximum depth. The
+/// vertex a polygon uses is the one whose group holds the polygon's edge; a
+/// leaf coarser than the edge has a single vertex.
 struct AdaptiveTree {
   const octree::LinearOctree* tree = nullptr;
   std::array<int, 3> origin{0, 0, 0};       ///< global index coordinate of the tree's offset (0, 0, 0)
-  const std::vector<char>* hasVertex = nullptr;     ///< per leaf: it has a dual vertex
-  const std::vector<Vec3d>* cellPoints = nullptr;   ///< per leaf: v_c, global coordinates, strictly inside
+  /// Per leaf + 1: first of the leaf's vertices in `cellPoints` (LeafGroups::firstVertex).
+  const std::vector<std::uint32_t>* firstVertex = nullptr;
+  const std::vector<Vec3d>* cellPoints = nullptr;   ///< per vertex: v_c, global coordinates, strictly inside its cell
+  const std::vector<char>* alternative = nullptr;   ///< per leaf: Wenger's alternative grouping
   /// Crossing on edge e of leaf l, in voxels from the edge's start corner; NaN if unknown (mid-edge is used).
   std::function<double(std::size_t leaf, int edge)> crossing;
   /// Which edges to contour, by start (tree offsets) and axis; empty = every edge with all leaves around.
@@ -48,6 +55,7 @@ struct AdaptiveTree {
 struct EdgeRecord {
   int cellCount = 0;
   std::array<std::int64_t, 4> cells{};    ///< leaf indices in polygon order (outward orientation)
+  std::array<std::int8_t, 4> groups{};    ///< per cell: its vertex (DMC group) that the polygon uses
   std::array<FaceKey, 4> faces{};         ///< the minimal face between cell i and i + 1
   std::array<Vec3d, 4> facePoints{};
   Vec3d edgePoint{0, 0, 0};
@@ -63,7 +71,8 @@ struct LeafEdges {
   std::int32_t withoutVertex = 0;  ///< owned edges with a leaf around that has no vertex
 };
 
-/// @brief v_c of a leaf: its dual vertex clamped strictly inside the cell
+/// @brief v_c of a leaf: its dual vertex clamped strictly inside the cell and rounded
+///        to float, so the mesh vertex, a seam cell's copy and the envelopes agree
 ///        (global coordinates; `treeOrigin` = global coordinate of the tree's offset 0).
 Vec3d cellPointInside(const mesh::Vec3f& vertex, const octree::OctreeLeaf& leaf, const std::array<int, 3>& treeOrigin);
 
@@ -79,11 +88,14 @@ using FaceVertexMap = std::map<FaceKey, std::uint32_t>;
 using VertexAdder = std::function<std::uint32_t(const Vec3d& position)>;
 
 /// @brief Appends the triangles of `record` to `triangles`.
-/// @param cellVertex  the mesh vertex of a leaf (the caller adds it on first use).
+/// @param cellVertex  the mesh vertex of a leaf's group (the caller adds it on first use).
 /// @param addVertex  adds face points (first use of a face) and edge points (fans).
 /// @param faceVertices  face points already in the mesh; new ones are added to both.
 /// @return the number of triangles appended.
-std::size_t emitEdgeRecord(const EdgeRecord& record, const std::function<std::uint32_t(std::int64_t leaf)>& cellVertex,
+/// Mesh vertex of group `group` of leaf `leaf`.
+using CellVertexFn = std::function<std::uint32_t(std::int64_t leaf, int group)>;
+
+std::size_t emitEdgeRecord(const EdgeRecord& record, const CellVertexFn& cellVertex,
                            const VertexAdder& addVertex, FaceVertexMap& faceVertices,
                            std::vector<mesh::Triangle>& triangles);
 

@@ -47,6 +47,17 @@ struct DmcEntry {
 ///        `dmcEntry(config).doubleFace < 0`.
 const DmcEntry& dmcEntry(std::uint8_t config, bool alternative = false) noexcept;
 
+/// @brief Index (0..3) of the dual vertex of a cell with corner signs `config`
+///        (and grouping `alternative`) that represents its cell edge along `axis`
+///        on which the cell sits in quadrant `quadrant` around that edge
+///        (bit 0 = the cell is on the +u side, bit 1 = +v; u < v the other axes);
+///        -1 if that edge is not bipolar.
+inline int dmcVertexOfEdge(std::uint8_t config, bool alternative, int axis, int quadrant) noexcept {
+  // The edge is the cell's local edge 4 * axis + (3 - quadrant): the cell on the
+  // +u side has the edge on its min-u side.
+  return dmcEntry(config, alternative).vertexOfEdge[static_cast<std::size_t>(4 * axis + (3 - quadrant))];
+}
+
 /// @brief True if face f (0..5) of `config` is ambiguous: its inside corners are
 ///        the two ends of one diagonal.
 bool isAmbiguousFace(std::uint8_t config, int face) noexcept;

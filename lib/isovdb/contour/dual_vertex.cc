@@ -49,7 +49,7 @@ DualVertex computeDualVertex(const octree::MetaCellSamples& samples, std::array<
     const float lo = static_cast<float>(cellOrigin[a]), hi = static_cast<float>(cellOrigin[a] + cellSize);
     if (!(x[a] >= lo - kSlack && x[a] <= hi + kSlack)) inside = false;
   }
-  if (!inside) {
+  if (!inside || options.massPointOnly) {
     x = s.massPoint;
     v.massPointFallback = true;
   }

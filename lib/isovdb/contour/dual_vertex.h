@@ -22,6 +22,9 @@ namespace isovdb::contour {
 struct DualVertexOptions {
   float iso = 0.0f;                     ///< isovalue; inside iff value <= iso
   float singularValueThreshold = 0.1f;  ///< QEF truncation, relative to the largest singular value (see QefOptions)
+  /// Skip the QEF: the vertex is the mass point of the crossings. For a cell with several
+  /// sheets (DMC groups), where a QEF minimiser can wander towards another sheet.
+  bool massPointOnly = false;
 };
 
 /// @brief One dual vertex.

@@ -12,6 +12,7 @@
 
 #include "isovdb/contour/dmc_table.h"
 #include "isovdb/contour/dual_vertex.h"
+#include "isovdb/contour/leaf_groups.h"
 #include "isovdb/errors.h"
 #include "isovdb/octree/morton.h"
 
@@ -24,17 +25,6 @@ using octree::MetaCellSamples;
 using octree::OctreeLeaf;
 
 constexpr std::size_t kGrain = 256;
-
-/// Corner sign configuration of the cell [origin, origin + size] from the samples (bit c = corner c inside).
-std::uint8_t cellConfig(const MetaCellSamples& samples, const std::array<int, 3>& origin, int size, float iso) noexcept {
-  std::uint8_t config = 0;
-  for (int c = 0; c < 8; ++c) {
-    const std::array<int, 3> p{origin[0] + (c & 1) * size, origin[1] + ((c >> 1) & 1) * size,
-                               origin[2] + ((c >> 2) & 1) * size};
-    if (octree::isInside(samples.value(p), iso)) config = static_cast<std::uint8_t>(config | (1u << c));
-  }
-  return config;
-}
 
 /// Shape quality of a triangle in [0, 1]: 4 sqrt(3) area / sum of squared edge lengths (1 = equilateral).
 double triangleQuality(const mesh::Vec3f& a, const mesh::Vec3f& b, const mesh::Vec3f& c) noexcept {
@@ -51,13 +41,6 @@ double triangleQuality(const mesh::Vec3f& a, const mesh::Vec3f& b, const mesh::V
   return sum > 0.0 ? 2.0 * std::sqrt(3.0) * area2 / sum : 0.0;
 }
 
-/// Configuration of the cell [origin, origin + size] from the samples, or -1 if it leaves the apron.
-int cellConfigAt(const MetaCellSamples& samples, const std::array<int, 3>& origin, int size, float iso) noexcept {
-  for (int a = 0; a < 3; ++a)
-    if (origin[a] < -samples.apron || origin[a] + size > samples.size + samples.apron) return -1;
-  return cellConfig(samples, origin, size, iso);
-}
-
 /// Triangles of each leaf's owned edges (up to 3 quads).
 struct LeafTriangles {
   std::array<mesh::Triangle, 6> triangles{};
@@ -65,12 +48,6 @@ struct LeafTriangles {
 };
 
 }  // namespace
-
-int regularVertexOfEdge(std::uint8_t config, bool alternative, int axis, int quadrant) noexcept {
-  // The edge is the cell's local edge 4 * axis + (3 - quadrant): the cell on the
-  // +u side has the edge on its min-u side.
-  return dmcEntry(config, alternative).vertexOfEdge[static_cast<std::size_t>(4 * axis + (3 - quadrant))];
-}
 
 std::array<mesh::Triangle, 2> regularEdgeQuad(const std::array<std::uint32_t, 4>& v,
                                               const std::array<mesh::Vec3f, 4>& p, int axis,
@@ -113,55 +90,19 @@ MetaCellMesh contourRegularMetaCell(const MetaCellSamples& samples, const Linear
                      " has corner signs that differ from the samples at iso " + std::to_string(options.iso) +
                      " (octree built with another isovalue)");
 
-  // 2. Wenger's manifold fix: both cells of a doubled ambiguous face take the alternative grouping.
-  // The neighbour across the face is a surface leaf of the same size (regular construction), also
-  // across the meta-cell boundary, so its configuration is read from the samples (apron included).
-  std::vector<char> alternative(n, 0);
-  std::vector<char> beyondApron(n, 0);
-  if (options.manifoldFix) {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kGrain), [&](const tbb::blocked_range<std::size_t>& r) {
-      for (std::size_t i = r.begin(); i != r.end(); ++i) {
-        const int face = dmcEntry(configs[i]).doubleFace;
-        if (face < 0) continue;
-        std::array<int, 3> neighbour = leaves[i].origin;
-        neighbour[static_cast<std::size_t>(face >> 1)] += (face & 1) ? leaves[i].size : -leaves[i].size;
-        const int config = cellConfigAt(samples, neighbour, leaves[i].size, options.iso);
-        if (config < 0) {
-          beyondApron[i] = 1;
-          continue;
-        }
-        alternative[i] = dmcEntry(static_cast<std::uint8_t>(config)).doubleFace == (face ^ 1);
-      }
-    });
-  }
-  auto entryOf = [&](std::size_t i) -> const DmcEntry& { return dmcEntry(configs[i], alternative[i] != 0); };
-
-  // 3. Vertex numbering: leaves in stored order, table groups in order.
-  std::vector<std::uint32_t> vertexBase(n + 1, 0);
-  for (std::size_t i = 0; i < n; ++i) vertexBase[i + 1] = vertexBase[i] + entryOf(i).vertexCount;
-  const std::size_t vertexCount = vertexBase[n];
+  // 2. Grouping with Wenger's manifold fix, and 3. one vertex per group (leaves in stored
+  // order, groups in table order).
+  const LeafGroups groups = groupLeaves(samples, regularTree, std::move(configs), options.iso, options.manifoldFix);
+  const std::vector<std::uint8_t>& config = groups.configs;
+  const std::vector<char>& alternative = groups.alternative;
+  const std::vector<std::uint32_t>& vertexBase = groups.firstVertex;
+  const std::size_t vertexCount = groups.totalVertices();
 
   MetaCellMesh result;
   mesh::Mesh& out = result.mesh;
-  out.positions.resize(vertexCount);
-  const DualVertexOptions vertexOptions{.iso = options.iso, .singularValueThreshold = options.singularValueThreshold};
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kGrain / 4), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t i = r.begin(); i != r.end(); ++i) {
-      const DmcEntry& entry = entryOf(i);
-      const OctreeLeaf& leaf = leaves[i];
-      for (int g = 0; g < entry.vertexCount; ++g) {
-        const DualVertex v = computeDualVertex(samples, leaf.origin, leaf.size, entry.groups[static_cast<std::size_t>(g)],
-                                               vertexOptions);
-        mesh::Vec3f p = v.position;
-        if (!v.valid()) {  // cannot happen for bipolar edges; keep the cell centre rather than garbage
-          for (int a = 0; a < 3; ++a)
-            p[static_cast<std::size_t>(a)] = float(samples.origin[static_cast<std::size_t>(a)] +
-                                                   leaf.origin[static_cast<std::size_t>(a)]) + 0.5f * float(leaf.size);
-        }
-        out.positions[vertexBase[i] + static_cast<std::size_t>(g)] = p;
-      }
-    }
-  });
+  out.positions = placeGroupVertices(
+      samples, regularTree, groups,
+      DualVertexOptions{.iso = options.iso, .singularValueThreshold = options.singularValueThreshold});
 
   // 4. Quads: each interior bipolar edge by its owner leaf (the edge is the owner's local edge 4 * axis,
   // the owner in quadrant 3); edges on the meta-cell boundary are left to stitching.
@@ -169,7 +110,7 @@ MetaCellMesh contourRegularMetaCell(const MetaCellSamples& samples, const Linear
   std::vector<std::int32_t> leafBoundaryEdges(n, 0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kGrain), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
-      const std::uint16_t bipolar = octree::bipolarEdgeMask(configs[i]);
+      const std::uint16_t bipolar = octree::bipolarEdgeMask(config[i]);
       if (bipolar == 0) continue;
       const OctreeLeaf& leaf = leaves[i];
       LeafTriangles& lt = leafTriangles[i];
@@ -186,7 +127,7 @@ MetaCellMesh contourRegularMetaCell(const MetaCellSamples& samples, const Linear
         bool ok = true;
         for (int q = 0; q < 4; ++q) {
           const auto j = static_cast<std::size_t>(around[static_cast<std::size_t>(q)]);
-          const int g = regularVertexOfEdge(configs[j], alternative[j] != 0, axis, q);
+          const int g = dmcVertexOfEdge(config[j], alternative[j] != 0, axis, q);
           if (g < 0 || leaves[j].size != leaf.size) {
             ok = false;  // not a regular octree around this edge (violates the precondition)
             break;
@@ -196,7 +137,7 @@ MetaCellMesh contourRegularMetaCell(const MetaCellSamples& samples, const Linear
         }
         assert(ok);
         if (!ok) continue;
-        const auto tris = regularEdgeQuad(v, p, axis, (configs[i] & 1) != 0);
+        const auto tris = regularEdgeQuad(v, p, axis, (config[i] & 1) != 0);
         lt.triangles[lt.count++] = tris[0];
         lt.triangles[lt.count++] = tris[1];
       }
@@ -211,28 +152,29 @@ MetaCellMesh contourRegularMetaCell(const MetaCellSamples& samples, const Linear
   // 5. Seam: leaves with dual vertices on the meta-cell boundary, in key (Z) order.
   for (std::size_t i = 0; i < n; ++i) {
     const OctreeLeaf& leaf = leaves[i];
-    const DmcEntry& entry = entryOf(i);
+    const DmcEntry& entry = groups.entry(i);
     if (entry.vertexCount == 0 || !touchesMetaCellBoundary(leaf.origin, leaf.size, metaSize)) continue;
     SeamCell cell;
     cell.key = leaf.key;
     for (int a = 0; a < 3; ++a) cell.origin[a] = samples.origin[a] + leaf.origin[a];
     cell.size = leaf.size;
-    cell.cornerSigns = configs[i];
+    cell.cornerSigns = config[i];
     cell.alternative = alternative[i] != 0;
-    cell.firstVertex = vertexBase[i];
-    for (int g = 0; g < entry.vertexCount; ++g)
-      cell.positions[static_cast<std::size_t>(g)] = out.positions[vertexBase[i] + static_cast<std::size_t>(g)];
+    for (std::size_t g = 0; g < entry.vertexCount; ++g) {
+      cell.vertices[g] = vertexBase[i] + static_cast<std::uint32_t>(g);
+      cell.positions[g] = out.positions[cell.vertices[g]];
+    }
     result.seam.cells.push_back(cell);
   }
 
   if (stats) {
     RegularContourStats s;
     for (std::size_t i = 0; i < n; ++i) {
-      if (entryOf(i).vertexCount > 0) ++s.cells;
-      if (alternative[i]) ++s.manifoldFixes;
-      s.fixesBeyondApron += beyondApron[i];
+      if (groups.vertexCount(i) > 0) ++s.cells;
       s.boundaryEdges += leafBoundaryEdges[i];
     }
+    s.manifoldFixes = groups.manifoldFixes;
+    s.fixesBeyondApron = groups.fixesBeyondApron;
     s.vertices = static_cast<std::int64_t>(vertexCount);
     s.quads = static_cast<std::int64_t>(triangleCount / 2);
     s.seamCells = static_cast<std::int64_t>(result.seam.cells.size());

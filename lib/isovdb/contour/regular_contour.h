@@ -79,13 +79,6 @@ mesh::Mesh contourRegular(const octree::MetaCellSamples& samples, const octree::
 MetaCellMesh contourRegularMetaCell(const octree::MetaCellSamples& samples, const octree::LinearOctree& regularTree,
                                     const RegularContourOptions& options = {}, RegularContourStats* stats = nullptr);
 
-/// @brief Index (0..3) of the dual vertex of a cell with corner signs `config`
-///        (and grouping `alternative`) that represents its cell edge along `axis`
-///        on which the cell sits in quadrant `quadrant` around that edge
-///        (bit 0 = the cell is on the +u side, bit 1 = +v; u < v the other axes);
-///        -1 if that edge is not bipolar.
-int regularVertexOfEdge(std::uint8_t config, bool alternative, int axis, int quadrant) noexcept;
-
 /// @brief The two triangles of one bipolar edge's quad (Algorithm 4.1), oriented
 ///        outward, split along the diagonal whose worse triangle is better shaped.
 /// @param vertices   the four cells' vertex ids by quadrant (bit 0 = +u, bit 1 = +v)

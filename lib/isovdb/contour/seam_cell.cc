@@ -4,7 +4,8 @@ namespace isovdb::contour {
 
 void rebaseSeam(MetaCellSeam& seam, std::uint32_t base) noexcept {
   for (SeamCell& cell : seam.cells)
-    if (cell.firstVertex != kNoVertex) cell.firstVertex += base;
+    for (std::uint32_t& v : cell.vertices)
+      if (v != kNoVertex) v += base;
   for (SeamFace& face : seam.faces) face.vertex += base;
 }
 

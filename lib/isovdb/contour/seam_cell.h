@@ -40,27 +40,30 @@ struct SeamCell {
   int size = 0;                                  ///< side in voxels
   std::uint8_t cornerSigns = 0;                  ///< bit c set iff corner c is inside
 
-  /// Regular mode: Wenger's alternative grouping was used; the cell's dual
-  /// vertices are firstVertex + g for the groups g of dmcEntry(cornerSigns, alternative).
+  /// Wenger's alternative grouping was used (both modes group a leaf's bipolar
+  /// edges by dmcEntry(cornerSigns, alternative); see leaf_groups.h).
   bool alternative = false;
-  /// Regular: id of the first dual vertex. Adaptive: id of the cell's vertex, or
-  /// kNoVertex until a polygon uses it (the stitcher then adds cellPoint).
-  std::uint32_t firstVertex = kNoVertex;
-  /// Regular: positions of the (up to 4) dual vertices, for the choice of quad diagonals.
+  /// Mesh id of the dual vertex of each group. Regular: all set. Adaptive:
+  /// kNoVertex until a polygon uses it (the stitcher then adds positions[g]).
+  std::array<std::uint32_t, 4> vertices{kNoVertex, kNoVertex, kNoVertex, kNoVertex};
+  /// Positions of the (up to 4) dual vertices: regular mode chooses quad
+  /// diagonals with them, adaptive mode's envelopes use them (strictly inside the cell).
   std::array<mesh::Vec3f, 4> positions{};
-  /// Adaptive: the cell vertex as the envelopes use it (double precision, strictly inside the cell).
-  std::array<double, 3> cellPoint{0, 0, 0};
   /// Adaptive: crossing of each bipolar cell edge as a fraction of the edge (NaN for the others),
   /// for the edge points of Ju–Udeshi fans.
   std::array<float, 12> edgeCrossing{};
 };
 
 /// A minimal face in global voxel index coordinates: the square of side `size`
-/// on the plane x[axis] = min[axis] whose min corner is `min`.
+/// on the plane x[axis] = min[axis] whose min corner is `min`. `part` tells
+/// apart the dual segments that cross one face (a 1-voxel ambiguous face is
+/// crossed twice): the group of the vertex on the face's own leaf (the smaller
+/// one, or the min-side one of two equal leaves).
 struct FaceKey {
   std::array<int, 3> min{0, 0, 0};
   std::int32_t size = 0;
   std::int32_t axis = 0;
+  std::int32_t part = 0;
   friend auto operator<=>(const FaceKey&, const FaceKey&) = default;
 };
 

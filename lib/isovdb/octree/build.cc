@@ -7,6 +7,7 @@
 #include <bit>
 #include <string>
 
+#include "isovdb/contour/dmc_table.h"
 #include "isovdb/contour/dual_vertex.h"
 #include "isovdb/errors.h"
 #include "isovdb/octree/criteria.h"
@@ -64,6 +65,8 @@ struct Evaluation {
   bool classified = false;
   bool complex = false;
   bool geometric = false;  // split only because of the QEF criterion
+  bool multiSheet = false; // split only because one vertex cannot stand for the cell (adaptive)
+  bool hidden = false;     // split only because of a component hidden inside (adaptive)
   bool interiorOnly = false;
   std::uint8_t complexEdges = 0;
   std::uint8_t complexFaces = 0;
@@ -106,12 +109,25 @@ class Builder {
       ev.split = true;
     } else if (options_.construction == OctreeConstruction::Regular) {
       ev.split = ev.leaf.surface;
+    } else if (const contour::DmcEntry& entry = contour::dmcEntry(ev.leaf.cornerSigns);
+               entry.vertexCount > 1 || entry.doubleFace >= 0) {
+      // Dual contouring gives a coarse leaf one vertex: a configuration with several
+      // sheets (DMC groups) or one sheet through an ambiguous face twice would make it
+      // non-manifold, so such cells are refined; at the maximum depth each group
+      // gets its vertex (contour/leaf_groups.h).
+      ev.split = ev.multiSheet = true;
     } else if (options_.qefTolerance >= 0.0f && ev.leaf.surface) {
       const contour::DualVertex v = contour::computeDualVertex(
           samples_, ev.leaf.origin, size, ev.leaf.bipolarEdges(),
           contour::DualVertexOptions{.iso = options_.iso, .singularValueThreshold = options_.singularValueThreshold});
       ev.split = ev.geometric = v.valid() && v.rmsError() > options_.qefTolerance;
     }
+    // A leaf-to-be of the adaptive tree whose faces the surface crosses may still hide a
+    // bubble or a speck inside (the criteria only look at edges and faces; a cell with
+    // one-phase faces was scanned by classifyCell already).
+    if (!ev.split && options_.construction == OctreeConstruction::Adaptive && options_.detectInteriorComponents &&
+        !topo.boundaryUniform && ev.leaf.surface && hasHiddenComponent(samples_, ev.leaf.origin, size, options_.iso))
+      ev.split = ev.hidden = true;
     return ev;
   }
 
@@ -123,6 +139,8 @@ class Builder {
     stats_.interiorComponents += ev.interiorOnly;
     stats_.complexCells += ev.complex;
     stats_.geometricSplits += ev.geometric;
+    stats_.multiSheetSplits += ev.multiSheet;
+    stats_.hiddenComponentSplits += ev.hidden;
   }
 
   /// Level-by-level top-down construction; each level's cells are evaluated in parallel.

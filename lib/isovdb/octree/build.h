@@ -6,7 +6,10 @@
 /// (criteria.h) are subdivided up to the maximum depth.
 /// - Regular: every heterogeneous cell is subdivided too, so every leaf the
 ///   surface crosses is at the maximum depth (for Dual Marching Cubes).
-/// - Adaptive: only complex cells are subdivided; the tree is then kept 2:1
+/// - Adaptive: only complex cells, and cells whose corner configuration has
+///   several Dual Marching Cubes groups or a doubled ambiguous face (one dual
+///   vertex cannot stand for them) or that hide a component of samples inside
+///   (criteria.h, hasHiddenComponent), are subdivided; the tree is then kept 2:1
 ///   balanced (leaves that share a face, an edge or a corner differ by at most
 ///   one depth); optionally a geometric criterion (QEF error above a
 ///   tolerance) refines further. For octree dual contouring + Ju–Udeshi.
@@ -67,6 +70,10 @@ struct OctreeBuildStats {
   std::size_t complexCells = 0;          ///< complex cells found (subdivided or left at the maximum depth)
   std::size_t unresolvedComplexLeaves = 0;  ///< complex leaves at the maximum depth
   std::size_t geometricSplits = 0;       ///< cells subdivided by the QEF criterion
+  std::size_t multiSheetSplits = 0;      ///< adaptive: cells subdivided because their configuration has several
+                                         ///< DMC groups or a doubled ambiguous face (one vertex cannot stand for them)
+  std::size_t hiddenComponentSplits = 0; ///< adaptive: cells subdivided because a component of samples hides
+                                         ///< inside them (criteria.h, hasHiddenComponent)
   std::size_t balanceSplits = 0;         ///< cells subdivided to restore 2:1 balance
 };
 

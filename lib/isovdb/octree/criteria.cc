@@ -112,6 +112,46 @@ FaceLabeller::Result FaceLabeller::label(const MetaCellSamples& samples, std::ar
   return result;
 }
 
+bool hasHiddenComponent(const MetaCellSamples& samples, std::array<int, 3> origin, int size, float iso) {
+  if (size < 2) return false;  // no sample off the faces
+  const int n = size + 1;
+  const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
+  thread_local std::vector<std::uint8_t> state;  // bit 0: phase, bit 1: reached from a face
+  thread_local std::vector<std::int32_t> queue;
+  state.resize(count);
+  queue.clear();
+  std::size_t i = 0;
+  for (int z = 0; z < n; ++z)
+    for (int y = 0; y < n; ++y) {
+      const float* row = samples.values.data() + samples.indexOf(origin[0], origin[1] + y, origin[2] + z);
+      const bool faceRow = z == 0 || y == 0 || z == size || y == size;
+      for (int x = 0; x < n; ++x, ++i) {
+        const bool onFace = faceRow || x == 0 || x == size;
+        state[i] = static_cast<std::uint8_t>((isInside(row[x], iso) ? 1 : 0) | (onFace ? 2 : 0));
+        if (onFace) queue.push_back(static_cast<std::int32_t>(i));
+      }
+    }
+  const std::int32_t strides[3] = {1, n, n * n};
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const std::int32_t at = queue[head];
+    const std::uint8_t phase = state[static_cast<std::size_t>(at)] & 1;
+    std::int32_t rest = at;
+    for (int a = 0; a < 3; ++a) {
+      const int c = rest % n;  // coordinate along axis a
+      rest /= n;
+      for (const int step : {-1, 1}) {
+        if ((step < 0 && c == 0) || (step > 0 && c == size)) continue;
+        const auto j = static_cast<std::size_t>(at + step * strides[a]);
+        if (state[j] == phase) {  // same phase, not reached yet
+          state[j] = static_cast<std::uint8_t>(phase | 2);
+          queue.push_back(static_cast<std::int32_t>(j));
+        }
+      }
+    }
+  }
+  return queue.size() != count;
+}
+
 std::uint8_t cellCornerSigns(const MetaCellSamples& samples, std::array<int, 3> origin, int size,
                              float iso) noexcept {
   std::uint8_t signs = 0;

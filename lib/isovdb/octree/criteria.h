@@ -91,6 +91,16 @@ struct CellTopology {
 CellTopology classifyCell(const MetaCellSamples& samples, std::array<int, 3> origin, int size,
                           const CellClassifyOptions& options, FaceLabeller& labeller);
 
+/// @brief True if the cell [origin, origin + size] holds a connected set of
+///        samples of one phase that touches none of its faces: a bubble or a
+///        speck hidden inside a cell whose faces the surface does cross, which
+///        the edge and face criteria cannot see (6-connectivity for both
+///        phases, so a set joined to the faces only diagonally counts as hidden
+///        too: a conservative answer that costs at most a split). O(size^3),
+///        flood fill from the faces with per-thread scratch.
+/// @pre the cell lies in [0, S]^3.
+bool hasHiddenComponent(const MetaCellSamples& samples, std::array<int, 3> origin, int size, float iso);
+
 /// @brief 8-bit corner sign configuration of a cell (bit c set iff corner c inside).
 std::uint8_t cellCornerSigns(const MetaCellSamples& samples, std::array<int, 3> origin, int size,
                              float iso) noexcept;

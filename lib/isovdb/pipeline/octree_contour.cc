@@ -48,6 +48,7 @@ struct MetaCellTotals {
   std::int64_t leaves = 0, complexCells = 0, unresolvedComplexLeaves = 0, geometricSplits = 0;
   std::int64_t manifoldFixes = 0, fixesBeyondApron = 0, boundaryEdges = 0, seamCells = 0;
   std::int64_t minimalEdges = 0, fannedEdges = 0, trianglesAddedByFans = 0;
+  std::int64_t multiSheetSplits = 0, hiddenComponentSplits = 0, multiVertexCells = 0;
 
   void add(const MetaCellTotals& o) {
     readSeconds += o.readSeconds;
@@ -64,6 +65,9 @@ struct MetaCellTotals {
     minimalEdges += o.minimalEdges;
     fannedEdges += o.fannedEdges;
     trianglesAddedByFans += o.trianglesAddedByFans;
+    multiSheetSplits += o.multiSheetSplits;
+    hiddenComponentSplits += o.hiddenComponentSplits;
+    multiVertexCells += o.multiVertexCells;
   }
 };
 
@@ -83,6 +87,8 @@ contour::MetaCellMesh contourBlock(const octree::MetaCellSamples& samples, const
   totals.complexCells += static_cast<std::int64_t>(buildStats.complexCells);
   totals.unresolvedComplexLeaves += static_cast<std::int64_t>(buildStats.unresolvedComplexLeaves);
   totals.geometricSplits += static_cast<std::int64_t>(buildStats.geometricSplits);
+  totals.multiSheetSplits += static_cast<std::int64_t>(buildStats.multiSheetSplits);
+  totals.hiddenComponentSplits += static_cast<std::int64_t>(buildStats.hiddenComponentSplits);
   t0 = std::chrono::steady_clock::now();
   contour::MetaCellMesh result;
   if (options.method == OctreeMethod::Regular) {
@@ -94,8 +100,11 @@ contour::MetaCellMesh contourBlock(const octree::MetaCellSamples& samples, const
     totals.seamCells += s.seamCells;
   } else {
     contour::AdaptiveContourStats s;
-    result = contour::contourAdaptiveMetaCell(samples, tree, {.iso = iso, .intersectionFree = options.intersectionFree},
-                                              &s);
+    result = contour::contourAdaptiveMetaCell(
+        samples, tree, {.iso = iso, .intersectionFree = options.intersectionFree, .manifoldFix = options.manifoldFix},
+        &s);
+    totals.manifoldFixes += s.manifoldFixes;
+    totals.multiVertexCells += s.multiVertexCells;
     totals.boundaryEdges += s.boundaryEdges;
     totals.seamCells += s.seamCells;
     totals.minimalEdges += s.minimalEdges;
@@ -119,11 +128,14 @@ void recordTotals(const MetaCellTotals& totals, const OctreeContourOptions& opti
   section["unresolved_complex_leaves"] = totals.unresolvedComplexLeaves;
   section["boundary_cells_kept"] = totals.seamCells;
   section["edges_left_to_stitching"] = totals.boundaryEdges;
+  section["manifold_fixes"] = totals.manifoldFixes;
   if (options.method == OctreeMethod::Regular) {
-    section["manifold_fixes"] = totals.manifoldFixes;
     section["manifold_fixes_beyond_apron"] = totals.fixesBeyondApron;
   } else {
     section["geometric_splits"] = totals.geometricSplits;
+    section["multi_sheet_splits"] = totals.multiSheetSplits;
+    section["hidden_component_splits"] = totals.hiddenComponentSplits;
+    section["multi_vertex_cells"] = totals.multiVertexCells;
     section["intersection_free"] = options.intersectionFree;
     section["minimal_edges"] = totals.minimalEdges;
     section["fanned_edges"] = totals.fannedEdges;

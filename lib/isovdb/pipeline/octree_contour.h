@@ -43,7 +43,7 @@ struct OctreeContourOptions {
   float qefTolerance = 0.25f;  ///< adaptive: split leaves whose QEF residual (RMS voxels) exceeds it; <0 off.
                                ///< 0.25 gives 5.5x fewer triangles than regular at 0.12 voxel mean error
                                ///< (salt body, 64^3); 0.5: 10x fewer, 0.19 voxel
-  bool manifoldFix = true;  ///< regular: Wenger's fix (tests switch it off to show it matters)
+  bool manifoldFix = true;  ///< Wenger's fix, both methods (tests switch it off to show it matters)
   bool intersectionFree = true;  ///< adaptive: Ju–Udeshi fans (false: plain DC, for comparison)
 };
 

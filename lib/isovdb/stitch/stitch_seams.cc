@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "isovdb/contour/adaptive_edges.h"
+#include "isovdb/contour/dmc_table.h"
 #include "isovdb/contour/regular_contour.h"
 #include "isovdb/octree/morton.h"
 
@@ -33,12 +34,12 @@ void stitchRegular(const Seam& seam, const EdgeOctree& edgeTree, int s, mesh::Me
           break;
         }
         const SeamCell& cell = *edgeTree.cells[static_cast<std::size_t>(j)];
-        const int g = contour::regularVertexOfEdge(cell.cornerSigns, cell.alternative, axis, q);
+        const int g = contour::dmcVertexOfEdge(cell.cornerSigns, cell.alternative, axis, q);
         if (g < 0 || cell.size != leaf.size) {
           complete = false;
           break;
         }
-        v[static_cast<std::size_t>(q)] = cell.firstVertex + static_cast<std::uint32_t>(g);
+        v[static_cast<std::size_t>(q)] = cell.vertices[static_cast<std::size_t>(g)];
         p[static_cast<std::size_t>(q)] = cell.positions[static_cast<std::size_t>(g)];
       }
       if (!complete) {
@@ -59,23 +60,35 @@ void stitchAdaptive(const Seam& seam, const EdgeOctree& edgeTree, int s, bool in
                     StitchStats& stats) {
   const LinearOctree& tree = edgeTree.tree;
   const std::size_t n = tree.leafCount();
-  std::vector<char> hasVertex(n, 1);
-  std::vector<contour::Vec3d> cellPoints(n);
-  for (std::size_t i = 0; i < n; ++i) cellPoints[i] = edgeTree.cells[i]->cellPoint;
+  std::vector<std::uint32_t> firstVertex(n + 1, 0);
+  std::vector<char> alternative(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const SeamCell& cell = *edgeTree.cells[i];
+    firstVertex[i + 1] = firstVertex[i] + contour::dmcEntry(cell.cornerSigns, cell.alternative).vertexCount;
+    alternative[i] = cell.alternative;
+  }
+  std::vector<contour::Vec3d> cellPoints(firstVertex[n]);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::uint32_t v = firstVertex[i]; v < firstVertex[i + 1]; ++v) {
+      const mesh::Vec3f& p = edgeTree.cells[i]->positions[v - firstVertex[i]];
+      cellPoints[v] = {p[0], p[1], p[2]};
+    }
   const contour::AdaptiveTree source{
       .tree = &tree,
       .origin = tree.origin(),
-      .hasVertex = &hasVertex,
+      .firstVertex = &firstVertex,
       .cellPoints = &cellPoints,
+      .alternative = &alternative,
       .crossing = [&](std::size_t leaf, int e) -> double {
         return static_cast<double>(edgeTree.cells[leaf]->edgeCrossing[static_cast<std::size_t>(e)]);
       },
       .inRegion = [&](const std::array<int, 3>& start, int axis) { return seam.ownsEdge(start, axis, s); },
       .partial = true};
-  const auto cellVertex = [&](std::int64_t leaf) {
+  const auto cellVertex = [&](std::int64_t leaf, int group) {
     SeamCell& cell = *edgeTree.cells[static_cast<std::size_t>(leaf)];
-    if (cell.firstVertex == contour::kNoVertex) cell.firstVertex = addVertex(cell.cellPoint);
-    return cell.firstVertex;
+    std::uint32_t& vertex = cell.vertices[static_cast<std::size_t>(group)];
+    if (vertex == contour::kNoVertex) vertex = addVertex(cellPoints[firstVertex[static_cast<std::size_t>(leaf)] + static_cast<std::size_t>(group)]);
+    return vertex;
   };
   contour::LeafEdges edges;
   for (std::size_t i = 0; i < n; ++i) {
