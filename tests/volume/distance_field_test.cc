@@ -1,6 +1,7 @@
 #include "isovdb/volume/distance_field.h"
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include <cmath>
 
@@ -101,6 +102,31 @@ TEST(DistanceField, ChunksMeetWithoutSeams) {
     for (int y = -4; y < 76; y += 3)
       for (int x = -4; x < 76; x += 3)
         ASSERT_EQ(accA.getValue(openvdb::Coord(x, y, z)) < 0, acc.getValue(openvdb::Coord(x, y, z)) < 0);
+}
+
+TEST(DistanceField, ChunksInParallelGiveTheSameValuesAsOneAtATime) {
+  VectorSliceStream stream = VectorSliceStream::fromFunction({80, 72, 64}, [](int x, int y, int z) {
+    const float rho = std::hypot(x - 40.3f, y - 35.7f) - 20.f;
+    return std::hypot(rho, z - 31.2f) < 9.5f ? 1.f : 0.f;
+  });
+  const Volume mask = ingestMask(stream, {});
+  Volume fields[2];
+  const int threads[2] = {1, 8};
+  for (int i = 0; i < 2; ++i) {
+    tbb::task_arena arena(threads[i]);
+    arena.execute([&] { fields[i] = distanceField(mask, {.chunkSize = 16}); });
+  }
+  const FieldGrid& a = fieldGrid(fields[0]);
+  const FieldGrid& b = fieldGrid(fields[1]);
+  ASSERT_GT(a.tree().leafCount(), 100u);
+  ASSERT_EQ(a.tree().leafCount(), b.tree().leafCount());
+  auto acc = b.getConstAccessor();
+  for (auto leaf = a.tree().cbeginLeaf(); leaf; ++leaf) {
+    const auto* other = acc.probeConstLeaf(leaf->origin());
+    ASSERT_NE(other, nullptr) << leaf->origin();
+    ASSERT_EQ(leaf->getValueMask(), other->getValueMask()) << leaf->origin();
+    for (int i = 0; i < 512; ++i) ASSERT_EQ(leaf->getValue(i), other->getValue(i)) << leaf->origin();
+  }
 }
 
 }  // namespace

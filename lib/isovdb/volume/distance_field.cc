@@ -6,6 +6,10 @@
 #include <openvdb/tools/SignedFloodFill.h>
 #include <openvdb/tools/TopologyToLevelSet.h>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <mutex>
 #include <vector>
 
 #include "isovdb/volume/grids.h"
@@ -89,22 +93,31 @@ Volume distanceField(const Volume& mask, const DistanceFieldOptions& options, In
     for (int z = first.z(); z <= last.z(); z += chunk)
       for (int y = first.y(); y <= last.y(); y += chunk)
         for (int x = first.x(); x <= last.x(); x += chunk) chunks.emplace_back(x, y, z);
-    for (std::size_t c = 0; c < chunks.size(); ++c) {
-      const openvdb::CoordBBox inner(chunks[c], chunks[c].offsetBy(chunk - 1));
-      openvdb::CoordBBox outer = inner;
-      outer.expand(halo);
-      MaskGrid region(false);
-      if (extractRegion(grid, outer, region)) {
-        FieldGrid::Ptr band = bandOf(region, options, nullptr);
-        std::vector<openvdb::Coord> origins;
-        for (auto leaf = band->tree().cbeginLeaf(); leaf; ++leaf)
-          if (inner.isInside(leaf->origin())) origins.push_back(leaf->origin());
-        for (const openvdb::Coord& origin : origins)
-          sdf->tree().addLeaf(band->tree().stealNode<FieldGrid::TreeType::LeafNodeType>(
-              origin, band->background(), false));
+    // Chunks run in parallel, as many at once as TBB has threads (one with --threads 1,
+    // so serial mode holds one chunk's working set); each adds only the leaves inside
+    // its own chunk, so the result does not depend on the order.
+    std::mutex merge;
+    std::size_t done = 0;
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
+      for (std::size_t c = r.begin(); c != r.end(); ++c) {
+        const openvdb::CoordBBox inner(chunks[c], chunks[c].offsetBy(chunk - 1));
+        openvdb::CoordBBox outer = inner;
+        outer.expand(halo);
+        MaskGrid region(false);
+        std::vector<FieldGrid::TreeType::LeafNodeType*> leaves;
+        if (extractRegion(grid, outer, region)) {
+          FieldGrid::Ptr band = bandOf(region, options, nullptr);
+          std::vector<openvdb::Coord> origins;
+          for (auto leaf = band->tree().cbeginLeaf(); leaf; ++leaf)
+            if (inner.isInside(leaf->origin())) origins.push_back(leaf->origin());
+          for (const openvdb::Coord& origin : origins)
+            leaves.push_back(band->tree().stealNode<FieldGrid::TreeType::LeafNodeType>(origin, band->background(), false));
+        }
+        const std::lock_guard<std::mutex> lock(merge);
+        for (auto* leaf : leaves) sdf->tree().addLeaf(leaf);
+        progress.update(static_cast<double>(++done), static_cast<double>(chunks.size()));
       }
-      progress.update(static_cast<double>(c + 1), static_cast<double>(chunks.size()));
-    }
+    }, tbb::simple_partitioner());
     // Inactive space between chunks' bands: negative inside, positive outside.
     openvdb::tools::signedFloodFill(sdf->tree());
     openvdb::tools::pruneLevelSet(sdf->tree());

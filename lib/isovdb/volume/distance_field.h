@@ -33,7 +33,7 @@ struct DistanceFieldOptions {
 /// Signed distance to the boundary of the mask, in voxels, NEGATIVE inside.
 /// Voxels farther than halfWidth are inactive with value ±halfWidth (their sign
 /// is still right). Memory: O(surface · halfWidth) for the result plus one chunk
-/// in flight. The result does not depend on chunkSize (to float rounding).
+/// in flight per TBB thread (chunks run in parallel). The result does not depend on chunkSize (to float rounding).
 /// @pre `mask.kind() == VolumeKind::Mask`
 /// @throw InputError for another kind; Interrupted on cancellation.
 Volume distanceField(const Volume& mask, const DistanceFieldOptions& options = {},
