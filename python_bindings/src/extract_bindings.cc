@@ -96,7 +96,8 @@ boundary: "cap" (surfaces reaching the sampled box are closed by caps lying on i
 threads: worker threads, None or 0 = every core; the mesh is the same for any count.
 progress: callable(stage: str, percent: int), called from worker threads (with the GIL)
   whenever a stage's percentage changes. If it raises, the work is cancelled and the
-  exception propagates; nothing is returned.
+  exception propagates; nothing is returned. Ctrl-C (KeyboardInterrupt, Jupyter's
+  "interrupt kernel") cancels the same way, with or without a callback.
 
 output: None (return a Mesh), or a .ply/.obj path: write the mesh there exactly as
   `isovdb extract -o PATH` does (the octree methods stream a .ply meta-cell by meta-cell,

@@ -24,20 +24,33 @@ void CallbackProgress::end() {
 }
 
 bool CallbackProgress::wasInterrupted(int percent) {
-  if (!callback_) return false;
+  const bool onCaller = std::this_thread::get_id() == caller_;
+  if (!callback_ && !onCaller) return false;
   std::lock_guard lock(mutex_);
   if (failed_) return true;
-  if (percent == lastPercent_) return false;
-  lastPercent_ = percent;
-  const std::string stage = stages_.empty() ? std::string("working") : stages_.back();
   py::gil_scoped_acquire gil;
+  if (onCaller && PyErr_CheckSignals() != 0) {
+    fail();
+    return true;
+  }
+  if (!callback_ || percent == lastPercent_) return false;
+  lastPercent_ = percent;
   try {
-    callback_(stage, percent);
+    callback_(stages_.empty() ? std::string("working") : stages_.back(), percent);
   } catch (py::error_already_set&) {
     error_ = std::current_exception();
     failed_ = true;
   }
   return failed_;
+}
+
+void CallbackProgress::fail() {
+  try {
+    throw py::error_already_set();  // takes the pending Python exception
+  } catch (py::error_already_set&) {
+    error_ = std::current_exception();
+  }
+  failed_ = true;
 }
 
 void CallbackProgress::rethrowCallbackError() {

@@ -8,6 +8,7 @@
 #include <exception>
 #include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "isovdb/progress.h"
@@ -18,8 +19,11 @@ namespace py = pybind11;
 
 /// Calls `callback(stage: str, percent: int)` whenever a stage's percentage changes
 /// (from any worker thread; the GIL is taken for the call, so calls are serialised).
-/// When the callback raises, every later wasInterrupted() answers true, the library
-/// throws Interrupted, and run() re-raises the callback's exception instead.
+/// Calls made on the thread that created it (the Python caller's) also run Python's
+/// signal handlers, so Ctrl-C (a Jupyter "interrupt kernel") stops the work with
+/// KeyboardInterrupt. When the callback or a signal handler raises, every later
+/// wasInterrupted() answers true, the library throws Interrupted, and run() re-raises
+/// the Python exception instead.
 class CallbackProgress final : public Interrupter {
  public:
   /// `callback` None: reports nothing, never interrupts.
@@ -46,8 +50,11 @@ class CallbackProgress final : public Interrupter {
 
  private:
   void rethrowCallbackError();
+  /// Records the Python exception being raised and answers true from now on.
+  void fail();
 
   py::object callback_;
+  std::thread::id caller_ = std::this_thread::get_id();
   std::mutex mutex_;
   std::vector<std::string> stages_;
   int lastPercent_ = -2;

@@ -1,4 +1,6 @@
 """extract: methods, options, guarantees, threads, progress, GIL."""
+import os
+import signal
 import threading
 import time
 
@@ -121,8 +123,13 @@ def test_raising_progress_cancels_and_propagates(torus_volume):
     assert isovdb.extract(torus_volume, method="regular", meta_cell=16).check()["closed"]
 
 
-def test_gil_is_released_while_contouring():
-    volume = isovdb.from_numpy(ball((128, 128, 128), (64, 64, 64), 56))
+@pytest.fixture(scope="module")
+def big_ball():
+    """A volume whose regular contouring on one thread takes about a second."""
+    return isovdb.from_numpy(ball((160, 160, 160), (80, 80, 80), 66))
+
+
+def test_gil_is_released_while_contouring(big_ball):
     ticks = []
     stop = threading.Event()
 
@@ -135,11 +142,21 @@ def test_gil_is_released_while_contouring():
     thread.start()
     time.sleep(0.01)
     start = time.perf_counter()
-    isovdb.extract(volume, method="regular", threads=1)
+    isovdb.extract(big_ball, method="regular", threads=1)
     end = time.perf_counter()
     stop.set()
     thread.join()
     during = [t for t in ticks if start < t < end]
-    assert end - start > 0.05
+    assert end - start > 0.2
     # a thread holding the GIL would leave no tick between start and end
-    assert len(during) >= 10, (end - start, len(during))
+    assert len(during) >= 20, (end - start, len(during))
+
+
+def test_ctrl_c_stops_the_work_with_keyboard_interrupt(big_ball):
+    timer = threading.Timer(0.15, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    start = time.perf_counter()
+    with pytest.raises(KeyboardInterrupt):
+        isovdb.extract(big_ball, method="regular", meta_cell=32, threads=1)  # no progress callback needed
+    timer.join()
+    assert time.perf_counter() - start < 1.0  # stopped early (a full run takes over a second)
