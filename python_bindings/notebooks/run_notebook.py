@@ -10,6 +10,7 @@ Then every code cell tagged "figure" must have produced an image and every cell 
 "table" an HTML table; no cell may have failed, and the run must take less than
 ISOVDB_NOTEBOOK_SECONDS (60). The executed copy goes to OUT_DIR when given.
 """
+import datetime
 import os
 import pathlib
 import sys
@@ -19,6 +20,17 @@ import nbformat
 from nbclient import NotebookClient
 
 EXPECTED = {"figure": "image/png", "table": "text/html"}
+
+
+def cell_seconds(cell):
+    """How long a cell ran (nbclient records the times in its metadata)."""
+    times = cell.metadata.get("execution", {})
+    try:
+        start = datetime.datetime.fromisoformat(times["iopub.execute_input"].replace("Z", "+00:00"))
+        end = datetime.datetime.fromisoformat(times["shell.execute_reply"].replace("Z", "+00:00"))
+    except KeyError:
+        return 0.0
+    return (end - start).total_seconds()
 
 
 def main():
@@ -54,6 +66,8 @@ def main():
         out.mkdir(parents=True, exist_ok=True)
         nbformat.write(notebook, out / path.name)
     print(f"{path.name}: {len(code_cells)} code cells, {tagged} checked outputs, {seconds:.1f} s")
+    timed = [(cell_seconds(c), i) for i, c in enumerate(code_cells)]
+    print("slowest cells: " + ", ".join(f"{i} ({s:.1f} s)" for s, i in sorted(timed, reverse=True)[:3]))
     if problems:
         sys.exit(f"{path.name}: " + "; ".join(problems))
 

@@ -16,7 +16,7 @@ namespace {
 pipeline::ExtractOptions extractOptions(const std::string& method, double iso, int minLevel, int maxLevel,
                                         int finestSize, int maxCellSize, int metaCell, float qefTolerance,
                                         bool intersectionFree, double adaptivity, int halfWidth, int closing,
-                                        int sdfChunk, const std::string& boundary, const py::object& threads) {
+                                        int sdfChunk, const std::string& boundary, std::optional<int> threads) {
   pipeline::ExtractOptions result;
   const auto parsed = pipeline::parseContourMethod(method);
   if (!parsed) throw InputError("method: unknown method '" + method + "', expected adaptive, regular or vdb");
@@ -34,23 +34,23 @@ pipeline::ExtractOptions extractOptions(const std::string& method, double iso, i
   result.octree.maxCellSize = maxCellSize;
   result.octree.qefTolerance = qefTolerance;
   result.octree.intersectionFree = intersectionFree;
-  result.threads = threads.is_none() ? 0 : threads.cast<int>();
+  result.threads = threads.value_or(0);
   return result;
 }
 
 py::object extract(const PyVolume& volume, const std::string& method, double iso, int minLevel, int maxLevel,
                    int finestSize, int maxCellSize, int metaCell, float qefTolerance, bool intersectionFree,
                    double adaptivity, int halfWidth, int closing, int sdfChunk, const std::string& boundary,
-                   const py::object& threads, const py::object& progress, const py::object& output) {
+                   std::optional<int> threads, const py::object& progress,
+                   const std::optional<std::filesystem::path>& output) {
   const pipeline::ExtractOptions options =
       extractOptions(method, iso, minLevel, maxLevel, finestSize, maxCellSize, metaCell, qefTolerance,
                      intersectionFree, adaptivity, halfWidth, closing, sdfChunk, boundary, threads);
   CallbackProgress callback(progress);
   pipeline::Statistics stats;
-  if (!output.is_none()) {
-    const auto path = output.cast<std::filesystem::path>();
-    callback.run([&] { pipeline::extractToFile(volume.volume, options, path, &callback, &stats); });
-    stats["output"]["path"] = path.string();
+  if (output) {
+    callback.run([&] { pipeline::extractToFile(volume.volume, options, *output, &callback, &stats); });
+    stats["output"]["path"] = output->string();
     return toPython(stats.json());
   }
   PyMesh result;
@@ -69,7 +69,8 @@ void bindExtract(py::module_& m) {
         py::arg("closing") = 0, py::arg("sdf_chunk") = 128, py::arg("boundary") = "cap",
         py::arg("threads") = py::none(), py::arg("progress") = py::none(), py::arg("output") = py::none(), R"doc(
 Contours a volume into a closed triangle Mesh in world space (the `isovdb extract` job;
-each keyword is the CLI flag of the same name, with the same default except method).
+each keyword is the CLI flag of the same name, underscores for dashes, with the same
+default except method).
 
 volume: a mask (its distance field is computed first, see half_width), a distance field
   (from distance_field() or a level-set .vdb) or a scalar field (from_numpy of floats, SEG-Y).
