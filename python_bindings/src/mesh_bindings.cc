@@ -33,9 +33,15 @@ std::vector<std::array<T, 3>> rows(const py::object& object, const char* name) {
   return out;
 }
 
-PyMesh makeMesh(const py::object& vertices, const py::object& triangles) {
+PyMesh makeMesh(const py::object& vertices, const py::object& triangles, const py::object& normals) {
   PyMesh result;
   result.mesh.positions = rows<float>(vertices, "vertices");
+  if (!normals.is_none()) {
+    result.mesh.normals = rows<float>(normals, "normals");
+    if (result.mesh.normals.size() != result.mesh.positions.size())
+      throw py::value_error("Mesh: " + std::to_string(result.mesh.normals.size()) + " normals for " +
+                            std::to_string(result.mesh.positions.size()) + " vertices");
+  }
   const auto indices = py::array::ensure(triangles);
   if (indices && indices.dtype().kind() != 'i' && indices.dtype().kind() != 'u')
     throw py::value_error("Mesh: triangles must hold integers");
@@ -72,8 +78,9 @@ An indexed triangle mesh in world space (as extract() returns it, or read_mesh()
 
 vertices, triangles and normals are numpy views onto the mesh's own buffers (no copy):
 writing into them changes the mesh; they stay valid as long as any of them or the Mesh lives.)doc")
-      .def(py::init(&makeMesh), py::arg("vertices"), py::arg("triangles"),
-           "Mesh from an (n, 3) array of positions (float32) and an (m, 3) array of vertex indices (copied).")
+      .def(py::init(&makeMesh), py::arg("vertices"), py::arg("triangles"), py::arg("normals") = py::none(),
+           "Mesh from an (n, 3) array of positions, an (m, 3) array of vertex indices and optionally (n, 3) "
+           "normals (copied, as float32 and uint32).")
       .def_property_readonly(
           "vertices", [](py::object self) { return view(self.cast<const PyMesh&>().mesh.positions, self); },
           "(n, 3) float32 positions, world units.")
@@ -87,7 +94,8 @@ writing into them changes the mesh; they stay valid as long as any of them or th
             if (mesh.mesh.normals.empty()) return py::none();
             return view(mesh.mesh.normals, self);
           },
-          "(n, 3) float32 per-vertex normals, or None when the method produced none.")
+          "(n, 3) float32 per-vertex normals, or None when the mesh has none (the contouring methods "
+          "produce none today; PLY files and Mesh(normals=...) may carry them).")
       .def_property_readonly("vertex_count", [](const PyMesh& m) { return m.mesh.vertexCount(); })
       .def_property_readonly("triangle_count", [](const PyMesh& m) { return m.mesh.triangleCount(); })
       .def_property_readonly(

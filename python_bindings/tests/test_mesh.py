@@ -52,6 +52,19 @@ def test_check_finds_holes_and_skips_self_intersections_on_request():
     assert report["self_intersecting_pairs"] == -1
 
 
+def test_normals_travel_through_ply_files(tmp_path):
+    vertices, triangles = TETRAHEDRON
+    normals = vertices - vertices.mean(axis=0)
+    mesh = isovdb.Mesh(vertices, triangles, normals=normals)
+    assert np.array_equal(mesh.normals, normals) and np.shares_memory(mesh.normals, mesh.normals)
+    mesh.write(tmp_path / "n.ply")
+    back = isovdb.read_mesh(tmp_path / "n.ply")
+    assert np.array_equal(back.normals, normals)
+    assert isovdb.Mesh(vertices, triangles).normals is None
+    with pytest.raises(ValueError, match="3 normals for 4 vertices"):
+        isovdb.Mesh(vertices, triangles, normals=normals[:3])
+
+
 def test_mesh_constructor_rejects_bad_arrays():
     vertices, triangles = TETRAHEDRON
     with pytest.raises(ValueError, match=r"\(n, 3\)"):

@@ -3,7 +3,7 @@ import numpy as np
 import pytest
 
 import isovdb
-from conftest import ball
+from conftest import ball, torus
 
 
 # --- from_numpy: kinds and values -------------------------------------------------
@@ -253,3 +253,30 @@ def test_distance_field_rejects_non_masks():
     scalar = isovdb.from_numpy(np.zeros((4, 4, 4), np.float32))
     with pytest.raises(ValueError):
         isovdb.distance_field(scalar)
+
+
+# --- euler_characteristic ------------------------------------------------------------------
+
+def test_euler_characteristic_of_solids_and_their_meshes():
+    shape = (40, 40, 24)
+    ring = torus(shape, (20, 20, 12), 12, 5)
+    two_balls = ball(shape, (10, 10, 12), 6) | ball(shape, (30, 30, 12), 6)
+    hollow = ball(shape, (20, 20, 12), 10) & ~ball(shape, (20, 20, 12), 5)  # a ball with a cavity: chi 2
+    for array, expected in ((ring, 0), (two_balls, 2), (hollow, 2), (ball(shape, (20, 20, 12), 9), 1)):
+        volume = isovdb.from_numpy(array)
+        assert isovdb.euler_characteristic(volume) == expected
+        assert isovdb.euler_characteristic(isovdb.distance_field(volume)) == expected
+        mesh = isovdb.extract(volume, method="regular")
+        assert mesh.check()["euler_characteristic"] == 2 * expected
+
+
+def test_euler_characteristic_adjacency_and_errors():
+    diagonal = np.zeros((4, 4, 4), np.uint8)
+    diagonal[1, 1, 1] = diagonal[2, 2, 2] = 1  # two voxels touching at a corner
+    volume = isovdb.from_numpy(diagonal)
+    assert isovdb.euler_characteristic(volume, adjacency=26) == 1
+    assert isovdb.euler_characteristic(volume, adjacency=6) == 2
+    with pytest.raises(ValueError, match="adjacency"):
+        isovdb.euler_characteristic(volume, adjacency=18)
+    with pytest.raises(ValueError, match="scalar"):
+        isovdb.euler_characteristic(isovdb.from_numpy(np.zeros((3, 3, 3), np.float32)))
