@@ -9,8 +9,9 @@ namespace isovdb::python {
 
 namespace {
 
-PyVolume readSegy(const std::filesystem::path& path, float clip, py::object mask, py::object maskRange, py::object threshold,
-                  int inlineByte, int crosslineByte, bool sampleStatistics, const py::object& progress) {
+PyVolume readSegy(const std::filesystem::path& path, float clip, py::object mask, py::object maskRange,
+                  py::object threshold, int inlineByte, int crosslineByte, bool sampleStatistics,
+                  const py::object& progress) {
   const InputKeywords keywords{.threshold = std::move(threshold), .labels = py::none(), .mask = std::move(mask),
                                .maskRange = std::move(maskRange), .clip = clip, .inlineByte = inlineByte,
                                .crosslineByte = crosslineByte};

@@ -204,7 +204,8 @@ pipeline::InputChoices InputKeywords::choices() const {
   return result;
 }
 
-PyVolume loadWithProgress(const std::filesystem::path& path, const pipeline::InputOptions& options, const py::object& progress) {
+PyVolume loadWithProgress(const std::filesystem::path& path, const pipeline::InputOptions& options,
+                          const py::object& progress) {
   CallbackProgress callback(progress);
   pipeline::Statistics stats;
   PyVolume result;

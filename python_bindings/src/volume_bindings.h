@@ -19,6 +19,7 @@ struct InputKeywords {
 };
 
 /// loadVolume with the GIL released and `progress` (a callable or None) as interrupter.
-PyVolume loadWithProgress(const std::filesystem::path& path, const pipeline::InputOptions& options, const py::object& progress);
+PyVolume loadWithProgress(const std::filesystem::path& path, const pipeline::InputOptions& options,
+                          const py::object& progress);
 
 }  // namespace isovdb::python
