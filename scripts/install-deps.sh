@@ -9,6 +9,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev libsegyio-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-numpy python3-pytest python3-openvdb python3-segyio
+  python3-dev pybind11-dev python3-matplotlib python3-nbformat python3-nbclient python3-ipykernel
 )
 missing=()
 for p in "${packages[@]}"; do

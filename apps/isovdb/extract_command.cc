@@ -4,9 +4,8 @@
 #include "isovdb/errors.h"
 #include "isovdb/io/atomic_file.h"
 #include "isovdb/io/mesh_file.h"
-#include "isovdb/io/path_util.h"
-#include "isovdb/io/ply_stream_writer.h"
 #include "isovdb/pipeline/extract.h"
+#include "isovdb/pipeline/extract_to_file.h"
 #include "isovdb/pipeline/load_volume.h"
 #include "isovdb/pipeline/mesh_report.h"
 
@@ -88,19 +87,11 @@ void addExtractCommand(CLI::App& app, Context& context) {
     pipeline::Statistics stats;
     const volume::Volume input =
         pipeline::loadVolume(state->input, state->flags.toOptions(state->input), context.interrupter(), &stats);
-    // The octree methods stream a .ply meta-cell by meta-cell (the mesh is never
-    // held whole); --check and .obj need the mesh in memory.
-    const bool stream = state->options.method != pipeline::ContourMethod::Vdb && !state->check &&
-                        io::lowerExtension(state->output) == ".ply";
+    // Without --check the octree methods stream a .ply meta-cell by meta-cell (the mesh
+    // is never held whole); --check needs the mesh in memory.
     std::uint64_t triangles = 0;
-    if (stream) {
-      const volume::Geometry& g = input.geometry();
-      io::PlyStreamWriter writer(state->output, g.spacing, g.origin);
-      pipeline::extractInto(input, state->options, writer, context.interrupter(), &stats);
-      triangles = writer.triangleCount();
-      pipeline::Statistics::StageTimer timer(&stats, "write");
-      writer.commit();
-      stats["output"]["streamed"] = true;
+    if (!state->check) {
+      triangles = pipeline::extractToFile(input, state->options, state->output, context.interrupter(), &stats);
     } else {
       mesh = pipeline::extractMesh(input, state->options, context.interrupter(), &stats);
       triangles = mesh.triangles.size();

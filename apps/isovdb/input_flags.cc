@@ -20,11 +20,11 @@ void InputFlags::add(CLI::App& command) {
 }
 
 pipeline::InputOptions InputFlags::toOptions(const std::string& path) const {
-  pipeline::InputOptions options;
-  options.denseAs = scalar ? pipeline::DenseAs::Scalar : pipeline::DenseAs::Mask;
-  options.rule.threshold = threshold.value_or(0.0);
-  options.rule.labels = labels;
-  options.gridName = grid;
+  pipeline::InputChoices choices;
+  choices.threshold = threshold;
+  choices.labels = labels;
+  choices.scalar = scalar;
+  choices.grid = grid;
   if (!dims.empty() || !type.empty()) {
     if (dims.empty()) throw InputError("'" + path + "': --type given without --dims X,Y,Z");
     if (type.empty()) throw InputError("'" + path + "': --dims given without --type");
@@ -38,10 +38,10 @@ pipeline::InputOptions InputFlags::toOptions(const std::string& path) const {
     raw.bigEndian = bigEndian;
     if (!spacing.empty()) raw.spacing = {spacing[0], spacing[1], spacing[2]};
     raw.headerBytes = headerBytes;
-    options.raw = raw;
+    choices.raw = raw;
   }
-  seismic.apply(path, threshold.has_value() || !labels.empty(), options);
-  return options;
+  seismic.fill(choices);
+  return pipeline::resolveInputChoices(path, choices);
 }
 
 }  // namespace isovdb::cli

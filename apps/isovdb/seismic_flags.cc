@@ -1,8 +1,5 @@
 #include "seismic_flags.h"
 
-#include <cmath>
-
-#include "isovdb/errors.h"
 
 namespace isovdb::cli {
 
@@ -19,23 +16,12 @@ void SeismicFlags::add(CLI::App& command) {
   command.add_option("--mask-range", maskRange, "Mask: inside = LO <= value <= HI")->delimiter(',')->expected(2);
 }
 
-void SeismicFlags::apply(const std::string& path, bool otherMask, pipeline::InputOptions& options) const {
-  options.clip = clip;
-  if (segy || io::isSegyPath(path))
-    options.segy = io::SegyOptions{.inlineByte = inlineByte, .crosslineByte = crosslineByte};
-  const bool ownMask = !mask.empty() || !maskRange.empty();
-  if (!mask.empty() && !maskRange.empty()) throw InputError("--mask and --mask-range exclude each other");
-  if (ownMask && otherMask) throw InputError("--mask/--mask-range exclude --threshold and --labels");
-  if (!mask.empty()) {
-    options.rule = volume::parseMaskText(mask);
-  } else if (!maskRange.empty()) {
-    if (!(maskRange[0] <= maskRange[1]) || !std::isfinite(maskRange[0]) || !std::isfinite(maskRange[1]))
-      throw InputError("--mask-range: expected LO,HI with LO <= HI, got " + std::to_string(maskRange[0]) + "," +
-                       std::to_string(maskRange[1]));
-    options.rule = volume::MaskRule{.test = volume::MaskTest::Between, .threshold = maskRange[0], .upper = maskRange[1], .labels = {}};
-  }
-  if (ownMask) options.denseAs = pipeline::DenseAs::Mask;
-  else if (options.segy && !otherMask) options.denseAs = pipeline::DenseAs::Scalar;
+void SeismicFlags::fill(pipeline::InputChoices& choices) const {
+  choices.segy = segy;
+  choices.segyBytes = io::SegyOptions{.inlineByte = inlineByte, .crosslineByte = crosslineByte};
+  choices.clip = clip;
+  choices.mask = mask;
+  if (!maskRange.empty()) choices.maskRange = std::array<double, 2>{maskRange[0], maskRange[1]};
 }
 
 }  // namespace isovdb::cli

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "isovdb/pipeline/load_volume.h"
+#include "isovdb/pipeline/input_choices.h"
 
 namespace isovdb::cli {
 
@@ -21,11 +21,9 @@ struct SeismicFlags {
   std::vector<double> maskRange;
 
   void add(CLI::App& command);
-  /// Completes the options InputFlags built: SEG-Y reading (by flag or extension),
-  /// the amplitude field by default for SEG-Y, the clip, and --mask/--mask-range.
-  /// @param[in] otherMask true when --threshold or --labels chose a mask.
-  /// @throw InputError for malformed or contradicting flags (names the flag).
-  void apply(const std::string& path, bool otherMask, pipeline::InputOptions& options) const;
+  /// Copies these flags into the choices InputFlags gathers (pipeline::resolveInputChoices
+  /// checks and resolves them).
+  void fill(pipeline::InputChoices& choices) const;
 };
 
 }  // namespace isovdb::cli

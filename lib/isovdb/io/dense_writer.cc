@@ -6,10 +6,10 @@
 
 #include "isovdb/errors.h"
 #include "isovdb/io/atomic_file.h"
+#include "isovdb/io/dense_array.h"
 #include "isovdb/io/little_endian.h"
 #include "isovdb/io/path_util.h"
 #include "isovdb/volume/grids.h"
-#include "isovdb/volume/sampled_box.h"
 
 namespace isovdb::io {
 
@@ -60,14 +60,7 @@ bool isDenseOutputPath(const std::filesystem::path& path) {
 DenseWriteResult writeDenseVolume(const std::filesystem::path& path, const volume::Volume& volume) {
   if (!isDenseOutputPath(path))
     throw InputError("'" + path.string() + "': unknown dense format, expected .raw (with a .nhdr header) or .nrrd");
-  const volume::GridStats stats = volume.stats();
-  volume::IndexBox box;
-  if (const auto sampled = volume::sampledBox(volume)) {
-    box = *sampled;
-  } else {
-    box.min = stats.bboxMin;
-    box.max = stats.bboxMax;
-  }
+  const volume::IndexBox box = defaultDenseBox(volume);
   DenseWriteResult result;
   for (int a = 0; a < 3; ++a) {
     result.dims[a] = std::int64_t{box.max[a]} - box.min[a] + 1;

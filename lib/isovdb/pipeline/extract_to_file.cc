@@ -1,0 +1,32 @@
+#include "isovdb/pipeline/extract_to_file.h"
+
+#include "isovdb/errors.h"
+#include "isovdb/io/atomic_file.h"
+#include "isovdb/io/mesh_file.h"
+#include "isovdb/io/path_util.h"
+#include "isovdb/io/ply_stream_writer.h"
+
+namespace isovdb::pipeline {
+
+std::uint64_t extractToFile(const volume::Volume& volume, const ExtractOptions& options,
+                            const std::filesystem::path& path, Interrupter* interrupter, Statistics* stats) {
+  if (!io::isMeshPath(path))
+    throw InputError("'" + path.string() + "': unknown mesh format, expected .ply or .obj");
+  io::AtomicFile::checkWritable(path);
+  const bool stream = options.method != ContourMethod::Vdb && io::lowerExtension(path) == ".ply";
+  if (stream) {
+    const volume::Geometry& g = volume.geometry();
+    io::PlyStreamWriter writer(path, g.spacing, g.origin);
+    extractInto(volume, options, writer, interrupter, stats);
+    Statistics::StageTimer timer(stats, "write");
+    writer.commit();
+    if (stats) (*stats)["output"]["streamed"] = true;
+    return writer.triangleCount();
+  }
+  const mesh::Mesh mesh = extractMesh(volume, options, interrupter, stats);
+  Statistics::StageTimer timer(stats, "write");
+  io::writeMesh(path, mesh);
+  return mesh.triangles.size();
+}
+
+}  // namespace isovdb::pipeline

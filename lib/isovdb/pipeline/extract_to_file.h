@@ -1,0 +1,24 @@
+/// @file extract_to_file.h
+/// @brief The main job straight into a mesh file, as `isovdb extract -o` runs it (the CLI
+///        and the Python bindings share it, so both write the same bytes).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+
+#include "isovdb/pipeline/extract.h"
+
+namespace isovdb::pipeline {
+
+/// Contours `volume` into `path` (.ply or .obj, by extension). The octree methods
+/// stream a .ply meta-cell by meta-cell (the mesh is never held whole; the header
+/// keeps room for the final counts); otherwise the mesh is built and written whole.
+/// Written through a temporary file. Records "output.streamed" and a "write" timing.
+/// @return the number of triangles written
+/// @throw InputError for another extension or invalid options; IoError when the path
+///        is not writable (checked before the work starts); Interrupted on cancellation.
+std::uint64_t extractToFile(const volume::Volume& volume, const ExtractOptions& options,
+                            const std::filesystem::path& path, Interrupter* interrupter = nullptr,
+                            Statistics* stats = nullptr);
+
+}  // namespace isovdb::pipeline

@@ -1,0 +1,128 @@
+// Mesh (numpy views of the C++ buffers), its validation and files.
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "bindings.h"
+#include "isovdb/io/mesh_file.h"
+#include "isovdb/mesh/validate.h"
+#include "isovdb/pipeline/mesh_report.h"
+
+namespace isovdb::python {
+
+namespace {
+
+/// An (n, 3) numpy view of a vector of 3-arrays, kept alive by `owner` (the Python Mesh).
+template <typename T>
+py::array view(const std::vector<std::array<T, 3>>& values, py::handle owner) {
+  static_assert(sizeof(std::array<T, 3>) == 3 * sizeof(T));
+  const std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(values.size()), 3};
+  const std::vector<py::ssize_t> strides{3 * sizeof(T), sizeof(T)};
+  if (values.empty()) return py::array_t<T>(shape);  // no buffer to point at
+  return py::array_t<T>(shape, strides, values.front().data(), owner);
+}
+
+/// Copies an (n, 3) array-like into a vector of 3-arrays.
+template <typename T>
+std::vector<std::array<T, 3>> rows(const py::object& object, const char* name) {
+  const auto array = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(object);
+  if (!array || array.ndim() != 2 || array.shape(1) != 3)
+    throw py::value_error(std::string("Mesh: ") + name + " must be an (n, 3) array");
+  std::vector<std::array<T, 3>> out(static_cast<std::size_t>(array.shape(0)));
+  std::copy_n(array.data(), array.size(), out.empty() ? nullptr : out.front().data());
+  return out;
+}
+
+PyMesh makeMesh(const py::object& vertices, const py::object& triangles, const py::object& normals) {
+  PyMesh result;
+  result.mesh.positions = rows<float>(vertices, "vertices");
+  if (!normals.is_none()) {
+    result.mesh.normals = rows<float>(normals, "normals");
+    if (result.mesh.normals.size() != result.mesh.positions.size())
+      throw py::value_error("Mesh: " + std::to_string(result.mesh.normals.size()) + " normals for " +
+                            std::to_string(result.mesh.positions.size()) + " vertices");
+  }
+  const auto indices = py::array::ensure(triangles);
+  if (indices && indices.dtype().kind() != 'i' && indices.dtype().kind() != 'u')
+    throw py::value_error("Mesh: triangles must hold integers");
+  result.mesh.triangles = rows<std::uint32_t>(triangles, "triangles");
+  for (const auto& triangle : result.mesh.triangles)
+    for (std::uint32_t index : triangle)
+      if (index >= result.mesh.positions.size())
+        throw py::value_error("Mesh: triangle index " + std::to_string(index) + " >= " +
+                              std::to_string(result.mesh.positions.size()) + " vertices");
+  return result;
+}
+
+py::dict check(const PyMesh& self, bool selfIntersections) {
+  Json report;
+  {
+    py::gil_scoped_release release;
+    report = pipeline::toJson(mesh::validateMesh(self.mesh, {.selfIntersections = selfIntersections}));
+  }
+  return toPython(report);
+}
+
+PyMesh readMesh(const std::filesystem::path& path) {
+  PyMesh result;
+  py::gil_scoped_release release;
+  result.mesh = io::readMesh(path);
+  return result;
+}
+
+}  // namespace
+
+void bindMesh(py::module_& m) {
+  py::class_<PyMesh>(m, "Mesh", R"doc(
+An indexed triangle mesh in world space (as extract() returns it, or read_mesh() reads it).
+
+vertices, triangles and normals are numpy views onto the mesh's own buffers (no copy):
+writing into them changes the mesh; they stay valid as long as any of them or the Mesh lives.)doc")
+      .def(py::init(&makeMesh), py::arg("vertices"), py::arg("triangles"), py::arg("normals") = py::none(),
+           "Mesh from an (n, 3) array of positions, an (m, 3) array of vertex indices and optionally (n, 3) "
+           "normals (copied, as float32 and uint32).")
+      .def_property_readonly(
+          "vertices", [](py::object self) { return view(self.cast<const PyMesh&>().mesh.positions, self); },
+          "(n, 3) float32 positions, world units.")
+      .def_property_readonly(
+          "triangles", [](py::object self) { return view(self.cast<const PyMesh&>().mesh.triangles, self); },
+          "(m, 3) uint32 vertex indices, counter-clockwise seen from outside (outward orientation).")
+      .def_property_readonly(
+          "normals",
+          [](py::object self) -> py::object {
+            const PyMesh& mesh = self.cast<const PyMesh&>();
+            if (mesh.mesh.normals.empty()) return py::none();
+            return view(mesh.mesh.normals, self);
+          },
+          "(n, 3) float32 per-vertex normals, or None when the mesh has none (the contouring methods "
+          "produce none today; PLY files and Mesh(normals=...) may carry them).")
+      .def_property_readonly("vertex_count", [](const PyMesh& m) { return m.mesh.vertexCount(); })
+      .def_property_readonly("triangle_count", [](const PyMesh& m) { return m.mesh.triangleCount(); })
+      .def_property_readonly(
+          "statistics", [](const PyMesh& m) { return toPython(m.statistics); },
+          "Figures of the run that made the mesh (as `isovdb extract --stats` writes them): timings_s per "
+          "stage, grid and mesh counts, meta-cells contoured/skipped, seams stitched. Empty for read_mesh().")
+      .def("check", &check, py::arg("self_intersections") = true, R"doc(
+Validates the mesh and returns the figures `isovdb check` reports under "mesh": vertices,
+referenced_vertices, triangles, edges, boundary_edges, non_manifold_edges,
+non_manifold_vertices, inconsistently_oriented_edges, degenerate_triangles, components,
+euler_characteristic, self_intersecting_pairs (-1 when self_intersections=False), closed,
+manifold, and per component its triangles, vertices, edges, Euler characteristic, closed,
+manifold and genus. Exact (CGAL predicates); parallel.)doc")
+      .def("write", [](const PyMesh& self, const std::filesystem::path& path) {
+            py::gil_scoped_release release;
+            io::writeMesh(path, self.mesh);
+          }, py::arg("path"), R"doc(
+Writes the mesh by extension: .ply (binary little-endian, the same bytes as the CLI writes)
+or .obj, through a temporary file. Raises ValueError for another extension, OSError when
+the path is not writable.)doc")
+      .def("__repr__", [](const PyMesh& m) {
+        return "<isovdb.Mesh " + std::to_string(m.mesh.vertexCount()) + " vertices, " +
+               std::to_string(m.mesh.triangleCount()) + " triangles>";
+      });
+
+  m.def("read_mesh", &readMesh, py::arg("path"),
+        "Reads a .ply mesh. Raises OSError for a missing file, ValueError for a malformed one.");
+}
+
+}  // namespace isovdb::python

@@ -1,0 +1,42 @@
+// The `isovdb` Python module: exceptions, then one registration per topic.
+#include <pybind11/pybind11.h>
+
+#include "bindings.h"
+#include "isovdb/errors.h"
+
+namespace py = pybind11;
+
+PYBIND11_MODULE(isovdb, m) {
+  m.doc() =
+      "isovdb: sparse volumes to clean triangle meshes.\n\n"
+      "Volumes (binary masks, scalar fields, signed distance fields) come from files\n"
+      "(read_volume, read_segy) or numpy arrays (from_numpy); distance_field() turns a\n"
+      "mask into a narrow-band signed distance field; extract() contours any volume into\n"
+      "a Mesh whose vertices/triangles are numpy views. Arrays are indexed [x, y, z].\n\n"
+      "Errors: bad input raises ValueError, an unreadable or unwritable file OSError,\n"
+      "both with the library's one-line message naming the file and the problem.";
+  m.attr("__version__") = "0.1.0";
+
+  static py::exception<isovdb::Interrupted> interrupted(m, "Interrupted", PyExc_RuntimeError);
+  interrupted.doc() = "Long work was cancelled through its progress callback.";
+  static py::exception<isovdb::TopologyError> topology(m, "TopologyError", PyExc_RuntimeError);
+  topology.doc() = "A mesh or volume violates a topological guarantee that was required.";
+  py::register_exception_translator([](std::exception_ptr error) {
+    try {
+      if (error) std::rethrow_exception(error);
+    } catch (const isovdb::InputError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const isovdb::IoError& e) {
+      PyErr_SetString(PyExc_OSError, e.what());
+    } catch (const isovdb::Interrupted& e) {
+      PyErr_SetString(interrupted.ptr(), e.what());
+    } catch (const isovdb::TopologyError& e) {
+      PyErr_SetString(topology.ptr(), e.what());
+    }
+  });
+
+  isovdb::python::bindVolume(m);
+  isovdb::python::bindSeismic(m);
+  isovdb::python::bindMesh(m);
+  isovdb::python::bindExtract(m);
+}

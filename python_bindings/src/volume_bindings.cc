@@ -1,0 +1,333 @@
+// Volume, from_numpy, read_volume, distance_field.
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <cmath>
+
+#include "array_slice_stream.h"
+#include "bindings.h"
+#include "isovdb/errors.h"
+#include "isovdb/io/dense_array.h"
+#include "isovdb/io/dense_writer.h"
+#include "isovdb/io/vdb_file.h"
+#include "isovdb/pipeline/input_choices.h"
+#include "isovdb/pipeline/load_volume.h"
+#include "isovdb/volume/digital_topology.h"
+#include "isovdb/volume/distance_field.h"
+#include "isovdb/volume/ingest.h"
+#include "isovdb/volume/sampled_box.h"
+#include "progress_callback.h"
+#include "volume_bindings.h"
+
+namespace isovdb::python {
+
+namespace {
+
+/// The library's sample type of a numpy dtype, or a ValueError naming the dtype.
+io::SampleType sampleTypeOf(const py::dtype& dtype) {
+  const char kind = dtype.kind();
+  const auto size = dtype.itemsize();
+  if (kind == 'b') return io::SampleType::UInt8;
+  if (kind == 'u' && size == 1) return io::SampleType::UInt8;
+  if (kind == 'u' && size == 2) return io::SampleType::UInt16;
+  if (kind == 'u' && size == 4) return io::SampleType::UInt32;
+  if (kind == 'i' && size == 1) return io::SampleType::Int8;
+  if (kind == 'i' && size == 2) return io::SampleType::Int16;
+  if (kind == 'i' && size == 4) return io::SampleType::Int32;
+  if (kind == 'f' && size == 4) return io::SampleType::Float32;
+  if (kind == 'f' && size == 8) return io::SampleType::Float64;
+  throw py::value_error("from_numpy: unsupported dtype " + py::str(static_cast<py::handle>(dtype)).cast<std::string>() +
+                        ", expected bool, (u)int8, (u)int16, (u)int32, float32 or float64");
+}
+
+std::string shapeText(const py::array& array) {
+  return py::str(py::tuple(py::cast(std::vector<py::ssize_t>(array.shape(), array.shape() + array.ndim()))))
+      .cast<std::string>();
+}
+
+PyVolume fromNumpy(const py::object& object, const py::object& threshold, const py::object& voxelSize,
+                   const py::object& origin) {
+  if (!py::isinstance<py::array>(object))
+    throw py::value_error("from_numpy: expected a numpy array, got " +
+                          py::str(py::type::handle_of(object).attr("__name__")).cast<std::string>());
+  const auto array = py::reinterpret_borrow<py::array>(object);
+  if (array.ndim() != 3)
+    throw py::value_error("from_numpy: expected a 3-D array indexed [x, y, z], got a " + std::to_string(array.ndim()) +
+                          "-D array of shape " + shapeText(array));
+  if (array.size() == 0) throw py::value_error("from_numpy: empty array of shape " + shapeText(array));
+  const io::SampleType type = sampleTypeOf(array.dtype());
+  if (!(array.flags() & py::array::c_style))
+    throw py::value_error("from_numpy: the array is not C-contiguous (a transposed or sliced view); "
+                          "pass numpy.ascontiguousarray(a), which copies it");
+  const bool bigEndian = array.dtype().attr("byteorder").cast<std::string>() == ">";
+  const std::array<double, 3> spacing = threeDoubles(voxelSize, "voxel_size");
+  for (double s : spacing)
+    if (!(s > 0) || !std::isfinite(s)) throw py::value_error("voxel_size: expected finite values > 0");
+  const std::array<double, 3> position = threeDoubles(origin, "origin");
+  const bool scalar = threshold.is_none() && io::isFloatingPoint(type);
+  volume::MaskRule rule;
+  if (!threshold.is_none()) rule.threshold = threshold.cast<double>();
+
+  ArraySliceStream stream(static_cast<const std::byte*>(array.data()),
+                          {array.shape(0), array.shape(1), array.shape(2)}, type, bigEndian, spacing, position);
+  PyVolume result;
+  {
+    py::gil_scoped_release release;
+    result.volume = scalar ? volume::ingestScalar(stream) : volume::ingestMask(stream, rule);
+  }
+  Json& input = result.input;
+  input["format"] = "numpy";
+  input["dims"] = std::array<std::int64_t, 3>{array.shape(0), array.shape(1), array.shape(2)};
+  input["dtype"] = py::str(static_cast<py::handle>(array.dtype())).cast<std::string>();
+  if (!scalar) input["mask_rule"] = rule.describe();
+  return result;
+}
+
+PyVolume readVolume(const std::filesystem::path& path, const py::object& dims, const py::object& dtype, bool bigEndian,
+                    const py::object& spacing, std::int64_t headerBytes, py::object threshold, py::object labels,
+                    py::object mask, py::object maskRange, float clip, int inlineByte, int crosslineByte,
+                    bool scalar, const std::string& grid, bool segy, bool sampleStatistics,
+                    const py::object& progress) {
+  const InputKeywords keywords{.threshold = std::move(threshold), .labels = std::move(labels), .mask = std::move(mask),
+                               .maskRange = std::move(maskRange), .clip = clip, .inlineByte = inlineByte,
+                               .crosslineByte = crosslineByte};
+  pipeline::InputChoices choices = keywords.choices();
+  choices.scalar = scalar;
+  choices.grid = grid;
+  choices.segy = segy;
+  if (!dims.is_none() || !dtype.is_none()) {
+    if (dims.is_none() || dtype.is_none())
+      throw py::value_error("'" + path.string() + "': a raw file needs both dims=(x, y, z) and dtype");
+    const auto d = dims.cast<std::vector<std::int64_t>>();
+    if (d.size() != 3) throw py::value_error("'" + path.string() + "': dims: expected (x, y, z)");
+    const py::dtype type = py::dtype::from_args(dtype);
+    io::RawOptions raw;
+    raw.dims = {d[0], d[1], d[2]};
+    raw.type = sampleTypeOf(type);
+    raw.bigEndian = bigEndian || type.attr("byteorder").cast<std::string>() == ">";
+    if (!spacing.is_none()) raw.spacing = threeDoubles(spacing, "spacing");
+    raw.headerBytes = headerBytes;
+    choices.raw = raw;
+  }
+  pipeline::InputOptions options = pipeline::resolveInputChoices(path, choices);
+  options.sampleStatistics = sampleStatistics;
+  return loadWithProgress(path, options, progress);
+}
+
+py::array toNumpy(const PyVolume& self, const py::object& bbox) {
+  volume::IndexBox box;
+  if (bbox.is_none()) {
+    box = io::defaultDenseBox(self.volume);
+  } else {
+    const auto corners = bbox.cast<std::pair<std::array<int, 3>, std::array<int, 3>>>();
+    box = {.min = corners.first, .max = corners.second};
+  }
+  std::vector<py::ssize_t> shape(3);
+  for (int a = 0; a < 3; ++a) {
+    shape[a] = static_cast<py::ssize_t>(box.max[a]) - box.min[a] + 1;
+    if (shape[a] <= 0)
+      throw py::value_error("to_numpy: empty box (min " + py::str(toTuple(box.min)).cast<std::string>() + ", max " +
+                            py::str(toTuple(box.max)).cast<std::string>() + ")" +
+                            (bbox.is_none() ? ": the volume has no active voxel" : ""));
+  }
+  if (self.volume.kind() == volume::VolumeKind::Mask) {
+    py::array_t<bool> out(shape);
+    bool* data = out.mutable_data();
+    py::gil_scoped_release release;
+    io::copyToDense(self.volume, box, data);
+    return out;
+  }
+  py::array_t<float> out(shape);
+  float* data = out.mutable_data();
+  py::gil_scoped_release release;
+  io::copyToDense(self.volume, box, data);
+  return out;
+}
+
+py::dict info(const PyVolume& self) {
+  Json json = Json::object();
+  json["name"] = self.volume.name();
+  pipeline::recordGridStats(self.volume, json);
+  if (const auto box = volume::sampledBox(self.volume)) {
+    json["sampled_min"] = box->min;
+    json["sampled_max"] = box->max;
+  }
+  json["input"] = self.input;
+  return toPython(json);
+}
+
+void write(const PyVolume& self, const std::filesystem::path& path, const std::string& gridName) {
+  py::gil_scoped_release release;
+  if (pipeline::isVdbPath(path)) io::writeVdb(path, self.volume, {.gridName = gridName});
+  else if (io::isDenseOutputPath(path)) io::writeDenseVolume(path, self.volume);
+  else throw InputError("'" + path.string() + "': unknown volume format, expected .vdb, .raw or .nrrd");
+}
+
+PyVolume distanceField(const PyVolume& source, int halfWidth, int closing, int chunkSize, const py::object& progress) {
+  CallbackProgress callback(progress);
+  PyVolume result;
+  const volume::DistanceFieldOptions options{.halfWidth = halfWidth, .closingSteps = closing, .chunkSize = chunkSize};
+  callback.run([&] { result.volume = volume::distanceField(source.volume, options, &callback); });
+  result.input = source.input;
+  result.input["distance_field"] = {{"half_width", halfWidth}, {"closing", closing}};
+  return result;
+}
+
+std::int64_t eulerCharacteristic(const PyVolume& source, int adjacency, const py::object& progress) {
+  if (adjacency != 6 && adjacency != 26)
+    throw py::value_error("adjacency: expected 26 or 6, got " + std::to_string(adjacency));
+  const volume::Adjacency rule = adjacency == 6 ? volume::Adjacency::Foreground6 : volume::Adjacency::Foreground26;
+  if (source.volume.kind() == volume::VolumeKind::Scalar)
+    throw InputError("'" + source.volume.name() + "': a scalar field has no solid; use a mask or a distance field");
+  CallbackProgress callback(progress);
+  std::int64_t chi = 0;
+  callback.run([&] {
+    const volume::Volume mask = source.volume.kind() == volume::VolumeKind::Mask
+                                    ? source.volume
+                                    : volume::interiorMask(source.volume);
+    chi = volume::eulerCharacteristic(mask, &callback, rule);
+  });
+  return chi;
+}
+
+}  // namespace
+
+pipeline::InputChoices InputKeywords::choices() const {
+  pipeline::InputChoices result;
+  if (!threshold.is_none()) result.threshold = threshold.cast<double>();
+  if (!labels.is_none()) result.labels = labels.cast<std::vector<double>>();
+  result.segyBytes = {.inlineByte = inlineByte, .crosslineByte = crosslineByte};
+  result.clip = clip;
+  if (!mask.is_none()) result.mask = mask.cast<std::string>();
+  if (!maskRange.is_none()) result.maskRange = maskRange.cast<std::array<double, 2>>();
+  return result;
+}
+
+PyVolume loadWithProgress(const std::filesystem::path& path, const pipeline::InputOptions& options,
+                          const py::object& progress) {
+  CallbackProgress callback(progress);
+  pipeline::Statistics stats;
+  PyVolume result;
+  callback.run([&] { result.volume = pipeline::loadVolume(path, options, &callback, &stats); });
+  result.input = stats["input"];
+  result.input["read_s"] = stats["timings_s"]["read"];
+  return result;
+}
+
+void bindVolume(py::module_& m) {
+  py::class_<PyVolume>(m, "Volume", R"doc(
+A sparse volume: one OpenVDB grid in voxel index space, its kind and its world geometry
+(world = origin + spacing * index).
+
+kind is "mask" (binary, inside = active), "scalar" (a sampled field, contoured at an
+isovalue) or "sdf" (narrow-band signed distance in voxels, negative inside). Make one with
+read_volume(), read_segy(), from_numpy() or distance_field().)doc")
+      .def_property_readonly(
+          "kind", [](const PyVolume& v) { return std::string(volume::volumeKindName(v.volume.kind())); },
+          "\"mask\", \"scalar\" or \"sdf\".")
+      .def_property_readonly("name", [](const PyVolume& v) { return v.volume.name(); },
+                             "Name of the grid (the source file, or the grid name of a .vdb).")
+      .def_property_readonly("spacing", [](const PyVolume& v) { return toTuple(v.volume.geometry().spacing); },
+                             "World units per voxel along x, y, z.")
+      .def_property_readonly("origin", [](const PyVolume& v) { return toTuple(v.volume.geometry().origin); },
+                             "World position of voxel (0, 0, 0).")
+      .def_property_readonly(
+          "shape",
+          [](const PyVolume& v) {
+            const volume::IndexBox box = io::defaultDenseBox(v.volume);
+            return py::make_tuple(box.max[0] - box.min[0] + 1, box.max[1] - box.min[1] + 1,
+                                  box.max[2] - box.min[2] + 1);
+          },
+          "Shape of to_numpy() without a box: the sampled box (the input's dims), else the active bounding box.")
+      .def("info", &info, R"doc(
+Figures of the grid as a dict, as `isovdb info` prints them: kind, active_voxels,
+leaf_nodes, active_tiles, grid_memory_bytes, bbox_min/bbox_max (inclusive index box of
+the active voxels), spacing, origin, min_value/max_value (fields), sampled_min/sampled_max
+(the input's box, when known), and "input": what reading recorded (format, dims, dtype or
+sample type, mask rule, SEG-Y geometry, sample percentiles when asked, read time).)doc")
+      .def("to_numpy", &toNumpy, py::arg("bbox") = py::none(), R"doc(
+Dense copy of a box of the volume, indexed [x, y, z] (C order, z fastest).
+
+bbox: None, or ((x0, y0, z0), (x1, y1, z1)), inclusive index bounds. None: the sampled
+box (a volume from from_numpy() returns its array's shape), else the active bounding box.
+Returns bool for masks (True inside), float32 otherwise; inactive voxels read as the
+grid's background (0 for scalars, the clip value for clipped SEG-Y, +/-half_width
+outside the band of a distance field). Raises ValueError for an empty box.)doc")
+      .def("write", &write, py::arg("path"), py::arg("grid_name") = "", R"doc(
+Writes the volume by extension: .vdb (one grid with its world transform; distance fields
+as level sets in world units, readable by pyopenvdb and VFX tools; grid_name: default
+"mask", "field" or "sdf"), or .raw/.nrrd (dense float32 of the sampled box, with an NRRD
+header). Written through a temporary file. Raises OSError when the path is not writable.)doc")
+      .def("__repr__", [](const PyVolume& v) {
+        return "<isovdb.Volume " + std::string(volume::volumeKindName(v.volume.kind())) + " '" + v.volume.name() +
+               "' shape " + py::str(py::cast(v).attr("shape")).cast<std::string>() + ">";
+      });
+
+  m.def("from_numpy", &fromNumpy, py::arg("array"), py::arg("threshold") = py::none(),
+        py::arg("voxel_size") = 1.0, py::arg("origin") = py::make_tuple(0.0, 0.0, 0.0), R"doc(
+Makes a Volume from a 3-D numpy array indexed [x, y, z] (the order of pyopenvdb's
+copyFromArray and of the CLI's --dims X,Y,Z; a raw file for the CLI is array.T.tofile()).
+
+array: C-contiguous, dtype bool, (u)int8, (u)int16, (u)int32, float32 or float64, every
+  value finite. Read in place (no copy) by the same streaming ingest as a file.
+threshold: None: integer and bool arrays become a mask (inside = value > 0), float arrays
+  a scalar field (contour it with extract(iso=...)). A number: a mask, inside = value > threshold.
+voxel_size: world units per voxel, one number or (sx, sy, sz).
+origin: world position of voxel [0, 0, 0].
+
+Raises ValueError for a non-array, an array that is not 3-D, empty, not C-contiguous
+(use numpy.ascontiguousarray, which copies), of another dtype, or holding NaN/inf.)doc");
+
+  m.def("read_volume", &readVolume, py::arg("path"), py::kw_only(), py::arg("dims") = py::none(),
+        py::arg("dtype") = py::none(), py::arg("big_endian") = false, py::arg("spacing") = py::none(),
+        py::arg("header_bytes") = 0, py::arg("threshold") = py::none(), py::arg("labels") = py::none(),
+        py::arg("mask") = py::none(), py::arg("mask_range") = py::none(), py::arg("clip") = 0.f,
+        py::arg("inline_byte") = 189, py::arg("crossline_byte") = 193, py::arg("scalar") = false,
+        py::arg("grid") = "", py::arg("segy") = false, py::arg("sample_statistics") = false,
+        py::arg("progress") = py::none(),
+        R"doc(
+Reads a volume file as a sparse Volume: raw (with dims and dtype), NRRD (.nrrd/.nhdr),
+MetaImage (.mhd/.mha), SEG-Y (.sgy/.segy, or segy=True) or .vdb. Keywords map one to one
+onto the CLI's input flags:
+
+dims=(x, y, z), dtype (numpy dtype or name: "uint8", ">u2", ...), big_endian, spacing
+  (number or (sx, sy, sz)), header_bytes: a headerless raw file (--dims --type ...).
+threshold: mask, inside = value > threshold (default 0).   labels: mask, inside = value in labels.
+mask="above A" | "below A", mask_range=(lo, hi): mask rules (exclude threshold/labels).
+scalar: keep the samples as a scalar field (default for SEG-Y without a mask rule).
+clip: scalars, samples with |value| < clip stay inactive and the background is clip.
+inline_byte, crossline_byte: SEG-Y trace header bytes of the line numbers (189, 193).
+grid: .vdb grid name (default: the first float or bool grid).
+sample_statistics: also record the samples' range and percentiles in info()["input"].
+progress: callable(stage: str, percent: int) called as the reading advances; if it
+  raises, the reading stops and its exception propagates.
+
+Raises OSError for a missing or unreadable file, ValueError for a bad header, bad data or
+contradicting keywords (the message names the file and the problem).)doc");
+
+  m.def("euler_characteristic", &eulerCharacteristic, py::arg("volume"), py::arg("adjacency") = 26,
+        py::arg("progress") = py::none(), R"doc(
+Euler characteristic of the solid a mask (or a distance field's interior, < 0) describes:
+the union of its voxels' closed cubes, components - tunnels + cavities (`isovdb check
+--against`). A closed mesh of its boundary should have twice this value:
+mesh.check()["euler_characteristic"] == 2 * euler_characteristic(volume).
+
+adjacency: 26 (inside voxels touching at a face, edge or corner are connected) or 6 (faces
+only; the reading regular contouring follows, except that each pair of cells regrouped by
+Wenger's manifold fix changes the mesh's value by 2).
+Raises ValueError for a scalar field or another adjacency.)doc");
+
+  m.def("distance_field", &distanceField, py::arg("volume"), py::arg("half_width") = 3, py::arg("closing") = 0,
+        py::arg("chunk_size") = 128, py::arg("progress") = py::none(), R"doc(
+Narrow-band signed distance field of a mask (kind "sdf"): distances in voxels, NEGATIVE
+inside, the surface half-way between inside and outside voxel centres.
+
+half_width: band half-width in voxels (>= 2 for contouring); voxels farther away read +/-half_width.
+closing: morphological closing steps before the transform (0 keeps the mask's topology).
+chunk_size: the band is computed in cubes of this many voxels (multiple of 8; 0: at once).
+progress: callable(stage, percent); raising cancels and propagates.
+Raises ValueError when `volume` is not a mask.)doc");
+}
+
+}  // namespace isovdb::python

@@ -1,0 +1,162 @@
+"""extract: methods, options, guarantees, threads, progress, GIL."""
+import os
+import signal
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import isovdb
+from conftest import ball, torus
+
+
+@pytest.fixture(scope="module")
+def torus_volume():
+    return isovdb.from_numpy(torus((48, 48, 24), (24, 24, 12), 14, 6))
+
+
+@pytest.mark.parametrize("method", ["adaptive", "regular", "vdb"])
+def test_every_method_gives_a_closed_genus_one_torus(method, torus_volume):
+    mesh = isovdb.extract(torus_volume, method=method, meta_cell=16)
+    report = mesh.check()
+    assert report["closed"] and report["manifold"]
+    assert report["components"] == 1 and report["euler_characteristic"] == 0
+    assert report["largest_components"][0]["genus"] == 1
+    assert mesh.statistics["contour"]["triangles"] == mesh.triangle_count
+
+
+def test_adaptive_uses_far_fewer_triangles_than_regular(torus_volume):
+    regular = isovdb.extract(torus_volume, method="regular")
+    adaptive = isovdb.extract(torus_volume, method="adaptive")
+    assert adaptive.triangle_count * 2 < regular.triangle_count
+    assert adaptive.check()["self_intersecting_pairs"] == 0
+
+
+def test_octree_levels_change_the_mesh(torus_volume):
+    fine = isovdb.extract(torus_volume, method="regular")
+    coarse = isovdb.extract(torus_volume, method="regular", finest_size=2)
+    assert coarse.triangle_count < fine.triangle_count
+    capped = isovdb.extract(torus_volume, method="adaptive", max_cell_size=2)
+    loose = isovdb.extract(torus_volume, method="adaptive", max_cell_size=16)
+    assert capped.triangle_count > loose.triangle_count
+    plain = isovdb.extract(torus_volume, method="adaptive", intersection_free=False)
+    assert plain.triangle_count <= loose.triangle_count
+
+
+def test_meta_cells_and_threads_do_not_change_the_mesh(torus_volume):
+    one = isovdb.extract(torus_volume, method="adaptive", meta_cell=16, threads=1)
+    many = isovdb.extract(torus_volume, method="adaptive", meta_cell=16, threads=None)
+    assert np.array_equal(one.vertices, many.vertices)
+    assert np.array_equal(one.triangles, many.triangles)
+    assert one.statistics["meta_cells"]["contoured"] > 1
+
+
+def test_iso_grows_the_surface(torus_volume):
+    base = isovdb.extract(torus_volume, method="vdb")
+    grown = isovdb.extract(torus_volume, method="vdb", iso=1.5)
+    assert np.ptp(grown.vertices[:, 0]) > np.ptp(base.vertices[:, 0]) + 2
+
+
+def test_scalar_field_is_contoured_at_iso():
+    x, y, z = np.indices((32, 32, 32)).astype(np.float32)
+    field = 10.0 - np.sqrt((x - 16) ** 2 + (y - 16) ** 2 + (z - 16) ** 2)  # inside: >= iso
+    mesh = isovdb.extract(isovdb.from_numpy(field), method="regular", iso=2.0)
+    radii = np.linalg.norm(mesh.vertices - 16, axis=1)
+    assert np.allclose(radii, 8.0, atol=0.1)
+    assert mesh.check()["closed"]
+
+
+def test_sdf_input_gives_the_same_mesh_as_its_mask():
+    mask = isovdb.from_numpy(ball((30, 30, 30), (15, 15, 15), 9))
+    direct = isovdb.extract(mask, method="regular")
+    via_sdf = isovdb.extract(isovdb.distance_field(mask), method="regular")
+    assert np.array_equal(direct.vertices, via_sdf.vertices)
+
+
+def test_boundary_open_leaves_the_mesh_open_on_the_sampled_box():
+    cut = np.zeros((20, 20, 20), np.uint8)
+    cut[:8, 5:15, 5:15] = 1  # touches the x = 0 face
+    capped = isovdb.extract(isovdb.from_numpy(cut), method="regular")
+    opened = isovdb.extract(isovdb.from_numpy(cut), method="regular", boundary="open")
+    assert capped.check()["closed"]
+    report = opened.check()
+    assert not report["closed"] and report["boundary_edges"] > 0
+    assert capped.vertices[:, 0].min() == 0.0
+
+
+@pytest.mark.parametrize("kwargs, message", [
+    ({"method": "marching"}, "unknown method"),
+    ({"boundary": "wrap"}, "unknown mode"),
+    ({"meta_cell": 100}, "meta"),
+    ({"threads": -2}, "threads"),
+])
+def test_invalid_options_raise_value_error(kwargs, message, torus_volume):
+    with pytest.raises(ValueError, match=message):
+        isovdb.extract(torus_volume, **kwargs)
+
+
+def test_progress_reports_stages_and_percentages(torus_volume):
+    seen = []
+    isovdb.extract(torus_volume, method="adaptive", meta_cell=16, progress=lambda s, p: seen.append((s, p)))
+    stages = {stage for stage, _ in seen}
+    assert "contouring meta-cells" in stages
+    percents = [p for s, p in seen if s == "contouring meta-cells"]
+    assert percents == sorted(percents) and 0 <= percents[0] and percents[-1] == 100
+
+
+def test_raising_progress_cancels_and_propagates(torus_volume):
+    class Cancel(Exception):
+        pass
+
+    calls = []
+
+    def progress(stage, percent):
+        calls.append(stage)
+        if stage == "contouring meta-cells":
+            raise Cancel("enough")
+
+    with pytest.raises(Cancel, match="enough"):
+        isovdb.extract(torus_volume, method="regular", meta_cell=16, progress=progress)
+    assert calls.count("contouring meta-cells") == 1  # nothing called after the exception
+    # the module is still usable afterwards
+    assert isovdb.extract(torus_volume, method="regular", meta_cell=16).check()["closed"]
+
+
+@pytest.fixture(scope="module")
+def big_ball():
+    """A volume whose regular contouring on one thread takes about a second."""
+    return isovdb.from_numpy(ball((160, 160, 160), (80, 80, 80), 66))
+
+
+def test_gil_is_released_while_contouring(big_ball):
+    ticks = []
+    stop = threading.Event()
+
+    def ticker():
+        while not stop.is_set():
+            ticks.append(time.perf_counter())
+            time.sleep(0.001)
+
+    thread = threading.Thread(target=ticker)
+    thread.start()
+    time.sleep(0.01)
+    start = time.perf_counter()
+    isovdb.extract(big_ball, method="regular", threads=1)
+    end = time.perf_counter()
+    stop.set()
+    thread.join()
+    during = [t for t in ticks if start < t < end]
+    assert end - start > 0.2
+    # a thread holding the GIL would leave no tick between start and end
+    assert len(during) >= 20, (end - start, len(during))
+
+
+def test_ctrl_c_stops_the_work_with_keyboard_interrupt(big_ball):
+    timer = threading.Timer(0.15, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    start = time.perf_counter()
+    with pytest.raises(KeyboardInterrupt):
+        isovdb.extract(big_ball, method="regular", meta_cell=32, threads=1)  # no progress callback needed
+    timer.join()
+    assert time.perf_counter() - start < 1.0  # stopped early (a full run takes over a second)

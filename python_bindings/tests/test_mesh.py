@@ -1,0 +1,106 @@
+"""Mesh: numpy views, construction, check, write, read_mesh."""
+import gc
+
+import numpy as np
+import pytest
+
+import isovdb
+from conftest import ball
+
+TETRAHEDRON = (np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], np.float32),
+               np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]], np.uint32))
+
+
+@pytest.fixture(scope="module")
+def mesh():
+    return isovdb.extract(isovdb.from_numpy(ball((24, 24, 24), (12, 12, 12), 8)), method="vdb")
+
+
+def test_arrays_have_the_documented_shapes_and_types(mesh):
+    assert mesh.vertices.dtype == np.float32 and mesh.vertices.shape == (mesh.vertex_count, 3)
+    assert mesh.triangles.dtype == np.uint32 and mesh.triangles.shape == (mesh.triangle_count, 3)
+    assert mesh.triangles.max() < mesh.vertex_count
+    if mesh.normals is not None:
+        assert mesh.normals.shape == mesh.vertices.shape
+
+
+def test_vertices_are_views_onto_the_mesh_and_keep_it_alive():
+    mesh = isovdb.Mesh(*TETRAHEDRON)
+    first, second = mesh.vertices, mesh.vertices
+    assert np.shares_memory(first, second)
+    assert first.base is not None and not first.flags.owndata
+    first[0, 0] = 5.0
+    assert mesh.vertices[0, 0] == 5.0
+    triangles = mesh.triangles
+    del mesh, first
+    gc.collect()
+    assert second[0, 0] == 5.0 and triangles[3].tolist() == [1, 2, 3]
+
+
+def test_check_reports_a_closed_tetrahedron():
+    report = isovdb.Mesh(*TETRAHEDRON).check()
+    assert report["closed"] and report["manifold"]
+    assert (report["vertices"], report["edges"], report["triangles"]) == (4, 6, 4)
+    assert report["euler_characteristic"] == 2 and report["self_intersecting_pairs"] == 0
+    assert report["largest_components"][0]["genus"] == 0
+
+
+def test_check_finds_holes_and_skips_self_intersections_on_request():
+    vertices, triangles = TETRAHEDRON
+    report = isovdb.Mesh(vertices, triangles[:3]).check(self_intersections=False)
+    assert not report["closed"] and report["boundary_edges"] == 3
+    assert report["self_intersecting_pairs"] == -1
+
+
+def test_normals_travel_through_ply_files(tmp_path):
+    vertices, triangles = TETRAHEDRON
+    normals = vertices - vertices.mean(axis=0)
+    mesh = isovdb.Mesh(vertices, triangles, normals=normals)
+    assert np.array_equal(mesh.normals, normals) and np.shares_memory(mesh.normals, mesh.normals)
+    mesh.write(tmp_path / "n.ply")
+    back = isovdb.read_mesh(tmp_path / "n.ply")
+    assert np.array_equal(back.normals, normals)
+    assert isovdb.Mesh(vertices, triangles).normals is None
+    with pytest.raises(ValueError, match="3 normals for 4 vertices"):
+        isovdb.Mesh(vertices, triangles, normals=normals[:3])
+
+
+def test_mesh_constructor_rejects_bad_arrays():
+    vertices, triangles = TETRAHEDRON
+    with pytest.raises(ValueError, match=r"\(n, 3\)"):
+        isovdb.Mesh(vertices[:, :2], triangles)
+    with pytest.raises(ValueError, match="index 7"):
+        isovdb.Mesh(vertices, np.array([[0, 1, 7]]))
+    with pytest.raises(ValueError, match="integers"):
+        isovdb.Mesh(vertices, triangles.astype(np.float32))
+
+
+@pytest.mark.parametrize("suffix", [".ply", ".obj"])
+def test_write_and_read_back(tmp_path, mesh, suffix):
+    path = tmp_path / ("m" + suffix)
+    mesh.write(path)
+    assert path.stat().st_size > 0
+    if suffix == ".ply":
+        back = isovdb.read_mesh(path)
+        assert np.array_equal(back.vertices, mesh.vertices)
+        assert np.array_equal(back.triangles, mesh.triangles)
+        assert back.check() == mesh.check()
+
+
+def test_write_and_read_errors(tmp_path, mesh):
+    with pytest.raises(ValueError, match="stl"):
+        mesh.write(tmp_path / "m.stl")
+    with pytest.raises(OSError):
+        mesh.write(tmp_path / "missing" / "m.ply")
+    with pytest.raises(OSError, match="(?i)no such file"):
+        isovdb.read_mesh(tmp_path / "none.ply")
+    (tmp_path / "bad.ply").write_text("ply\nformat ascii 9.9\nend_header\n")
+    with pytest.raises(ValueError, match="bad.ply"):
+        isovdb.read_mesh(tmp_path / "bad.ply")
+
+
+def test_help_is_useful():
+    doc = isovdb.extract.__doc__
+    for word in ("adaptive", "regular", "vdb", "meta_cell", "finest_size", "max_cell_size", "progress", "threads"):
+        assert word in doc
+    assert "numpy" in isovdb.from_numpy.__doc__ and "C-contiguous" in isovdb.from_numpy.__doc__

@@ -1,0 +1,282 @@
+"""Volume: from_numpy, read_volume, to_numpy, info, write, distance_field."""
+import numpy as np
+import pytest
+
+import isovdb
+from conftest import ball, torus
+
+
+# --- from_numpy: kinds and values -------------------------------------------------
+
+def test_from_numpy_mask_round_trips_through_to_numpy(sphere_mask):
+    volume = isovdb.from_numpy(sphere_mask)
+    assert volume.kind == "mask"
+    assert volume.shape == sphere_mask.shape
+    back = volume.to_numpy()
+    assert back.dtype == np.bool_ and back.shape == sphere_mask.shape
+    assert np.array_equal(back, sphere_mask > 0)
+
+
+@pytest.mark.parametrize("dtype", [np.bool_, np.uint8, np.int8, np.uint16, np.int16, np.uint32, np.int32])
+def test_integer_dtypes_become_masks(dtype, sphere_mask):
+    volume = isovdb.from_numpy(sphere_mask.astype(dtype))
+    assert volume.kind == "mask"
+    assert volume.info()["active_voxels"] == int(sphere_mask.sum())
+
+
+def test_big_endian_arrays_are_read_by_value(sphere_mask):
+    values = (sphere_mask.astype(np.int32) * 300).astype(">i4")
+    volume = isovdb.from_numpy(values, threshold=299)
+    assert np.array_equal(volume.to_numpy(), sphere_mask > 0)
+
+
+def test_threshold_selects_values_above_it():
+    values = np.arange(4 * 5 * 6, dtype=np.uint16).reshape(4, 5, 6)
+    volume = isovdb.from_numpy(values, threshold=100)
+    assert np.array_equal(volume.to_numpy(), values > 100)
+
+
+@pytest.mark.parametrize("dtype", [np.float32, np.float64])
+def test_float_arrays_are_scalar_fields_without_threshold(dtype):
+    values = np.linspace(-2, 3, 7 * 8 * 9).reshape(7, 8, 9).astype(dtype)
+    volume = isovdb.from_numpy(values)
+    assert volume.kind == "scalar"
+    back = volume.to_numpy()
+    assert back.dtype == np.float32
+    assert np.allclose(back, values.astype(np.float32), atol=0)
+    info = volume.info()
+    assert info["min_value"] == pytest.approx(-2) and info["max_value"] == pytest.approx(3)
+
+
+def test_float_array_with_threshold_is_a_mask():
+    values = np.linspace(-1, 1, 6 * 6 * 6).reshape(6, 6, 6)
+    volume = isovdb.from_numpy(values, threshold=0.5)
+    assert volume.kind == "mask"
+    assert np.array_equal(volume.to_numpy(), values > 0.5)
+
+
+def test_voxel_size_and_origin_become_the_geometry(sphere_mask):
+    volume = isovdb.from_numpy(sphere_mask, voxel_size=(0.5, 2.0, 3.0), origin=(10, 20, 30))
+    assert volume.spacing == (0.5, 2.0, 3.0)
+    assert volume.origin == (10.0, 20.0, 30.0)
+    mesh = isovdb.extract(volume, method="vdb")
+    lo, hi = mesh.vertices.min(axis=0), mesh.vertices.max(axis=0)
+    # the ball spans x 10..32, y 6..28, z 4..26 voxels
+    assert lo[0] == pytest.approx(10 + 0.5 * 10, abs=0.5) and hi[0] == pytest.approx(10 + 0.5 * 32, abs=0.5)
+    assert lo[2] == pytest.approx(30 + 3.0 * 4, abs=3) and hi[2] == pytest.approx(30 + 3.0 * 26, abs=3)
+
+
+# --- from_numpy: errors ---------------------------------------------------------------
+
+@pytest.mark.parametrize("shape", [(5, 5), (5,), (2, 3, 4, 5)])
+def test_not_three_dimensional_is_rejected(shape):
+    with pytest.raises(ValueError, match=rf"3-D array.*{len(shape)}-D"):
+        isovdb.from_numpy(np.ones(shape, np.uint8))
+
+
+@pytest.mark.parametrize("dtype", [np.complex64, np.int64, np.uint64, np.float16, object])
+def test_unsupported_dtype_is_rejected(dtype):
+    with pytest.raises(ValueError, match="unsupported dtype"):
+        isovdb.from_numpy(np.ones((3, 3, 3), dtype))
+
+
+@pytest.mark.parametrize("make_view", [lambda a: a.T, lambda a: a[:, ::2, :], lambda a: np.asfortranarray(a)])
+def test_non_contiguous_is_rejected(make_view, sphere_mask):
+    view = make_view(sphere_mask)
+    assert not view.flags.c_contiguous
+    with pytest.raises(ValueError, match="not C-contiguous"):
+        isovdb.from_numpy(view)
+    # the documented remedy works
+    assert isovdb.from_numpy(np.ascontiguousarray(view)).kind == "mask"
+
+
+@pytest.mark.parametrize("shape", [(0, 4, 4), (4, 0, 4), (4, 4, 0)])
+def test_empty_array_is_rejected(shape):
+    with pytest.raises(ValueError, match="empty array"):
+        isovdb.from_numpy(np.zeros(shape, np.uint8))
+
+
+@pytest.mark.parametrize("bad", [np.nan, np.inf, -np.inf])
+def test_non_finite_samples_are_rejected(bad):
+    values = np.zeros((6, 7, 8), np.float32)
+    values[2, 3, 4] = bad
+    with pytest.raises(ValueError, match=r"sample \[2, 3, 4\] is (NaN|infinite)"):
+        isovdb.from_numpy(values)
+    with pytest.raises(ValueError, match="sample"):
+        isovdb.from_numpy(values, threshold=0.5)
+
+
+def test_non_arrays_and_bad_voxel_sizes_are_rejected(sphere_mask):
+    with pytest.raises(ValueError, match="expected a numpy array"):
+        isovdb.from_numpy([[[1]]])
+    with pytest.raises(ValueError, match="voxel_size"):
+        isovdb.from_numpy(sphere_mask, voxel_size=0)
+    with pytest.raises(ValueError, match="voxel_size"):
+        isovdb.from_numpy(sphere_mask, voxel_size=(1, 2))
+
+
+# --- to_numpy, info ----------------------------------------------------------------------
+
+def test_to_numpy_box_is_inclusive_and_reads_outside_as_background(sphere_mask):
+    volume = isovdb.from_numpy(sphere_mask)
+    part = volume.to_numpy(((5, 6, 7), (20, 30, 40)))
+    assert part.shape == (16, 25, 34)
+    assert np.array_equal(part[:, :, :25], sphere_mask[5:21, 6:31, 7:32] > 0)
+    assert not part[:, :, 25:].any()  # beyond the array: outside
+    with pytest.raises(ValueError, match="empty box"):
+        volume.to_numpy(((5, 5, 5), (4, 9, 9)))
+
+
+def test_info_reports_the_grid(sphere_mask):
+    info = isovdb.from_numpy(sphere_mask).info()
+    nz = np.argwhere(sphere_mask)
+    assert info["kind"] == "mask"
+    assert info["active_voxels"] == len(nz)
+    assert info["bbox_min"] == nz.min(axis=0).tolist() and info["bbox_max"] == nz.max(axis=0).tolist()
+    assert info["sampled_min"] == [0, 0, 0] and info["sampled_max"] == [39, 35, 31]
+    assert info["input"]["format"] == "numpy" and info["input"]["dims"] == [40, 36, 32]
+    assert info["leaf_nodes"] > 0 and info["grid_memory_bytes"] > 0
+
+
+def test_empty_volume_has_no_active_voxels_and_meshes_to_nothing():
+    volume = isovdb.from_numpy(np.zeros((8, 8, 8), np.uint8))
+    assert volume.info()["active_voxels"] == 0
+    assert not volume.to_numpy().any()
+    mesh = isovdb.extract(volume, method="regular")
+    assert mesh.triangle_count == 0 and mesh.vertices.shape == (0, 3)
+
+
+# --- read_volume ------------------------------------------------------------------------
+
+def test_raw_file_reads_as_from_numpy(tmp_path, sphere_mask):
+    raw = tmp_path / "ball.raw"
+    sphere_mask.T.tofile(raw)  # x fastest, as raw files are
+    volume = isovdb.read_volume(raw, dims=sphere_mask.shape, dtype="uint8", spacing=(1, 2, 3))
+    assert volume.kind == "mask" and volume.spacing == (1.0, 2.0, 3.0)
+    assert np.array_equal(volume.to_numpy(), isovdb.from_numpy(sphere_mask).to_numpy())
+    assert volume.info()["input"]["format"] == "dense"
+
+
+def test_big_endian_raw_and_scalar_keyword(tmp_path):
+    values = np.arange(3 * 4 * 5, dtype=">u2").reshape(3, 4, 5)
+    raw = tmp_path / "v.raw"
+    values.T.tofile(raw)
+    volume = isovdb.read_volume(raw, dims=(3, 4, 5), dtype=">u2", scalar=True)
+    assert volume.kind == "scalar"
+    assert np.array_equal(volume.to_numpy(), values.astype(np.float32))
+
+
+def test_frog_labels(data_dir):
+    volume = isovdb.read_volume(data_dir / "frog" / "frogtissue.mhd", labels=[13])
+    info = volume.info()
+    assert volume.kind == "mask" and info["input"]["mask_rule"] == "label in {13}"
+    assert volume.shape == tuple(info["input"]["dims"])
+    assert 0 < info["active_voxels"] < np.prod(volume.shape)
+
+
+def test_read_volume_errors(tmp_path):
+    with pytest.raises(OSError, match="no such file"):
+        isovdb.read_volume(tmp_path / "missing.nrrd")
+    bad = tmp_path / "bad.nrrd"
+    bad.write_text("NRRD0004\ntype: banana\n\n")
+    with pytest.raises(ValueError, match="bad.nrrd"):
+        isovdb.read_volume(bad)
+    raw = tmp_path / "short.raw"
+    raw.write_bytes(bytes(999))
+    with pytest.raises(ValueError, match="999 bytes"):
+        isovdb.read_volume(raw, dims=(10, 10, 10), dtype=np.uint8)
+    with pytest.raises(ValueError, match="dims"):
+        isovdb.read_volume(raw, dims=(10, 10, 10))
+    with pytest.raises(ValueError, match="exclude"):
+        isovdb.read_volume(raw, dims=(9, 11, 10), dtype="u1", threshold=1, mask="above 2")
+
+
+def test_progress_callback_raising_stops_reading(data_dir):
+    class Stop(Exception):
+        pass
+
+    def progress(stage, percent):
+        raise Stop(stage)
+
+    with pytest.raises(Stop):
+        isovdb.read_volume(data_dir / "frog" / "frogtissue.mhd", labels=[13], progress=progress)
+
+
+# --- write / .vdb ------------------------------------------------------------------------
+
+def test_vdb_and_dense_files_round_trip(tmp_path, sphere_mask):
+    volume = isovdb.from_numpy(sphere_mask, voxel_size=0.5)
+    volume.write(tmp_path / "m.vdb")
+    back = isovdb.read_volume(tmp_path / "m.vdb")
+    assert back.kind == "mask" and back.spacing == (0.5, 0.5, 0.5)
+    assert np.array_equal(back.to_numpy(), volume.to_numpy())
+
+    sdf = isovdb.distance_field(volume)
+    sdf.write(tmp_path / "s.vdb", grid_name="salt")
+    back = isovdb.read_volume(tmp_path / "s.vdb", grid="salt")
+    assert back.kind == sdf.kind
+    assert np.allclose(back.to_numpy(), sdf.to_numpy(), atol=1e-5)
+
+    volume.write(tmp_path / "m.nrrd")
+    dense = isovdb.read_volume(tmp_path / "m.nrrd", threshold=0.5)
+    assert np.array_equal(dense.to_numpy(), sphere_mask > 0)
+
+
+def test_write_errors(tmp_path, sphere_mask):
+    volume = isovdb.from_numpy(sphere_mask)
+    with pytest.raises(ValueError, match="unknown volume format"):
+        volume.write(tmp_path / "m.png")
+    with pytest.raises(OSError):
+        volume.write(tmp_path / "no" / "such" / "dir" / "m.vdb")
+    volume.write(tmp_path / "m.vdb")
+    with pytest.raises(ValueError, match="nope"):
+        isovdb.read_volume(tmp_path / "m.vdb", grid="nope")
+
+
+# --- distance_field ---------------------------------------------------------------------
+
+def test_distance_field_is_negative_inside_and_banded(sphere_mask):
+    mask = isovdb.from_numpy(sphere_mask)
+    sdf = isovdb.distance_field(mask, half_width=4)
+    assert sdf.kind == "distance field"
+    values = sdf.to_numpy(((0, 0, 0), (39, 35, 31)))
+    inside = sphere_mask > 0
+    assert (values[inside] < 0).all() and (values[~inside] > 0).all()
+    assert values.min() == pytest.approx(-4) and values.max() == pytest.approx(4)
+    # the centre is 11 voxels deep: beyond the band, it reads -half_width
+    assert values[21, 17, 15] == pytest.approx(-4)
+    # next to the surface the distance is about half a voxel
+    assert abs(values[21 + 10, 17, 15]) < 1.0
+
+
+def test_distance_field_rejects_non_masks():
+    scalar = isovdb.from_numpy(np.zeros((4, 4, 4), np.float32))
+    with pytest.raises(ValueError):
+        isovdb.distance_field(scalar)
+
+
+# --- euler_characteristic ------------------------------------------------------------------
+
+def test_euler_characteristic_of_solids_and_their_meshes():
+    shape = (40, 40, 24)
+    ring = torus(shape, (20, 20, 12), 12, 5)
+    two_balls = ball(shape, (10, 10, 12), 6) | ball(shape, (30, 30, 12), 6)
+    hollow = ball(shape, (20, 20, 12), 10) & ~ball(shape, (20, 20, 12), 5)  # a ball with a cavity: chi 2
+    for array, expected in ((ring, 0), (two_balls, 2), (hollow, 2), (ball(shape, (20, 20, 12), 9), 1)):
+        volume = isovdb.from_numpy(array)
+        assert isovdb.euler_characteristic(volume) == expected
+        assert isovdb.euler_characteristic(isovdb.distance_field(volume)) == expected
+        mesh = isovdb.extract(volume, method="regular")
+        assert mesh.check()["euler_characteristic"] == 2 * expected
+
+
+def test_euler_characteristic_adjacency_and_errors():
+    diagonal = np.zeros((4, 4, 4), np.uint8)
+    diagonal[1, 1, 1] = diagonal[2, 2, 2] = 1  # two voxels touching at a corner
+    volume = isovdb.from_numpy(diagonal)
+    assert isovdb.euler_characteristic(volume, adjacency=26) == 1
+    assert isovdb.euler_characteristic(volume, adjacency=6) == 2
+    with pytest.raises(ValueError, match="adjacency"):
+        isovdb.euler_characteristic(volume, adjacency=18)
+    with pytest.raises(ValueError, match="scalar"):
+        isovdb.euler_characteristic(isovdb.from_numpy(np.zeros((3, 3, 3), np.float32)))
