@@ -62,11 +62,17 @@ py::object extract(const PyVolume& volume, const std::string& method, double iso
 }  // namespace
 
 void bindExtract(py::module_& m) {
-  m.def("extract", &extract, py::arg("volume"), py::kw_only(), py::arg("method") = "adaptive", py::arg("iso") = 0.0,
-        py::arg("min_level") = -1, py::arg("max_level") = -1, py::arg("finest_size") = 1,
-        py::arg("max_cell_size") = 16, py::arg("meta_cell") = 128, py::arg("qef_tolerance") = 0.25f,
-        py::arg("intersection_free") = true, py::arg("adaptivity") = 0.0, py::arg("half_width") = 3,
-        py::arg("closing") = 0, py::arg("sdf_chunk") = 128, py::arg("boundary") = "cap",
+  // Defaults are the library's (the CLI's), except the method.
+  const pipeline::ExtractOptions defaults;
+  const pipeline::OctreeContourOptions& octree = defaults.octree;
+  m.def("extract", &extract, py::arg("volume"), py::kw_only(), py::arg("method") = "adaptive",
+        py::arg("iso") = defaults.iso, py::arg("min_level") = octree.minLevel, py::arg("max_level") = octree.maxLevel,
+        py::arg("finest_size") = octree.finestCellSize, py::arg("max_cell_size") = octree.maxCellSize,
+        py::arg("meta_cell") = octree.metaCellSize, py::arg("qef_tolerance") = octree.qefTolerance,
+        py::arg("intersection_free") = octree.intersectionFree, py::arg("adaptivity") = defaults.adaptivity,
+        py::arg("half_width") = defaults.distance.halfWidth, py::arg("closing") = defaults.distance.closingSteps,
+        py::arg("sdf_chunk") = defaults.distance.chunkSize,
+        py::arg("boundary") = std::string(pipeline::boundaryModeName(defaults.boundary)),
         py::arg("threads") = py::none(), py::arg("progress") = py::none(), py::arg("output") = py::none(), R"doc(
 Contours a volume into a closed triangle Mesh in world space (the `isovdb extract` job;
 each keyword is the CLI flag of the same name, underscores for dashes, with the same
@@ -74,8 +80,9 @@ default except method).
 
 volume: a mask (its distance field is computed first, see half_width), a distance field
   (from distance_field() or a level-set .vdb) or a scalar field (from_numpy of floats, SEG-Y).
-method: "adaptive" (adaptive octree + dual contouring with Ju-Udeshi fans: closed, free of
-  self-intersections on smooth inputs, far fewer triangles), "regular" (regular octree +
+method: "adaptive" (adaptive octree + dual contouring with Ju-Udeshi fans: closed, manifold
+  with regular's topology, free of self-intersections away from the data boundary's caps,
+  far fewer triangles), "regular" (regular octree +
   manifold Dual Marching Cubes with Wenger's fix: closed and manifold) or "vdb" (OpenVDB's
   volumeToMesh, the reference; the CLI's default).
 iso: isovalue, in voxels on distance fields (0 = the mask boundary, > 0 grows the surface),
