@@ -37,7 +37,9 @@ void recordMorph(const morph::Reconstruction& r, const morph::ReconstructOptions
   auto& m = stats["morph"];
   m["interpolation"] = interpolationName(options.pair.interpolation);
   m["particle_level_set"] = pls;
-  m["progress"] = options.pair.progress == morph::Progress::Arrival ? "arrival" : "iterations";
+  m["progress"] = options.pair.progress == morph::Progress::Arrival       ? "arrival"
+                  : options.pair.progress == morph::Progress::Exponential ? "exponential"
+                                                                          : "iterations";
   m["tolerance"] = options.pair.evolution.tolerance;
   m["original_slices"] = r.originalPlane.size();
   m["planes"] = r.planes.size();
@@ -83,7 +85,7 @@ void recordMorph(const morph::Reconstruction& r, const morph::ReconstructOptions
 void addMorphCommand(CLI::App& app, Context& context) {
   struct State {
     std::string input, output, statsPath, vdbPath, saveSlices, heights, method = "vdb";
-    std::string interpolation = "levelset", progress = "arrival";
+    std::string interpolation = "levelset", progress = "exponential";
     double spacing = 0, pixelSize = 1, zStep = 0;
     bool pls = false, check = false;
     int threads = 0;
@@ -117,8 +119,9 @@ void addMorphCommand(CLI::App& app, Context& context) {
                       "blend of the two signed distances)")
       ->capture_default_str();
   command->add_option("--progress", state->progress,
-                      "Which iterate each intermediate slice shows: arrival (time-of-arrival "
-                      "reparametrisation, uniform progress) or iterations (evenly spaced iterations, paper 002)")
+                      "Which iterate each intermediate slice shows (uniform progress): exponential (time of "
+                      "arrival from the exponential approach, one time warp), arrival (measured per pixel) or "
+                      "iterations (evenly spaced iterations, paper 002; bunches near the target)")
       ->capture_default_str();
   command->add_option("--tolerance", state->options.pair.evolution.tolerance,
                       "Convergence (paper 002 eq. 3.13, Frobenius norm scaled to 64x64)")
@@ -150,6 +153,7 @@ void addMorphCommand(CLI::App& app, Context& context) {
     else throw InputError("--interpolate: unknown '" + state->interpolation + "', expected levelset, nearest or linear");
     if (state->progress == "arrival") options.pair.progress = morph::Progress::Arrival;
     else if (state->progress == "iterations") options.pair.progress = morph::Progress::Iterations;
+    else if (state->progress == "exponential") options.pair.progress = morph::Progress::Exponential;
     else throw InputError("--progress: unknown '" + state->progress + "', expected arrival or iterations");
     if (state->pls && options.pair.interpolation != morph::Interpolation::LevelSet)
       throw InputError("--pls needs --interpolate levelset");

@@ -67,9 +67,10 @@ const Case kCases[] = {
     {"vase", &vase, 1, 1},
 };
 const Variant kVariants[] = {
-    {false, Progress::Arrival, pipeline::ContourMethod::Vdb},
+    {false, Progress::Exponential, pipeline::ContourMethod::Vdb},
     {false, Progress::Iterations, pipeline::ContourMethod::Regular},
-    {true, Progress::Arrival, pipeline::ContourMethod::Regular},
+    {true, Progress::Exponential, pipeline::ContourMethod::Regular},
+    {false, Progress::Arrival, pipeline::ContourMethod::Vdb},
 };
 
 INSTANTIATE_TEST_SUITE_P(Paper002, SyntheticCase, ::testing::Combine(::testing::ValuesIn(kCases), ::testing::ValuesIn(kVariants)));
@@ -79,7 +80,7 @@ TEST(Reconstruct, SameDistanceFieldForAnyThreadCount) {
   for (int threads : {1, 2}) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
     Reconstruction r;
-    reconstructMesh(candlestick(), {true, Progress::Arrival, pipeline::ContourMethod::Vdb}, &r);
+    reconstructMesh(candlestick(), {true, Progress::Exponential, pipeline::ContourMethod::Vdb}, &r);
     std::vector<float> all;
     for (const Field2& plane : r.planes) all.insert(all.end(), plane.values.begin(), plane.values.end());
     fields.push_back(std::move(all));
@@ -87,15 +88,18 @@ TEST(Reconstruct, SameDistanceFieldForAnyThreadCount) {
   EXPECT_EQ(fields[0], fields[1]);
 }
 
-TEST(Reconstruct, ArrivalTimeProgressIsMoreUniformThanIterations) {
+TEST(Reconstruct, TimeOfArrivalProgressIsMoreUniformThanIterations) {
   for (auto masks : {pyramid(), candlestick(), vase()}) {
-    double error[2] = {0, 0};
-    for (int mode = 0; mode < 2; ++mode) {
+    double error[3] = {0, 0, 0};
+    const Progress modes[3] = {Progress::Iterations, Progress::Arrival, Progress::Exponential};
+    for (int mode = 0; mode < 3; ++mode) {
       Reconstruction r;
-      reconstructMesh(masks, {false, mode == 0 ? Progress::Iterations : Progress::Arrival, pipeline::ContourMethod::Vdb}, &r);
+      reconstructMesh(masks, {false, modes[mode], pipeline::ContourMethod::Vdb}, &r);
       for (const PairStats& p : r.pairs) error[mode] += p.progressError / r.pairs.size();
     }
     EXPECT_LT(error[1], error[0]);
+    EXPECT_LT(error[2], error[0]);
+    EXPECT_LE(error[2], error[1]);  // why the exponential model is the default
   }
 }
 

@@ -139,6 +139,16 @@ PairResult morphPair(const Mask2& a, const Mask2& b, const Field2& sdfA, const F
   const Field2 scale = options.progress == Progress::Arrival
                            ? arrivalScale(arrival.times(), target, iterations)
                            : Field2::filled(w, h, static_cast<float>(iterations + 1));
+  // Exponential progress: with F = φ − φ_target and |∇φ| = 1 every point's distance to
+  // its target decays as e^{-t}, so the fraction done at time t is (1 - e^{-t}) / (1 - e^{-T}).
+  const double totalTime = iterations * result.stats.timeStep;
+  const auto want = [&](std::size_t j, std::size_t i) -> double {
+    if (options.progress == Progress::Exponential && result.stats.timeStep > 0 && iterations > 0) {
+      const double t = -std::log(1 - fractions[j] * (1 - std::exp(-totalTime)));
+      return t / result.stats.timeStep;
+    }
+    return fractions[j] * scale.values[i];
+  };
 
   // Pass 2 (replay): slice j shows, at pixel x, the iterate of (fractional) number
   // fractions[j] * scale(x); iterate K + 1 is the target itself.
@@ -148,9 +158,9 @@ PairResult morphPair(const Mask2& a, const Mask2& b, const Field2& sdfA, const F
   runMorph(source, target, run, result.stats, [&](const Field2& previous, const Field2& current, int n) {
     for (std::size_t j = 0; j < fractions.size(); ++j)
       for (std::size_t i = 0; i < current.size(); ++i) {
-        const double want = fractions[j] * scale.values[i];
-        if (want > n - 1 && want <= n) {
-          const double t = want - (n - 1);
+        const double wanted = want(j, i);
+        if (wanted > n - 1 && wanted <= n) {
+          const double t = wanted - (n - 1);
           work[j].values[i] = static_cast<float>((1 - t) * previous.values[i] + t * current.values[i]);
         }
       }
@@ -159,9 +169,9 @@ PairResult morphPair(const Mask2& a, const Mask2& b, const Field2& sdfA, const F
   result.stats = counted;
   for (std::size_t j = 0; j < fractions.size(); ++j)
     for (std::size_t i = 0; i < last.size(); ++i) {
-      const double want = fractions[j] * scale.values[i];
-      if (want > iterations) {
-        const double t = std::min(1.0, want - iterations);
+      const double wanted = want(j, i);
+      if (wanted > iterations) {
+        const double t = std::min(1.0, wanted - iterations);
         work[j].values[i] = static_cast<float>((1 - t) * last.values[i] + t * target.values[i]);
       }
     }

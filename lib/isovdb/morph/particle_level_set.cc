@@ -104,7 +104,7 @@ void ParticleLevelSet::advect(const Field2& phi, const Field2& target, double dt
   }
 }
 
-std::int64_t ParticleLevelSet::correct(Field2& phi) {
+std::int64_t ParticleLevelSet::correct(Field2& phi) const {
   Field2 plus = phi, minus = phi;
   std::int64_t escaped = 0;
   for (const Particle& p : particles_) {
@@ -144,16 +144,6 @@ std::int64_t ParticleLevelSet::correct(Field2& phi) {
       }
       phi.at(x, y) = merged;
     }
-  // A particle the correction could not bring back to its side is stale (trapped by
-  // a split or a merge); kept, it would fight the morph at every step. Enright et al.
-  // delete such particles when they re-seed; without re-seeding we delete them here.
-  particles_.erase(std::remove_if(particles_.begin(), particles_.end(),
-                                  [&](const Particle& p) {
-                                    const double value = phi.sample(p.x, p.y);
-                                    const bool wrongSide = p.sign > 0 ? value < 0 : value > 0;
-                                    return wrongSide && std::abs(value) > p.radius;
-                                  }),
-                   particles_.end());
   return escaped;
 }
 

@@ -41,10 +41,9 @@ class ParticleLevelSet {
   /// φ⁺ (positive) and φ⁻ (negative) at their cell's corners by eq. 3.23; φ takes
   /// the smaller magnitude of the two. Particles farther than the seeding band from
   /// the front (|φ(p)| > band) are ignored, as Enright et al. delete them. Returns the
-  /// number of escaped particles used. Particles still escaped after the correction
-  /// are deleted (stale: trapped by a split or merge; Enright et al. drop them when
-  /// re-seeding, which the paper leaves out).
-  std::int64_t correct(Field2& phi);
+  /// number of escaped particles used. A correction may move the front but not flip
+  /// an isolated pixel (no one-pixel islands or bubbles).
+  std::int64_t correct(Field2& phi) const;
 
   const std::vector<Particle>& particles() const { return particles_; }
   std::int64_t discarded() const { return discarded_; }

@@ -13,7 +13,8 @@ namespace isovdb::morph {
 /// openvdb::tools::fogToSdf solves |∇φ| = 1 from its 0.5 iso-contour (the boundary
 /// lies half-way between an inside and an outside pixel centre); two passes, with
 /// the background above and below taken as outside and then as inside, keep the
-/// distances in-plane. Holes are
+/// distances in-plane. Only the object's bounding box plus 16 pixels is swept;
+/// beyond it the distance continues the box's border value (an upper bound). Holes are
 /// respected because the sign comes from the mask itself. An empty slice gets
 /// +(width + height) everywhere, a full one -(width + height).
 Field2 signedDistance(const Mask2& mask);
