@@ -40,6 +40,7 @@ METHODS = {
     "levelset-arrival": ["--progress", "arrival"],
     "levelset-iterations": ["--progress", "iterations"],
     "pls": ["--pls"],
+    "levelset-nocentring": ["--no-centring"],
     "nearest": ["--interpolate", "nearest"],
     "linear": ["--interpolate", "linear"],
 }
@@ -321,7 +322,7 @@ def main():
     if "real" in parts:
         print("real data, every 4th slice kept, Dice per withheld slice:")
         report["real"] = real_data(cli, work, args.skip_frog_pls)
-    (work / "report.json").write_text(json.dumps(report, indent=1))
+    (work / "report.json").write_text(json.dumps(report, indent=1, default=float))
     print(f"report: {work / 'report.json'}")
 
 

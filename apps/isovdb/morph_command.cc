@@ -37,6 +37,7 @@ void recordMorph(const morph::Reconstruction& r, const morph::ReconstructOptions
   auto& m = stats["morph"];
   m["interpolation"] = interpolationName(options.pair.interpolation);
   m["particle_level_set"] = pls;
+  m["centring"] = options.pair.centre;
   m["progress"] = options.pair.progress == morph::Progress::Arrival       ? "arrival"
                   : options.pair.progress == morph::Progress::Exponential ? "exponential"
                                                                           : "iterations";
@@ -114,6 +115,8 @@ void addMorphCommand(CLI::App& app, Context& context) {
       ->capture_default_str();
   command->add_option("--method", state->method, "Contouring: vdb, regular or adaptive")->capture_default_str();
   command->add_flag("--pls", state->pls, "Particle level set correction (Enright; slower, sharper corners)");
+  command->add_flag("!--no-centring", state->options.pair.centre,
+                    "Morph the contours where they lie instead of centring both on their convex-hull centroids");
   command->add_option("--interpolate", state->interpolation,
                       "levelset (metamorphosis), nearest (copy the nearer slice) or linear (shape-based: "
                       "blend of the two signed distances)")

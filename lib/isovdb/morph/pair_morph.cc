@@ -93,6 +93,7 @@ PairResult morphPair(const Mask2& a, const Mask2& b, const Field2& sdfA, const F
   }
 
   std::optional<Vec2> ca = hullCentroid(a), cb = hullCentroid(b);
+  if (!options.centre && ca && cb) ca = cb = Vec2{0.5 * (ca->x + cb->x), 0.5 * (ca->y + cb->y)};
   if (!ca && !cb) {
     for (std::size_t j = 0; j < fractions.size(); ++j) result.slices.push_back(sdfA);
     return finish();
@@ -139,15 +140,15 @@ PairResult morphPair(const Mask2& a, const Mask2& b, const Field2& sdfA, const F
   const Field2 scale = options.progress == Progress::Arrival
                            ? arrivalScale(arrival.times(), target, iterations)
                            : Field2::filled(w, h, static_cast<float>(iterations + 1));
-  // Exponential progress: with F = φ − φ_target and |∇φ| = 1 every point's distance to
-  // its target decays as e^{-t}, so the fraction done at time t is (1 - e^{-t}) / (1 - e^{-T}).
-  const double totalTime = iterations * result.stats.timeStep;
+  // Exponential progress (pair_morph.h): one time per slice, t(s) = -ln(1 - s (1 - e^{-T})).
+  std::vector<double> warped(fractions.size(), -1.0);
+  if (options.progress == Progress::Exponential && result.stats.timeStep > 0 && iterations > 0) {
+    const double totalTime = iterations * result.stats.timeStep;
+    for (std::size_t j = 0; j < fractions.size(); ++j)
+      warped[j] = -std::log(1 - fractions[j] * (1 - std::exp(-totalTime))) / result.stats.timeStep;
+  }
   const auto want = [&](std::size_t j, std::size_t i) -> double {
-    if (options.progress == Progress::Exponential && result.stats.timeStep > 0 && iterations > 0) {
-      const double t = -std::log(1 - fractions[j] * (1 - std::exp(-totalTime)));
-      return t / result.stats.timeStep;
-    }
-    return fractions[j] * scale.values[i];
+    return warped[j] >= 0 ? warped[j] : fractions[j] * scale.values[i];
   };
 
   // Pass 2 (replay): slice j shows, at pixel x, the iterate of (fractional) number

@@ -37,6 +37,9 @@ struct PairOptions {
   Interpolation interpolation = Interpolation::LevelSet;
   Progress progress = Progress::Exponential;
   bool particles = false;  ///< particle level set correction (LevelSet only)
+  /// Centre both contours on their convex-hull centroids (paper 002 §3.3.2); false
+  /// morphs them where they lie (better when a slice's hull jumps: several objects).
+  bool centre = true;
   EvolutionOptions evolution;
   ParticleOptions particleOptions;
   int margin = 4;  ///< pixels around the centred contours in the working grid
