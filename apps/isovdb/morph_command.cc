@@ -114,7 +114,7 @@ void addMorphCommand(CLI::App& app, Context& context) {
   command->add_option("--slice-offset", state->volumeSlices.offset, "Volume input: first labelled z-slice")
       ->capture_default_str();
   command->add_option("--method", state->method, "Contouring: vdb, regular or adaptive")->capture_default_str();
-  command->add_flag("--pls", state->pls, "Particle level set correction (Enright; slower, sharper corners)");
+  command->add_flag("--pls", state->pls, "Particle level set correction (Enright et al.; paper 002 Alg. 3.2-3.3; much slower)");
   command->add_flag("!--no-centring", state->options.pair.centre,
                     "Morph the contours where they lie instead of centring both on their convex-hull centroids");
   command->add_option("--interpolate", state->interpolation,
