@@ -17,3 +17,7 @@ if(NOT TARGET isovdb_segyio)
   set_target_properties(isovdb_segyio PROPERTIES IMPORTED_LOCATION "${SEGYIO_LIBRARY}"
     INTERFACE_INCLUDE_DIRECTORIES "${SEGYIO_INCLUDE_DIR}" INTERFACE_LINK_LIBRARIES m)
 endif()
+# Slice images (morph): stb_image reads PNG and BMP (1-bit monochrome included),
+# stb_image_write writes the intermediate slices as PNG (Debian libstb-dev).
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(STB REQUIRED IMPORTED_TARGET stb)

@@ -6,7 +6,7 @@ packages=(
   build-essential cmake ccache pkg-config
   libopenvdb-dev libtbb-dev libeigen3-dev libglm-dev zlib1g-dev libblosc-dev libboost-iostreams-dev
   libcgal-dev libgmp-dev libmpfr-dev
-  libcli11-dev nlohmann-json3-dev libsegyio-dev
+  libcli11-dev nlohmann-json3-dev libsegyio-dev libstb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-numpy python3-pytest python3-openvdb python3-segyio
   python3-dev pybind11-dev python3-matplotlib python3-nbformat python3-nbclient python3-ipykernel

@@ -4,12 +4,13 @@
 
 namespace isovdb::cli {
 
-void InputFlags::add(CLI::App& command) {
+void InputFlags::add(CLI::App& command, bool rawSpacing) {
   command.add_option("--dims", dims, "Raw volumes: samples along x,y,z (e.g. 256,256,128)")->delimiter(',')->expected(3);
   command.add_option("--type", type, "Raw volumes: sample type (uint8, uint16, float32, int16, ...)");
   command.add_flag("--big-endian", bigEndian, "Raw volumes: samples are big-endian");
-  command.add_option("--spacing", spacing, "Raw volumes: voxel size x,y,z in world units (default 1,1,1)")
-      ->delimiter(',')->expected(3);
+  if (rawSpacing)
+    command.add_option("--spacing", spacing, "Raw volumes: voxel size x,y,z in world units (default 1,1,1)")
+        ->delimiter(',')->expected(3);
   command.add_option("--header-bytes", headerBytes, "Raw volumes: bytes to skip before the samples");
   command.add_option("--threshold", threshold, "Mask: inside = value > THRESHOLD (default 0)");
   command.add_option("--labels", labels, "Mask: inside = value is one of these labels (e.g. 13 or 3,4)")

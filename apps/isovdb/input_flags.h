@@ -27,7 +27,8 @@ struct InputFlags {
   SeismicFlags seismic;
 
   /// Registers the flags on a subcommand (`prefix` distinguishes a second input).
-  void add(CLI::App& command);
+  /// `rawSpacing` false leaves out --spacing (`morph` uses it for slice spacing).
+  void add(CLI::App& command, bool rawSpacing = true);
   /// Builds the options; `path` is used in error messages.
   /// @throw InputError for an unknown --type or malformed values.
   pipeline::InputOptions toOptions(const std::string& path) const;

@@ -14,28 +14,6 @@
 namespace isovdb::test {
 namespace {
 
-struct Run {
-  int status;
-  std::string output;
-};
-
-Run runCli(const std::string& arguments) {
-  Run run;
-  run.status = runCommand(cliPath().string() + " --quiet " + arguments, &run.output);
-  return run;
-}
-
-/// Asserts the failure contract: non-zero exit, one line on stderr that
-/// contains every fragment, and nothing written in the output directory.
-void expectCleanFailure(const Run& run, const std::vector<std::string>& fragments, const TempDir& outDir) {
-  EXPECT_NE(run.status, 0) << run.output;
-  EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
-  EXPECT_EQ(run.output.rfind("isovdb: error: ", 0), 0u) << run.output;
-  for (const std::string& fragment : fragments)
-    EXPECT_NE(run.output.find(fragment), std::string::npos) << "missing '" << fragment << "' in: " << run.output;
-  EXPECT_TRUE(std::filesystem::is_empty(outDir.path())) << "output left behind";
-}
-
 std::string nrrdHeader(const std::string& fields) { return "NRRD0004\n" + fields + "\n"; }
 
 class CliBadInput : public ::testing::Test {

@@ -1,8 +1,11 @@
 #include "support/test_support.h"
 
+#include <gtest/gtest.h>
+
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <fstream>
@@ -50,6 +53,21 @@ int runCommand(const std::string& command, std::string* output) {
   const int status = ::pclose(pipe);
   if (output) *output = text;
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+CliRun runCli(const std::string& arguments) {
+  CliRun run;
+  run.status = runCommand(cliPath().string() + " --quiet " + arguments, &run.output);
+  return run;
+}
+
+void expectCleanFailure(const CliRun& run, const std::vector<std::string>& fragments, const TempDir& outDir) {
+  EXPECT_NE(run.status, 0) << run.output;
+  EXPECT_EQ(std::count(run.output.begin(), run.output.end(), '\n'), 1) << run.output;
+  EXPECT_EQ(run.output.rfind("isovdb: error: ", 0), 0u) << run.output;
+  for (const std::string& fragment : fragments)
+    EXPECT_NE(run.output.find(fragment), std::string::npos) << "missing '" << fragment << "' in: " << run.output;
+  EXPECT_TRUE(std::filesystem::is_empty(outDir.path())) << "output left behind";
 }
 
 }  // namespace isovdb::test

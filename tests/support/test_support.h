@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace isovdb::test {
 
@@ -35,5 +36,19 @@ std::string readFile(const std::filesystem::path& path);
 
 /// Runs a shell command, returns its exit status; stdout+stderr go to `output`.
 int runCommand(const std::string& command, std::string* output = nullptr);
+
+/// Exit status and combined output of one run of the `isovdb` binary.
+struct CliRun {
+  int status = 0;
+  std::string output;
+};
+
+/// Runs `isovdb --quiet ARGUMENTS`.
+CliRun runCli(const std::string& arguments);
+
+/// Asserts the failure contract of the CLI: non-zero exit, one line on stderr
+/// starting "isovdb: error: " that contains every fragment, and nothing written
+/// in `outDir`.
+void expectCleanFailure(const CliRun& run, const std::vector<std::string>& fragments, const TempDir& outDir);
 
 }  // namespace isovdb::test

@@ -1,0 +1,232 @@
+// `isovdb morph SLICES -o OUT.ply`: a sparse stack of planar slices (a folder of
+// PNG/BMP images, or a binary volume with only some z-slices labelled) → level-set
+// metamorphosis fills the gaps → the completed stack is contoured like any volume.
+#include <tbb/global_control.h>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "commands.h"
+#include "input_flags.h"
+#include "isovdb/errors.h"
+#include "isovdb/io/atomic_file.h"
+#include "isovdb/io/mesh_file.h"
+#include "isovdb/io/vdb_file.h"
+#include "isovdb/morph/reconstruct.h"
+#include "isovdb/morph/slice_image.h"
+#include "isovdb/pipeline/extract.h"
+#include "isovdb/pipeline/load_volume.h"
+#include "isovdb/pipeline/mesh_report.h"
+
+namespace isovdb::cli {
+
+namespace {
+
+std::string interpolationName(morph::Interpolation i) {
+  switch (i) {
+    case morph::Interpolation::LevelSet: return "levelset";
+    case morph::Interpolation::Nearest: return "nearest";
+    case morph::Interpolation::Linear: return "linear";
+  }
+  return "?";
+}
+
+void recordMorph(const morph::Reconstruction& r, const morph::ReconstructOptions& options, bool pls,
+                 pipeline::Statistics& stats) {
+  auto& m = stats["morph"];
+  m["interpolation"] = interpolationName(options.pair.interpolation);
+  m["particle_level_set"] = pls;
+  m["centring"] = options.pair.centre;
+  m["progress"] = options.pair.progress == morph::Progress::Arrival       ? "arrival"
+                  : options.pair.progress == morph::Progress::Exponential ? "exponential"
+                                                                          : "iterations";
+  m["tolerance"] = options.pair.evolution.tolerance;
+  m["original_slices"] = r.originalPlane.size();
+  m["planes"] = r.planes.size();
+  m["intermediate_slices"] = r.planes.size() - r.originalPlane.size();
+  std::int64_t iterations = 0, capped = 0;
+  double pairSeconds = 0, progressError = 0;
+  auto pairs = pipeline::Statistics::Json::array();
+  for (std::size_t i = 0; i < r.pairs.size(); ++i) {
+    const morph::PairStats& p = r.pairs[i];
+    iterations += p.iterations;
+    capped += p.hitMaxIterations;
+    pairSeconds += p.seconds;
+    progressError += p.progressError;
+    pipeline::Statistics::Json j;
+    j["intermediate_slices"] = r.originalPlane[i + 1] - r.originalPlane[i] - 1;
+    j["iterations"] = p.iterations;
+    j["time_step"] = p.timeStep;
+    j["criterion"] = p.finalCriterion;
+    j["grid"] = std::to_string(p.workWidth) + "x" + std::to_string(p.workHeight);
+    if (pls) {
+      j["particles"] = p.particles;
+      j["particles_discarded"] = p.discardedParticles;
+      j["particles_escaped"] = p.escapedParticles;
+    }
+    j["progress_error"] = p.progressError;
+    j["seconds"] = p.seconds;
+    pairs.push_back(j);
+  }
+  m["iterations_total"] = iterations;
+  m["pairs_at_max_iterations"] = capped;
+  m["progress_error_mean"] = r.pairs.empty() ? 0.0 : progressError / r.pairs.size();
+  const auto intermediate = r.planes.size() - r.originalPlane.size();
+  m["seconds_per_intermediate_slice"] = intermediate ? pairSeconds / intermediate : 0.0;
+  m["seconds_per_iteration"] = iterations ? pairSeconds / iterations : 0.0;
+  m["pairs"] = pairs;
+  stats["timings_s"]["slice_sdf"] = r.sdfSeconds;
+  stats["timings_s"]["morph"] = r.morphSeconds;
+  stats["timings_s"]["assembly"] = r.assemblySeconds;
+}
+
+}  // namespace
+
+void addMorphCommand(CLI::App& app, Context& context) {
+  struct State {
+    std::string input, output, statsPath, vdbPath, saveSlices, heights, method = "vdb";
+    std::string interpolation = "levelset", progress = "exponential";
+    double spacing = 0, pixelSize = 1, zStep = 0;
+    bool pls = false, check = false;
+    int threads = 0;
+    morph::VolumeSliceOptions volumeSlices;
+    morph::ReconstructOptions options;
+    InputFlags flags;
+  };
+  auto state = std::make_shared<State>();
+  CLI::App* command = app.add_subcommand(
+      "morph", "Sparse planar slices (folder of PNG/BMP, or a volume with some z-slices labelled) -> "
+               "level-set metamorphosis between them -> mesh");
+  command->add_option("SLICES", state->input, "Folder of slice images (.png/.bmp), or a binary volume file")
+      ->required();
+  command->add_option("-o,--output", state->output, "Output mesh (.ply or .obj)")->required();
+  command->add_option("--heights", state->heights, "Folder input: text file with one height per slice image");
+  command->add_option("--spacing", state->spacing, "Folder input: uniform spacing between slices (world units)");
+  command->add_option("--pixel-size", state->pixelSize, "Folder input: pixel size (world units)")
+      ->capture_default_str();
+  command->add_option("--z-step", state->zStep,
+                      "Distance between the planes of the completed stack (default: the pixel size; "
+                      "volume input: its z spacing)");
+  command->add_option("--slice-step", state->volumeSlices.step,
+                      "Volume input: labelled slices are every K-th z-slice (0 = every non-empty z-slice)")
+      ->capture_default_str();
+  command->add_option("--slice-offset", state->volumeSlices.offset, "Volume input: first labelled z-slice")
+      ->capture_default_str();
+  command->add_option("--method", state->method, "Contouring: vdb, regular or adaptive")->capture_default_str();
+  command->add_flag("--pls", state->pls, "Particle level set correction (Enright et al.; paper 002 Alg. 3.2-3.3; much slower)");
+  command->add_flag("!--no-centring", state->options.pair.centre,
+                    "Morph the contours where they lie instead of centring both on their convex-hull centroids");
+  command->add_option("--interpolate", state->interpolation,
+                      "levelset (metamorphosis), nearest (copy the nearer slice) or linear (shape-based: "
+                      "blend of the two signed distances)")
+      ->capture_default_str();
+  command->add_option("--progress", state->progress,
+                      "Which iterate each intermediate slice shows (uniform progress): exponential (time of "
+                      "arrival from the exponential approach, one time warp), arrival (measured per pixel) or "
+                      "iterations (evenly spaced iterations, paper 002; bunches near the target)")
+      ->capture_default_str();
+  command->add_option("--tolerance", state->options.pair.evolution.tolerance,
+                      "Convergence (paper 002 eq. 3.13, Frobenius norm scaled to 64x64)")
+      ->capture_default_str();
+  command->add_option("--max-iterations", state->options.pair.evolution.maxIterations, "Per pair")
+      ->capture_default_str();
+  command->add_option("--seed", state->options.pair.particleOptions.seed, "Particle random seed")
+      ->capture_default_str();
+  command->add_option("--half-width", state->options.halfWidth, "Band half-width of the output distance field (voxels)")
+      ->capture_default_str();
+  command->add_option("--threads", state->threads, "Worker threads (0 = every core); the output is the same")
+      ->capture_default_str();
+  command->add_option("--save-slices", state->saveSlices,
+                      "Write every plane of the completed stack as PNG (plane_NNNN.png) + heights.txt here");
+  command->add_option("--vdb", state->vdbPath, "Also write the completed stack's distance field (.vdb)");
+  command->add_option("--stats", state->statsPath, "Write every figure shown as JSON");
+  command->add_flag("--check", state->check, "Validate the mesh (closed, manifold, genus per component)");
+  state->flags.add(*command, /*rawSpacing=*/false);
+  command->callback([state, &context] {
+    pipeline::ExtractOptions extract;
+    const auto method = pipeline::parseContourMethod(state->method);
+    if (!method) throw InputError("--method: unknown method '" + state->method + "', expected vdb, regular or adaptive");
+    extract.method = *method;
+    extract.threads = state->threads;
+    morph::ReconstructOptions& options = state->options;
+    if (state->interpolation == "levelset") options.pair.interpolation = morph::Interpolation::LevelSet;
+    else if (state->interpolation == "nearest") options.pair.interpolation = morph::Interpolation::Nearest;
+    else if (state->interpolation == "linear") options.pair.interpolation = morph::Interpolation::Linear;
+    else throw InputError("--interpolate: unknown '" + state->interpolation + "', expected levelset, nearest or linear");
+    if (state->progress == "arrival") options.pair.progress = morph::Progress::Arrival;
+    else if (state->progress == "iterations") options.pair.progress = morph::Progress::Iterations;
+    else if (state->progress == "exponential") options.pair.progress = morph::Progress::Exponential;
+    else throw InputError("--progress: unknown '" + state->progress + "', expected arrival or iterations");
+    if (state->pls && options.pair.interpolation != morph::Interpolation::LevelSet)
+      throw InputError("--pls needs --interpolate levelset");
+    options.pair.particles = state->pls;
+    if (!(options.pair.evolution.tolerance > 0)) throw InputError("--tolerance must be > 0");
+    if (options.pair.evolution.maxIterations < 1) throw InputError("--max-iterations must be >= 1");
+    if (!io::isMeshPath(state->output))
+      throw InputError("'" + state->output + "': unknown mesh format, expected .ply or .obj");
+    io::AtomicFile::checkWritable(state->output);
+    if (!state->statsPath.empty()) io::AtomicFile::checkWritable(state->statsPath);
+    if (!state->vdbPath.empty()) io::AtomicFile::checkWritable(state->vdbPath);
+
+    pipeline::Statistics stats;
+    morph::SliceStack stack;
+    {
+      pipeline::Statistics::StageTimer timer(&stats, "read");
+      std::error_code ec;
+      if (std::filesystem::is_directory(state->input, ec)) {
+        stack = morph::loadSliceDirectory(
+            state->input, {.heightsFile = state->heights, .spacing = state->spacing, .pixelSize = state->pixelSize});
+      } else {
+        if (!state->heights.empty() || state->spacing > 0)
+          throw InputError("'" + state->input + "': --heights and --spacing apply to a folder of slice images; "
+                           "a volume's heights are its z positions");
+        const volume::Volume input = pipeline::loadVolume(state->input, state->flags.toOptions(state->input),
+                                                          context.interrupter(), &stats);
+        stack = morph::sliceStackFromVolume(input, state->volumeSlices);
+      }
+      if (state->zStep > 0) stack.zStep = state->zStep;
+      stats["input"]["slices"] = stack.slices.size();
+      stats["input"]["canvas"] = std::to_string(stack.width) + "x" + std::to_string(stack.height);
+    }
+    std::unique_ptr<tbb::global_control> limit;
+    if (state->threads > 0)
+      limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, state->threads);
+    const morph::Reconstruction result = morph::reconstruct(stack, options, context.interrupter());
+    recordMorph(result, options, state->pls, stats);
+    pipeline::recordGridStats(result.volume, stats["volume"]);
+
+    mesh::Mesh mesh = pipeline::extractMesh(result.volume, extract, context.interrupter(), &stats);
+    if (mesh.triangles.empty())
+      std::fprintf(stderr, "isovdb: warning: '%s': the slices hold no object (empty mesh)\n", state->input.c_str());
+    {
+      pipeline::Statistics::StageTimer timer(&stats, "write");
+      if (!state->vdbPath.empty()) io::writeVdb(state->vdbPath, result.volume, {.gridName = "sdf"});
+      io::writeMesh(state->output, mesh);
+      if (!state->saveSlices.empty()) {
+        std::filesystem::create_directories(state->saveSlices);
+        std::string heights;
+        for (std::size_t z = 0; z < result.planes.size(); ++z) {
+          char name[32];
+          std::snprintf(name, sizeof name, "plane_%04zu.png", z);
+          morph::writeSliceImage(std::filesystem::path(state->saveSlices) / name, morph::insideOf(result.planes[z]));
+          heights += std::to_string(result.planeHeights[z]) + "\n";
+        }
+        io::AtomicFile file(std::filesystem::path(state->saveSlices) / "heights.txt");
+        file.write(heights);
+        file.commit();
+      }
+    }
+    stats["output"]["path"] = state->output;
+    stats["output"]["triangles"] = mesh.triangles.size();
+    if (state->check) {
+      pipeline::Statistics::StageTimer timer(&stats, "check");
+      stats["check"] = pipeline::meshReportJson(mesh, {.selfIntersections = false});
+    }
+    stats.recordMemory();
+    if (!state->statsPath.empty()) stats.write(state->statsPath);
+    printStatistics(stats);
+  });
+}
+
+}  // namespace isovdb::cli

@@ -1,0 +1,64 @@
+#include "isovdb/morph/slice_image.h"
+
+#include <stb_image.h>
+#include <stb_image_write.h>
+
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "isovdb/errors.h"
+#include "isovdb/io/atomic_file.h"
+#include "isovdb/io/path_util.h"
+#include "isovdb/morph/contour_fill.h"
+
+namespace isovdb::morph {
+
+bool isSliceImagePath(const std::filesystem::path& path) {
+  const std::string ext = io::lowerExtension(path);
+  return ext == ".png" || ext == ".bmp";
+}
+
+Mask2 readSliceImage(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError("'" + path.string() + "': cannot open slice image (no such file or not readable)");
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  int width = 0, height = 0, channels = 0;
+  stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), static_cast<int>(bytes.size()),
+                                          &width, &height, &channels, 1);
+  if (!pixels)
+    throw InputError("'" + path.string() + "': not a readable PNG or BMP image (" + stbi_failure_reason() + ")");
+  Mask2 dark = Mask2::empty(width, height);
+  for (std::size_t i = 0; i < dark.inside.size(); ++i) dark.inside[i] = pixels[i] < 128 ? 1 : 0;
+  stbi_image_free(pixels);
+
+  // The class holding most of the border is the background.
+  std::int64_t borderDark = 0, border = 0;
+  for (int x = 0; x < width; ++x) {
+    borderDark += dark.at(x, 0) + dark.at(x, height - 1);
+    border += 2;
+  }
+  for (int y = 0; y < height; ++y) {
+    borderDark += dark.at(0, y) + dark.at(width - 1, y);
+    border += 2;
+  }
+  if (2 * borderDark > border)
+    for (std::uint8_t& v : dark.inside) v = 1 - v;
+  return fillContours(dark);
+}
+
+void writeSliceImage(const std::filesystem::path& path, const Mask2& mask) {
+  std::vector<std::uint8_t> grey(mask.inside.size());
+  for (std::size_t i = 0; i < grey.size(); ++i) grey[i] = mask.inside[i] ? 255 : 0;
+  // stb calls back from C: collect the bytes, write them (and maybe throw) afterwards.
+  std::string png;
+  const int ok = stbi_write_png_to_func(
+      [](void* out, void* data, int size) { static_cast<std::string*>(out)->append(static_cast<char*>(data), size); },
+      &png, mask.width, mask.height, 1, grey.data(), mask.width);
+  if (!ok) throw IoError("'" + path.string() + "': PNG encoding failed");
+  io::AtomicFile file(path);
+  file.write(png);
+  file.commit();
+}
+
+}  // namespace isovdb::morph
