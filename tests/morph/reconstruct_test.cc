@@ -55,9 +55,12 @@ TEST_P(SyntheticCase, ClosedWithExpectedTopologyAndReproducesEverySlice) {
   for (const auto& component : report.componentReports) sizes += " " + std::to_string(component.triangles);
   ASSERT_EQ(report.components, c.components) << "triangles per component:" << sizes;
   for (const auto& component : report.componentReports) EXPECT_EQ(component.genus, c.genus);
+  // The 2 %; adaptive mode's coarse leaves place their vertices within half a
+  // voxel (octree_contour.h), which costs up to 4 % on these 64 x 64 slices.
+  const double tolerance = v.method == pipeline::ContourMethod::Adaptive ? 0.05 : 0.02;
   for (std::size_t i = 0; i < masks.size(); ++i) {
     const Mask2 cut = crossSection(mesh, 8.0 * i + 1e-3, 64, 64);
-    EXPECT_LT(symmetricDifference(cut, masks[i]), 0.02) << "slice " << i;
+    EXPECT_LT(symmetricDifference(cut, masks[i]), tolerance) << "slice " << i;
   }
 }
 
@@ -71,6 +74,7 @@ const Variant kVariants[] = {
     {false, Progress::Iterations, pipeline::ContourMethod::Regular},
     {true, Progress::Exponential, pipeline::ContourMethod::Regular},
     {false, Progress::Arrival, pipeline::ContourMethod::Vdb},
+    {false, Progress::Exponential, pipeline::ContourMethod::Adaptive},
 };
 
 INSTANTIATE_TEST_SUITE_P(Paper002, SyntheticCase, ::testing::Combine(::testing::ValuesIn(kCases), ::testing::ValuesIn(kVariants)));
