@@ -14,74 +14,13 @@
 #include "isovdb/io/mesh_file.h"
 #include "isovdb/io/vdb_file.h"
 #include "isovdb/morph/reconstruct.h"
+#include "isovdb/morph/reconstruction_report.h"
 #include "isovdb/morph/slice_image.h"
 #include "isovdb/pipeline/extract.h"
 #include "isovdb/pipeline/load_volume.h"
 #include "isovdb/pipeline/mesh_report.h"
 
 namespace isovdb::cli {
-
-namespace {
-
-std::string interpolationName(morph::Interpolation i) {
-  switch (i) {
-    case morph::Interpolation::LevelSet: return "levelset";
-    case morph::Interpolation::Nearest: return "nearest";
-    case morph::Interpolation::Linear: return "linear";
-  }
-  return "?";
-}
-
-void recordMorph(const morph::Reconstruction& r, const morph::ReconstructOptions& options, bool pls,
-                 pipeline::Statistics& stats) {
-  auto& m = stats["morph"];
-  m["interpolation"] = interpolationName(options.pair.interpolation);
-  m["particle_level_set"] = pls;
-  m["centring"] = options.pair.centre;
-  m["progress"] = options.pair.progress == morph::Progress::Arrival       ? "arrival"
-                  : options.pair.progress == morph::Progress::Exponential ? "exponential"
-                                                                          : "iterations";
-  m["tolerance"] = options.pair.evolution.tolerance;
-  m["original_slices"] = r.originalPlane.size();
-  m["planes"] = r.planes.size();
-  m["intermediate_slices"] = r.planes.size() - r.originalPlane.size();
-  std::int64_t iterations = 0, capped = 0;
-  double pairSeconds = 0, progressError = 0;
-  auto pairs = pipeline::Statistics::Json::array();
-  for (std::size_t i = 0; i < r.pairs.size(); ++i) {
-    const morph::PairStats& p = r.pairs[i];
-    iterations += p.iterations;
-    capped += p.hitMaxIterations;
-    pairSeconds += p.seconds;
-    progressError += p.progressError;
-    pipeline::Statistics::Json j;
-    j["intermediate_slices"] = r.originalPlane[i + 1] - r.originalPlane[i] - 1;
-    j["iterations"] = p.iterations;
-    j["time_step"] = p.timeStep;
-    j["criterion"] = p.finalCriterion;
-    j["grid"] = std::to_string(p.workWidth) + "x" + std::to_string(p.workHeight);
-    if (pls) {
-      j["particles"] = p.particles;
-      j["particles_discarded"] = p.discardedParticles;
-      j["particles_escaped"] = p.escapedParticles;
-    }
-    j["progress_error"] = p.progressError;
-    j["seconds"] = p.seconds;
-    pairs.push_back(j);
-  }
-  m["iterations_total"] = iterations;
-  m["pairs_at_max_iterations"] = capped;
-  m["progress_error_mean"] = r.pairs.empty() ? 0.0 : progressError / r.pairs.size();
-  const auto intermediate = r.planes.size() - r.originalPlane.size();
-  m["seconds_per_intermediate_slice"] = intermediate ? pairSeconds / intermediate : 0.0;
-  m["seconds_per_iteration"] = iterations ? pairSeconds / iterations : 0.0;
-  m["pairs"] = pairs;
-  stats["timings_s"]["slice_sdf"] = r.sdfSeconds;
-  stats["timings_s"]["morph"] = r.morphSeconds;
-  stats["timings_s"]["assembly"] = r.assemblySeconds;
-}
-
-}  // namespace
 
 void addMorphCommand(CLI::App& app, Context& context) {
   struct State {
@@ -150,19 +89,16 @@ void addMorphCommand(CLI::App& app, Context& context) {
     extract.method = *method;
     extract.threads = state->threads;
     morph::ReconstructOptions& options = state->options;
-    if (state->interpolation == "levelset") options.pair.interpolation = morph::Interpolation::LevelSet;
-    else if (state->interpolation == "nearest") options.pair.interpolation = morph::Interpolation::Nearest;
-    else if (state->interpolation == "linear") options.pair.interpolation = morph::Interpolation::Linear;
-    else throw InputError("--interpolate: unknown '" + state->interpolation + "', expected levelset, nearest or linear");
-    if (state->progress == "arrival") options.pair.progress = morph::Progress::Arrival;
-    else if (state->progress == "iterations") options.pair.progress = morph::Progress::Iterations;
-    else if (state->progress == "exponential") options.pair.progress = morph::Progress::Exponential;
-    else throw InputError("--progress: unknown '" + state->progress + "', expected arrival or iterations");
-    if (state->pls && options.pair.interpolation != morph::Interpolation::LevelSet)
-      throw InputError("--pls needs --interpolate levelset");
+    const auto interpolation = morph::parseInterpolation(state->interpolation);
+    if (!interpolation)
+      throw InputError("--interpolate: unknown '" + state->interpolation + "', expected levelset, nearest or linear");
+    options.pair.interpolation = *interpolation;
+    const auto progress = morph::parseProgress(state->progress);
+    if (!progress)
+      throw InputError("--progress: unknown '" + state->progress + "', expected exponential, arrival or iterations");
+    options.pair.progress = *progress;
     options.pair.particles = state->pls;
-    if (!(options.pair.evolution.tolerance > 0)) throw InputError("--tolerance must be > 0");
-    if (options.pair.evolution.maxIterations < 1) throw InputError("--max-iterations must be >= 1");
+    morph::checkReconstructOptions(options);
     if (!io::isMeshPath(state->output))
       throw InputError("'" + state->output + "': unknown mesh format, expected .ply or .obj");
     io::AtomicFile::checkWritable(state->output);
@@ -193,7 +129,7 @@ void addMorphCommand(CLI::App& app, Context& context) {
     if (state->threads > 0)
       limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism, state->threads);
     const morph::Reconstruction result = morph::reconstruct(stack, options, context.interrupter());
-    recordMorph(result, options, state->pls, stats);
+    stats.json().merge_patch(morph::reconstructionReport(result, options));
     pipeline::recordGridStats(result.volume, stats["volume"]);
 
     mesh::Mesh mesh = pipeline::extractMesh(result.volume, extract, context.interrupter(), &stats);

@@ -45,5 +45,6 @@ void bindVolume(py::module_& m);   // volume_bindings.cc: Volume, from_numpy, re
 void bindSeismic(py::module_& m);  // seismic_bindings.cc: read_segy
 void bindMesh(py::module_& m);     // mesh_bindings.cc: Mesh, read_mesh
 void bindExtract(py::module_& m);  // extract_bindings.cc: extract
+void bindMorph(py::module_& m);    // morph_bindings.cc: morph_slices
 
 }  // namespace isovdb::python

@@ -10,9 +10,10 @@ PYBIND11_MODULE(isovdb, m) {
   m.doc() =
       "isovdb: sparse volumes to clean triangle meshes.\n\n"
       "Volumes (binary masks, scalar fields, signed distance fields) come from files\n"
-      "(read_volume, read_segy) or numpy arrays (from_numpy); distance_field() turns a\n"
-      "mask into a narrow-band signed distance field; extract() contours any volume into\n"
-      "a Mesh whose vertices/triangles are numpy views. Arrays are indexed [x, y, z].\n\n"
+      "(read_volume, read_segy), numpy arrays (from_numpy) or sparse slice stacks\n"
+      "(morph_slices); distance_field() turns a mask into a narrow-band signed distance\n"
+      "field; extract() contours any volume into a Mesh whose vertices/triangles are\n"
+      "numpy views. Arrays are indexed [x, y, z].\n\n"
       "Errors: bad input raises ValueError, an unreadable or unwritable file OSError,\n"
       "both with the library's one-line message naming the file and the problem.";
   m.attr("__version__") = "0.1.0";
@@ -39,4 +40,5 @@ PYBIND11_MODULE(isovdb, m) {
   isovdb::python::bindSeismic(m);
   isovdb::python::bindMesh(m);
   isovdb::python::bindExtract(m);
+  isovdb::python::bindMorph(m);
 }

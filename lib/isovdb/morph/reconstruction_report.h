@@ -1,0 +1,34 @@
+/// @file reconstruction_report.h
+/// @brief The slice-morph front ends' shared vocabulary: the names of the
+///        interpolation and progress modes, and the figures of a reconstruction
+///        (what `isovdb morph --stats` and Python's morph_slices report).
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string_view>
+
+#include "isovdb/morph/reconstruct.h"
+
+namespace isovdb::morph {
+
+/// "levelset", "nearest", "linear".
+std::optional<Interpolation> parseInterpolation(std::string_view name);
+std::string_view interpolationName(Interpolation interpolation);
+
+/// "exponential", "arrival", "iterations".
+std::optional<Progress> parseProgress(std::string_view name);
+std::string_view progressName(Progress progress);
+
+/// @brief Checks what the options' front ends cannot: particles need the level-set
+///        interpolation, a positive tolerance, at least one iteration.
+/// @throw InputError naming the flag (`pls`, `tolerance`, `max-iterations`).
+void checkReconstructOptions(const ReconstructOptions& options);
+
+/// @brief The figures of `r`: modes, slices, iterations, per-pair figures, time
+///        per intermediate slice and per iteration; and the stage timings under
+///        "timings_s" (slice_sdf, morph, assembly).
+nlohmann::ordered_json reconstructionReport(const Reconstruction& r, const ReconstructOptions& options);
+
+}  // namespace isovdb::morph
