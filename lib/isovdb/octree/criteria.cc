@@ -128,28 +128,40 @@ bool hasHiddenComponent(const MetaCellSamples& samples, std::array<int, 3> origi
       for (int x = 0; x < n; ++x, ++i) {
         const bool onFace = faceRow || x == 0 || x == size;
         state[i] = static_cast<std::uint8_t>((isInside(row[x], iso) ? 1 : 0) | (onFace ? 2 : 0));
-        if (onFace) queue.push_back(static_cast<std::int32_t>(i));
       }
     }
-  const std::int32_t strides[3] = {1, n, n * n};
+  // Face samples count as reached. Flood the interior from the samples of the outermost
+  // interior shell that touch a face sample of their phase; an interior sample's six
+  // neighbours all lie in the cell, so the flood needs no bounds checks.
+  const std::array<std::int32_t, 6> steps{1, -1, n, -n, n * n, -n * n};
+  for (int z = 1; z < size; ++z)
+    for (int y = 1; y < size; ++y)
+      for (int x = 1; x < size; ++x) {
+        const bool shell = x == 1 || y == 1 || z == 1 || x == size - 1 || y == size - 1 || z == size - 1;
+        if (!shell) continue;
+        const std::int32_t at = (z * n + y) * n + x;
+        const std::uint8_t reached = static_cast<std::uint8_t>((state[static_cast<std::size_t>(at)] & 1) | 2);
+        for (const std::int32_t step : steps)
+          if (state[static_cast<std::size_t>(at + step)] == reached) {
+            state[static_cast<std::size_t>(at)] = reached;
+            queue.push_back(at);
+            break;
+          }
+      }
   for (std::size_t head = 0; head < queue.size(); ++head) {
     const std::int32_t at = queue[head];
     const std::uint8_t phase = state[static_cast<std::size_t>(at)] & 1;
-    std::int32_t rest = at;
-    for (int a = 0; a < 3; ++a) {
-      const int c = rest % n;  // coordinate along axis a
-      rest /= n;
-      for (const int step : {-1, 1}) {
-        if ((step < 0 && c == 0) || (step > 0 && c == size)) continue;
-        const auto j = static_cast<std::size_t>(at + step * strides[a]);
-        if (state[j] == phase) {  // same phase, not reached yet
-          state[j] = static_cast<std::uint8_t>(phase | 2);
-          queue.push_back(static_cast<std::int32_t>(j));
-        }
+    for (const std::int32_t step : steps) {
+      const auto j = static_cast<std::size_t>(at + step);
+      if (state[j] == phase) {  // same phase, not reached yet (an interior sample: faces are reached)
+        state[j] = static_cast<std::uint8_t>(phase | 2);
+        queue.push_back(static_cast<std::int32_t>(j));
       }
     }
   }
-  return queue.size() != count;
+  const std::size_t interior = static_cast<std::size_t>(size - 1) * static_cast<std::size_t>(size - 1) *
+                               static_cast<std::size_t>(size - 1);
+  return queue.size() != interior;
 }
 
 std::uint8_t cellCornerSigns(const MetaCellSamples& samples, std::array<int, 3> origin, int size,
