@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   cli::addCheckCommand(app, context);
   cli::addOctreeCommand(app, context);
   cli::addConvertCommand(app, context);
+  cli::addReservoirCommand(app, context);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -17,8 +17,8 @@ struct BoxGrid {
   Eigen::Vector3d origin{0, 0, 0};
   double faultThrow = 0.0;                 ///< z offset of the cells with i >= nx/2 (a fault)
   bool mirrorX = false;                    ///< x = origin - i*cell: a left-handed grid
-  std::function<double(const Eigen::Vector3d&)> field;  ///< property at the cell centres
-  std::function<bool(int, int, int)> active;             ///< empty: all active
+  std::function<double(const Eigen::Vector3d&)> field = {};  ///< property at the cell centres
+  std::function<bool(int, int, int)> active = {};           ///< empty: all active
 };
 
 /// World position of node (i, j, k) of the cell column i (fault throw applied by column).
