@@ -3,6 +3,7 @@
 #include "isovdb/reservoir/corner_point_grid.h"
 #include "isovdb/reservoir/grdecl_reader.h"
 #include "isovdb/reservoir/hex_marching_cubes.h"
+#include "isovdb/reservoir/pn_tessellation.h"
 
 #include <algorithm>
 
@@ -42,7 +43,15 @@ mesh::Mesh extractReservoir(const ReservoirOptions& options, Statistics& stats) 
   auto warnings = grid.warnings;
   warnings.insert(warnings.end(), field.warnings.begin(), field.warnings.end());
   section["warnings"] = warnings;
-  return std::move(contour.mesh);
+  if (options.maxTessellation <= 0) return std::move(contour.mesh);
+  Statistics::StageTimer timer(&stats, "pn_tessellation");
+  reservoir::TessellationResult pn =
+      reservoir::tessellatePn(contour.mesh, {.maxFactor = options.maxTessellation});
+  section["tessellation_max_factor"] = options.maxTessellation;
+  section["tessellation_mean_edge_factor"] = pn.meanFactor;
+  section["pn_triangles"] = pn.mesh.triangleCount();
+  section["pn_vertices"] = pn.mesh.vertexCount();
+  return std::move(pn.mesh);
 }
 
 }  // namespace isovdb::pipeline
