@@ -9,8 +9,7 @@ namespace isovdb::test {
 namespace {
 
 TEST(CliReservoir, Spe9PoroWithTessellationAndStatistics) {
-  const auto deck = sharedDataDir() / "reservoir/spe9/SPE9_CP.DATA";
-  if (!std::filesystem::exists(deck)) GTEST_SKIP() << "no " << deck;
+  const auto deck = dataDir() / "reservoir/spe9/SPE9_CP.DATA";
   TempDir dir;
   std::string output;
   ASSERT_EQ(runCommand(cliPath().string() + " -q reservoir " + deck.string() +

@@ -164,6 +164,19 @@ struct Sample {
   std::string property;
 };
 
+TEST(GrdeclReader, BundledSpe9LoadsThroughInclude) {
+  // SPE9_CP.DATA: RUNSPEC flags, TITLE, INCLUDE of the grid and of PERMX, PORO as 600*v repeats.
+  const GrdeclDeck deck = readGrdecl(test::dataDir() / "reservoir/spe9/SPE9_CP.DATA");
+  const CornerPointGrid grid = buildCornerPointGrid(deck);
+  EXPECT_EQ(grid.dims, (std::array<int, 3>{24, 25, 15}));
+  EXPECT_EQ(grid.activeCells, 9000);
+  ASSERT_EQ(deck.properties.at("PORO").size(), 9000u);
+  EXPECT_DOUBLE_EQ(deck.properties.at("PORO")[0], 0.087);
+  EXPECT_DOUBLE_EQ(deck.properties.at("PORO")[8999], 0.157);
+  EXPECT_EQ(deck.properties.at("PERMX").size(), 9000u);
+  EXPECT_EQ(deck.warnings.size(), 2u) << "COPY and MULTIPLY are reported as not applied";
+}
+
 TEST(GrdeclReader, SharedSamplesLoad) {
   const auto root = test::sharedDataDir() / "reservoir";
   if (!std::filesystem::exists(root)) GTEST_SKIP() << "no " << root << " (shared reservoir samples)";
