@@ -122,19 +122,59 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
     out.vertices.push_back(v);
     return vertexOf[edge];
   };
+  // Faces holding each cell edge: a fan diagonal between two crossings of one face
+  // would coincide with the neighbour cell's diagonal (an edge of four triangles).
+  auto faceMask = [&](int edge) {
+    int mask = 0;
+    for (int f = 0; f < 6; ++f) {
+      int found = 0;
+      for (int c : kFaces[f]) found += c == edgeCorners[edge][0] || c == edgeCorners[edge][1];
+      mask |= (found == 2) << f;
+    }
+    return mask;
+  };
+  auto emit = [&](int a, int b, int c) {
+    std::array<int, 3> tri{a, c, b};  // faces towards lower values
+    if (flip) std::swap(tri[1], tri[2]);
+    out.triangles.push_back(tri);
+  };
   std::array<bool, 12> visited{};
+  int loopIndex = 0;
   for (int start = 0; start < 12; ++start) {
     if (next[start] < 0 || visited[start]) continue;
-    std::vector<int> loop;
+    std::vector<int> edges;
     for (int e = start; !visited[e]; e = next[e]) {
       visited[e] = true;
-      loop.push_back(vertex(e));
+      edges.push_back(e);
     }
-    for (std::size_t n = 1; n + 1 < loop.size(); ++n) {
-      std::array<int, 3> tri{loop[0], loop[n + 1], loop[n]};  // faces towards lower values
-      if (flip) std::swap(tri[1], tri[2]);
-      out.triangles.push_back(tri);
+    const std::size_t n = edges.size();
+    std::vector<int> loop(n);
+    for (std::size_t i = 0; i < n; ++i) loop[i] = vertex(edges[i]);
+    // A fan apex whose diagonals leave every face: else a centre vertex inside the cell.
+    int apex = -1;
+    for (std::size_t a = 0; a < n && apex < 0; ++a) {
+      bool ok = true;
+      for (std::size_t m = 2; m + 1 < n && ok; ++m) ok = (faceMask(edges[a]) & faceMask(edges[(a + m) % n])) == 0;
+      if (ok) apex = static_cast<int>(a);
     }
+    if (apex >= 0) {
+      for (std::size_t m = 1; m + 1 < n; ++m) emit(loop[apex], loop[(apex + m) % n], loop[(apex + m + 1) % n]);
+    } else {
+      CellVertex centre;
+      centre.key = (std::uint64_t{1} << 63) | (static_cast<std::uint64_t>(cell) << 4) | loopIndex;
+      Eigen::Vector3f sum = Eigen::Vector3f::Zero();
+      Vec3d gradient = Vec3d::Zero();
+      for (int v : loop) {
+        sum += out.vertices[v].position;
+        gradient += out.vertices[v].gradient;
+      }
+      centre.position = sum / static_cast<float>(n);
+      centre.gradient = gradient / static_cast<double>(n);
+      const int c = static_cast<int>(out.vertices.size());
+      out.vertices.push_back(centre);
+      for (std::size_t m = 0; m < n; ++m) emit(c, loop[m], loop[(m + 1) % n]);
+    }
+    ++loopIndex;
   }
 }
 

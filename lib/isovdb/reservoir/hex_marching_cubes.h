@@ -6,9 +6,11 @@
 /// with four crossings is resolved with the asymptotic decider (the sign of
 /// the bilinear saddle), so the two cells sharing a face always agree and the
 /// surface has no holes between them. The segments of a cell's six faces form
-/// closed loops, each triangulated as a fan. Vertices lie on cell edges and
-/// are keyed by the edge's two geometric points, so cells that touch share
-/// them (indexed, welded mesh); cells across a fault do not. Triangles face
+/// closed loops, each triangulated as a fan from a vertex whose diagonals
+/// cross the cell (never along a face, where the neighbour's fan could put the
+/// same edge), or around a centre vertex when no such vertex exists. Vertices
+/// lie on cell edges and are keyed by the edge's two geometric points, so
+/// cells that touch share them (indexed, welded mesh); cells across a fault do not. Triangles face
 /// lower values (the normal points out of the region above the iso-value) in
 /// world space whatever the grid's handedness. Cells run in parallel (TBB);
 /// the output does not depend on the thread count.
