@@ -46,8 +46,22 @@ double centreJacobian(const std::array<Vec3d, 8>& p) {
   return j.determinant();
 }
 
+// A cell of zero thickness along one axis (a pinched layer): the cells on both
+// sides share its points, so its surface would only double theirs.
+bool collapsed(const CornerPointGrid& grid, std::size_t cell) {
+  const auto& ids = grid.pointIds[cell];
+  for (int axisBit : {1, 2, 4}) {
+    bool all = true;
+    for (int c = 0; c < 8 && all; ++c)
+      if (!(c & axisBit)) all = ids[c] == ids[c | axisBit];
+    if (all) return true;
+  }
+  return false;
+}
+
 void contourCell(const CornerPointGrid& grid, const CornerField& field, std::size_t cell,
                  const HexContourOptions& options, CellOutput& out) {
+  if (collapsed(grid, cell)) return;
   std::array<double, 8> g;
   std::array<bool, 8> above;
   int aboveCount = 0;
@@ -114,6 +128,10 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
     const Vec3d& pb = grid.points[ids[b]];
     CellVertex v;
     v.key = (static_cast<std::uint64_t>(ids[a]) << 32) | ids[b];
+    // A corner exactly at the iso-value (FACIES 0/1 averaged to 0.5): every edge
+    // from it meets the surface there, so they share one vertex (no zero-area triangles).
+    if (t == 0.0) v.key = (std::uint64_t{1} << 62) | ids[a];
+    if (t == 1.0) v.key = (std::uint64_t{1} << 62) | ids[b];
     v.position = (pa + t * (pb - pa)).cast<float>();
     v.gradient = options.normals ? Vec3d((1 - t) * cornerGradient(grid, field, cell, a) +
                                          t * cornerGradient(grid, field, cell, b))
