@@ -29,6 +29,7 @@ void addCheckCommand(CLI::App& app, Context& context);
 void addOctreeCommand(CLI::App& app, Context& context);
 void addConvertCommand(CLI::App& app, Context& context);
 void addMorphCommand(CLI::App& app, Context& context);
+void addReservoirCommand(CLI::App& app, Context& context);
 
 /// Prints a statistics report as "section.key: value" lines on stdout.
 void printStatistics(const pipeline::Statistics& stats);

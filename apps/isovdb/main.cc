@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   cli::addOctreeCommand(app, context);
   cli::addConvertCommand(app, context);
   cli::addMorphCommand(app, context);
+  cli::addReservoirCommand(app, context);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,64 @@
+// `isovdb reservoir GRID.grdecl [MORE.grdecl...] --property NAME --iso V -o OUT.ply`:
+// isosurface of a cell property of a corner-point reservoir grid (paper 003).
+#include <iostream>
+
+#include "commands.h"
+#include "isovdb/errors.h"
+#include "isovdb/io/mesh_file.h"
+#include "isovdb/pipeline/reservoir_extract.h"
+
+namespace isovdb::cli {
+
+void addReservoirCommand(CLI::App& app, Context& context) {
+  struct State {
+    std::vector<std::string> inputs;
+    std::string output, statsPath, tessellate;
+    pipeline::ReservoirOptions options;
+  };
+  auto state = std::make_shared<State>();
+  CLI::App* command = app.add_subcommand(
+      "reservoir", "Corner-point grid (Eclipse GRDECL) -> isosurface of a cell property (Marching Cubes on "
+                   "hexahedra, Jacobian normals)");
+  command->add_option("GRID", state->inputs, "GRDECL deck, then optional files with more keywords (properties)")
+      ->required();
+  command->add_option("--property", state->options.property, "Cell property keyword (PORO, FACIES, PERMX, ...)")
+      ->required();
+  command->add_option("--iso", state->options.iso, "Iso-value")->required();
+  command->add_option("-o,--output", state->output, "Output mesh (.ply binary, or .obj), with normals")->required();
+  command->add_option("--tessellate", state->tessellate, "max=K: curved PN triangles, per-edge factors up to K");
+  command->add_option("--stats", state->statsPath, "Also write the figures as JSON");
+  command->callback([state, &context] {
+    for (const auto& input : state->inputs) state->options.inputs.emplace_back(input);
+    if (!state->tessellate.empty()) {
+      const std::string prefix = "max=";
+      if (state->tessellate.rfind(prefix, 0) != 0)
+        throw InputError("--tessellate: expected max=K, got '" + state->tessellate + "'");
+      try {
+        state->options.maxTessellation = std::stoi(state->tessellate.substr(prefix.size()));
+      } catch (const std::exception&) {
+        throw InputError("--tessellate: K must be an integer, got '" + state->tessellate + "'");
+      }
+      if (state->options.maxTessellation < 1 || state->options.maxTessellation > 64)
+        throw InputError("--tessellate: K must be between 1 and 64");
+    }
+    pipeline::Statistics stats;
+    const mesh::Mesh mesh = [&] {
+      pipeline::Statistics::StageTimer total(&stats, "total");
+      return pipeline::extractReservoir(state->options, stats);
+    }();
+    {
+      pipeline::Statistics::StageTimer timer(&stats, "write");
+      io::writeMesh(state->output, mesh);
+    }
+    for (const auto& w : stats["reservoir"]["warnings"]) std::cerr << "isovdb: warning: " << w.get<std::string>() << '\n';
+    stats["output"]["path"] = state->output;
+    stats["output"]["triangles"] = mesh.triangleCount();
+    stats["output"]["vertices"] = mesh.vertexCount();
+    stats.recordMemory();
+    if (!state->statsPath.empty()) stats.write(state->statsPath);
+    if (!context.quiet) printStatistics(stats);
+    context.exitCode = 0;
+  });
+}
+
+}  // namespace isovdb::cli

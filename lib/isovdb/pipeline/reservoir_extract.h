@@ -1,0 +1,25 @@
+/// @file reservoir_extract.h
+/// @brief `isovdb reservoir`: GRDECL deck -> corner-point grid -> cell values
+/// averaged to corners -> Marching Cubes on hexahedra (+ optional PN tessellation).
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+#include "isovdb/mesh/mesh.h"
+#include "isovdb/pipeline/statistics.h"
+
+namespace isovdb::pipeline {
+
+struct ReservoirOptions {
+  std::vector<std::filesystem::path> inputs;  ///< grid file first, then extra property files
+  std::string property;                       ///< cell property keyword (PORO, FACIES, ...)
+  double iso = 0.0;
+  int maxTessellation = 0;                    ///< 0: flat MC triangles; K: PN triangles, factors up to K
+};
+
+/// Runs the reservoir stages; figures (cells, triangles, warnings, timings) go to `stats`.
+/// @throw InputError for a bad deck (naming the file).
+mesh::Mesh extractReservoir(const ReservoirOptions& options, Statistics& stats);
+
+}  // namespace isovdb::pipeline

@@ -1,0 +1,189 @@
+#include "isovdb/reservoir/corner_point_grid.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "isovdb/errors.h"
+
+namespace isovdb::reservoir {
+namespace {
+
+std::string cellName(int i, int j, int k) {
+  return "(" + std::to_string(i + 1) + "," + std::to_string(j + 1) + "," + std::to_string(k + 1) + ")";
+}
+
+void requireCount(const GrdeclDeck& deck, const char* keyword, std::size_t found, std::size_t expected,
+                  const std::string& why) {
+  if (found != expected)
+    throw InputError(deck.path.string() + ": " + keyword + " has " + std::to_string(found) + " values, expected " +
+                     std::to_string(expected) + " (" + why + ")");
+}
+
+void requireFinite(const GrdeclDeck& deck, const char* keyword, const std::vector<double>& values) {
+  for (std::size_t n = 0; n < values.size(); ++n)
+    if (!std::isfinite(values[n]))
+      throw InputError(deck.path.string() + ": " + keyword + " value " + std::to_string(n + 1) +
+                       " is not a finite number");
+}
+
+/// Determinant of the trilinear map's Jacobian at corner c (edges leaving c, in +u order).
+double cornerJacobian(const std::array<Vec3d, 8>& p, int c) {
+  Eigen::Matrix3d j;
+  for (int a = 0; a < 3; ++a) {
+    const int other = c ^ (1 << a);
+    j.col(a) = ((c >> a) & 1) ? Vec3d(p[c] - p[other]) : Vec3d(p[other] - p[c]);
+  }
+  return j.determinant();
+}
+
+}  // namespace
+
+CornerPointGrid buildCornerPointGrid(const GrdeclDeck& deck, const GridOptions& options) {
+  const auto [nx, ny, nz] = deck.dims;
+  if (nx <= 0 || ny <= 0 || nz <= 0)
+    throw InputError(deck.path.string() + ": no SPECGRID (or DIMENS) keyword: the grid size is unknown");
+  const std::size_t cells = static_cast<std::size_t>(nx) * ny * nz;
+  const std::string dimText = std::to_string(nx) + "x" + std::to_string(ny) + "x" + std::to_string(nz);
+  requireCount(deck, "COORD", deck.coord.size(), 6 * static_cast<std::size_t>(nx + 1) * (ny + 1),
+               "6 per pillar, (nx+1)(ny+1) pillars for SPECGRID " + dimText);
+  requireCount(deck, "ZCORN", deck.zcorn.size(), 8 * cells, "8 per cell for SPECGRID " + dimText);
+  if (!deck.actnum.empty())
+    requireCount(deck, "ACTNUM", deck.actnum.size(), cells, "one per cell for SPECGRID " + dimText);
+  requireFinite(deck, "COORD", deck.coord);
+  requireFinite(deck, "ZCORN", deck.zcorn);
+
+  CornerPointGrid grid;
+  grid.dims = deck.dims;
+  grid.warnings = deck.warnings;
+  grid.corners.resize(cells);
+  grid.active.resize(cells);
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        const std::size_t cell = grid.cellIndex(i, j, k);
+        grid.active[cell] = deck.actnum.empty() || deck.actnum[cell] != 0;
+        for (int c = 0; c < 8; ++c) {
+          const int ix = c & 1, iy = (c >> 1) & 1, iz = (c >> 2) & 1;
+          const double z = deck.zcorn[((static_cast<std::size_t>(2 * k + iz) * 2 * ny + 2 * j + iy) * 2 * nx) +
+                                      2 * i + ix];
+          const double* pillar = &deck.coord[6 * ((static_cast<std::size_t>(j + iy)) * (nx + 1) + i + ix)];
+          const Vec3d top(pillar[0], pillar[1], pillar[2]), bottom(pillar[3], pillar[4], pillar[5]);
+          const double dz = bottom.z() - top.z();
+          const double t = std::abs(dz) > 0 ? (z - top.z()) / dz : 0.0;
+          grid.corners[cell][c] = Vec3d(top.x() + t * (bottom.x() - top.x()), top.y() + t * (bottom.y() - top.y()), z);
+        }
+      }
+
+  // Tolerance from the bounding box.
+  Vec3d lo = Vec3d::Constant(std::numeric_limits<double>::max()), hi = -lo;
+  for (const auto& cellCorners : grid.corners)
+    for (const Vec3d& p : cellCorners) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+  const double tolerance = std::max(1e-12, options.relativeTolerance * (hi - lo).norm());
+
+  // Points: the corners around each grid node, grouped by position (node order: deterministic ids).
+  grid.pointIds.resize(cells);
+  for (int K = 0; K <= nz; ++K)
+    for (int J = 0; J <= ny; ++J)
+      for (int I = 0; I <= nx; ++I) {
+        const std::size_t first = grid.points.size();
+        for (int c = 7; c >= 0; --c) {  // cell (I-ix, J-iy, K-iz) touches the node with its corner c
+          const int i = I - (c & 1), j = J - ((c >> 1) & 1), k = K - ((c >> 2) & 1);
+          if (i < 0 || j < 0 || k < 0 || i >= nx || j >= ny || k >= nz) continue;
+          const std::size_t cell = grid.cellIndex(i, j, k);
+          const Vec3d& p = grid.corners[cell][c];
+          std::size_t id = first;
+          while (id < grid.points.size() && (grid.points[id] - p).norm() > tolerance) ++id;
+          if (id == grid.points.size()) {
+            grid.points.push_back(p);
+            grid.pointCells.emplace_back();
+          }
+          grid.pointIds[cell][c] = static_cast<std::uint32_t>(id);
+          grid.pointCells[id].push_back(static_cast<std::uint32_t>(cell));
+        }
+      }
+
+  // Orientation and inverted cells.
+  std::vector<double> minDet(cells), maxDet(cells);
+  double sum = 0;
+  for (std::size_t cell = 0; cell < cells; ++cell) {
+    if (!grid.active[cell]) continue;
+    ++grid.activeCells;
+    double lo = std::numeric_limits<double>::max(), hi = -lo;
+    for (int c = 0; c < 8; ++c) {
+      const double d = cornerJacobian(grid.corners[cell], c);
+      lo = std::min(lo, d);
+      hi = std::max(hi, d);
+      sum += d;
+    }
+    minDet[cell] = lo;
+    maxDet[cell] = hi;
+  }
+  grid.orientation = sum < 0 ? -1 : 1;
+  std::size_t firstInverted = cells;
+  for (std::size_t cell = 0; cell < cells; ++cell) {
+    if (!grid.active[cell]) continue;
+    const double scale = std::max(std::abs(minDet[cell]), std::abs(maxDet[cell]));
+    const bool inverted = grid.orientation > 0 ? minDet[cell] < -1e-9 * scale : maxDet[cell] > 1e-9 * scale;
+    if (inverted) {
+      ++grid.invertedCells;
+      if (firstInverted == cells) firstInverted = cell;
+    }
+  }
+  if (grid.invertedCells > 0) {
+    const int i = static_cast<int>(firstInverted % nx), j = static_cast<int>((firstInverted / nx) % ny),
+              k = static_cast<int>(firstInverted / (static_cast<std::size_t>(nx) * ny));
+    grid.warnings.push_back(deck.path.string() + ": " + std::to_string(grid.invertedCells) +
+                            " active cells are inverted (Jacobian of the other sign at a corner), first at cell " +
+                            cellName(i, j, k) + "; their triangles may be folded");
+  }
+  return grid;
+}
+
+CornerField averageToCorners(const CornerPointGrid& grid, const std::vector<double>& cellValues,
+                             const std::string& what) {
+  if (cellValues.size() != grid.cellCount())
+    throw InputError(what + " has " + std::to_string(cellValues.size()) + " values, expected " +
+                     std::to_string(grid.cellCount()) + " (one per cell, active or not)");
+  CornerField field;
+  field.usable.resize(grid.cellCount());
+  std::size_t nanCells = 0;
+  for (std::size_t cell = 0; cell < grid.cellCount(); ++cell) {
+    const bool finite = std::isfinite(cellValues[cell]);
+    nanCells += grid.active[cell] && !finite;
+    field.usable[cell] = grid.active[cell] && finite;
+  }
+  if (nanCells > 0)
+    field.warnings.push_back(what + ": " + std::to_string(nanCells) +
+                             " active cells have a NaN or infinite value; treated as inactive");
+  field.pointValues.assign(grid.points.size(), std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t id = 0; id < grid.points.size(); ++id) {
+    double sum = 0;
+    int count = 0;
+    for (std::uint32_t cell : grid.pointCells[id])
+      if (field.usable[cell]) {
+        sum += cellValues[cell];
+        ++count;
+      }
+    if (count > 0) field.pointValues[id] = sum / count;
+  }
+  return field;
+}
+
+CornerField averageToCorners(const CornerPointGrid& grid, const GrdeclDeck& deck, const std::string& property) {
+  const auto found = deck.properties.find(property);
+  if (found == deck.properties.end()) {
+    std::string names;
+    for (const auto& [name, values] : deck.properties) names += (names.empty() ? "" : ", ") + name;
+    throw InputError(deck.path.string() + ": no property " + property + " (found: " +
+                     (names.empty() ? "none" : names) + ")");
+  }
+  return averageToCorners(grid, found->second, deck.path.string() + ": property " + property);
+}
+
+}  // namespace isovdb::reservoir

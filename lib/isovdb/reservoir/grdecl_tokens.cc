@@ -1,0 +1,41 @@
+#include "isovdb/reservoir/grdecl_tokens.h"
+
+#include <cctype>
+
+namespace isovdb::reservoir {
+
+std::vector<GrdeclToken> tokenizeGrdecl(std::string_view text) {
+  std::vector<GrdeclToken> tokens;
+  int line = 1;
+  std::size_t i = 0;
+  const std::size_t n = text.size();
+  while (i < n) {
+    const char c = text[i];
+    if (c == '\n') {
+      ++line;
+      ++i;
+    } else if (std::isspace(static_cast<unsigned char>(c))) {
+      ++i;
+    } else if (c == '-' && i + 1 < n && text[i + 1] == '-') {
+      while (i < n && text[i] != '\n') ++i;
+    } else if (c == '\'' || c == '"') {
+      const std::size_t end = text.find(c, i + 1);
+      const std::size_t stop = end == std::string_view::npos ? n : end;
+      tokens.push_back({std::string(text.substr(i + 1, stop - i - 1)), line, true});
+      for (std::size_t k = i; k < stop; ++k) line += text[k] == '\n';
+      i = stop + 1;
+    } else if (c == '/') {
+      tokens.push_back({"/", line, false});
+      ++i;
+    } else {
+      const std::size_t start = i;
+      while (i < n && !std::isspace(static_cast<unsigned char>(text[i])) && text[i] != '/' && text[i] != '\'' &&
+             text[i] != '"' && !(text[i] == '-' && i + 1 < n && text[i + 1] == '-'))
+        ++i;
+      tokens.push_back({std::string(text.substr(start, i - start)), line, false});
+    }
+  }
+  return tokens;
+}
+
+}  // namespace isovdb::reservoir

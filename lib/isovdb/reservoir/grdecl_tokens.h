@@ -1,0 +1,22 @@
+/// @file grdecl_tokens.h
+/// @brief Splits Eclipse GRDECL text into tokens: `--` comments dropped,
+/// quoted strings kept whole, `/` record terminators as their own token.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace isovdb::reservoir {
+
+struct GrdeclToken {
+  std::string text;   ///< without quotes for a quoted string
+  int line = 0;       ///< 1-based line in the file
+  bool quoted = false;
+  bool isSlash() const { return !quoted && text == "/"; }
+};
+
+/// Tokens of one file's text in order. `/` glued to a value ("0.3/") is split off.
+std::vector<GrdeclToken> tokenizeGrdecl(std::string_view text);
+
+}  // namespace isovdb::reservoir

@@ -1,0 +1,256 @@
+#include "isovdb/reservoir/hex_marching_cubes.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+
+#include "isovdb/reservoir/jacobian_normals.h"
+
+namespace isovdb::reservoir {
+namespace {
+
+// Faces as corner cycles, counter-clockwise seen from outside (right-handed parameter space).
+constexpr int kFaces[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+
+int edgeId(int a, int b) {  // 12 edges: axis * 4 + the other two bits
+  const int axisBit = a ^ b;
+  const int axis = axisBit == 1 ? 0 : axisBit == 2 ? 1 : 2;
+  const int base = a & ~axisBit;
+  int rest = 0, r = 0;
+  for (int bit = 0; bit < 3; ++bit)
+    if (bit != axis) rest |= ((base >> bit) & 1) << r++;
+  return axis * 4 + rest;
+}
+
+struct CellVertex {
+  std::uint64_t key;
+  Eigen::Vector3f position;
+  Vec3d gradient;
+};
+
+struct CellOutput {
+  std::vector<CellVertex> vertices;
+  std::vector<std::array<int, 3>> triangles;  // into vertices
+  int ambiguousFaces = 0;
+};
+
+double centreJacobian(const std::array<Vec3d, 8>& p) {
+  Eigen::Matrix3d j;
+  j.col(0) = 0.25 * (p[1] - p[0] + p[3] - p[2] + p[5] - p[4] + p[7] - p[6]);
+  j.col(1) = 0.25 * (p[2] - p[0] + p[3] - p[1] + p[6] - p[4] + p[7] - p[5]);
+  j.col(2) = 0.25 * (p[4] - p[0] + p[5] - p[1] + p[6] - p[2] + p[7] - p[3]);
+  return j.determinant();
+}
+
+// A cell of zero thickness along one axis (a pinched layer): the cells on both
+// sides share its points, so its surface would only double theirs.
+bool collapsed(const CornerPointGrid& grid, std::size_t cell) {
+  const auto& ids = grid.pointIds[cell];
+  for (int axisBit : {1, 2, 4}) {
+    bool all = true;
+    for (int c = 0; c < 8 && all; ++c)
+      if (!(c & axisBit)) all = ids[c] == ids[c | axisBit];
+    if (all) return true;
+  }
+  return false;
+}
+
+void contourCell(const CornerPointGrid& grid, const CornerField& field, std::size_t cell,
+                 const HexContourOptions& options, CellOutput& out) {
+  if (collapsed(grid, cell)) return;
+  std::array<double, 8> g;
+  std::array<bool, 8> above;
+  int aboveCount = 0;
+  for (int c = 0; c < 8; ++c) {
+    g[c] = field.value(grid, cell, c) - options.iso;
+    above[c] = g[c] >= 0;
+    aboveCount += above[c];
+  }
+  if (aboveCount == 0 || aboveCount == 8) return;
+
+  // Segments: next[start edge] = end edge, from an above->below crossing to a below->above one.
+  std::array<int, 12> next;
+  std::array<std::array<int, 2>, 12> edgeCorners{};
+  next.fill(-1);
+  auto link = [&](int a0, int b0, int a1, int b1) {  // crossing (a0,b0) -> crossing (a1,b1)
+    const int from = edgeId(a0, b0), to = edgeId(a1, b1);
+    next[from] = to;
+    edgeCorners[from] = {a0, b0};
+    edgeCorners[to] = {a1, b1};
+  };
+  for (const auto& f : kFaces) {
+    int crossings = 0;
+    for (int e = 0; e < 4; ++e) crossings += above[f[e]] != above[f[(e + 1) % 4]];
+    if (crossings == 2) {
+      int down = -1, up = -1;  // edge positions (CCW) where the sign goes above->below / below->above
+      for (int e = 0; e < 4; ++e) {
+        const int a = f[e], b = f[(e + 1) % 4];
+        if (above[a] && !above[b]) down = e;
+        if (!above[a] && above[b]) up = e;
+      }
+      link(f[down], f[(down + 1) % 4], f[up], f[(up + 1) % 4]);
+    } else if (crossings == 4) {
+      ++out.ambiguousFaces;
+      const double a = g[f[0]], b = g[f[1]], c = g[f[2]], d = g[f[3]];
+      const double denominator = a + c - b - d;
+      const double saddle = denominator != 0 ? (a * c - b * d) / denominator : 0.25 * (a + b + c + d);
+      const bool saddleAbove = saddle >= 0;
+      // Cut off the corners of the class the saddle does not belong to.
+      for (int e = 0; e < 4; ++e) {
+        const int corner = f[e];
+        if (above[corner] == saddleAbove) continue;
+        const int prev = f[(e + 3) % 4], nxt = f[(e + 1) % 4];
+        // Edges (prev, corner) and (corner, nxt), oriented by the above->below rule.
+        if (above[corner])
+          link(corner, nxt, prev, corner);
+        else
+          link(prev, corner, corner, nxt);
+      }
+    }
+  }
+
+  const auto& ids = grid.pointIds[cell];
+  const double det = centreJacobian(grid.corners[cell]);
+  const bool flip = det < 0 || (det == 0 && grid.orientation < 0);
+  std::array<int, 12> vertexOf;
+  vertexOf.fill(-1);
+  auto vertex = [&](int edge) {
+    if (vertexOf[edge] >= 0) return vertexOf[edge];
+    int a = edgeCorners[edge][0], b = edgeCorners[edge][1];
+    if (ids[a] > ids[b]) std::swap(a, b);  // canonical order: identical result in every cell
+    const double va = field.pointValues[ids[a]], vb = field.pointValues[ids[b]];
+    const double t = std::clamp((options.iso - va) / (vb - va), 0.0, 1.0);
+    const Vec3d& pa = grid.points[ids[a]];
+    const Vec3d& pb = grid.points[ids[b]];
+    CellVertex v;
+    v.key = (static_cast<std::uint64_t>(ids[a]) << 32) | ids[b];
+    // A corner exactly at the iso-value (FACIES 0/1 averaged to 0.5): every edge
+    // from it meets the surface there, so they share one vertex (no zero-area triangles).
+    if (t == 0.0) v.key = (std::uint64_t{1} << 62) | ids[a];
+    if (t == 1.0) v.key = (std::uint64_t{1} << 62) | ids[b];
+    v.position = (pa + t * (pb - pa)).cast<float>();
+    v.gradient = options.normals ? Vec3d((1 - t) * cornerGradient(grid, field, cell, a) +
+                                         t * cornerGradient(grid, field, cell, b))
+                                 : Vec3d::Zero();
+    vertexOf[edge] = static_cast<int>(out.vertices.size());
+    out.vertices.push_back(v);
+    return vertexOf[edge];
+  };
+  // Faces holding each cell edge: a fan diagonal between two crossings of one face
+  // would coincide with the neighbour cell's diagonal (an edge of four triangles).
+  auto faceMask = [&](int edge) {
+    int mask = 0;
+    for (int f = 0; f < 6; ++f) {
+      int found = 0;
+      for (int c : kFaces[f]) found += c == edgeCorners[edge][0] || c == edgeCorners[edge][1];
+      mask |= (found == 2) << f;
+    }
+    return mask;
+  };
+  auto emit = [&](int a, int b, int c) {
+    std::array<int, 3> tri{a, c, b};  // faces towards lower values
+    if (flip) std::swap(tri[1], tri[2]);
+    out.triangles.push_back(tri);
+  };
+  std::array<bool, 12> visited{};
+  int loopIndex = 0;
+  for (int start = 0; start < 12; ++start) {
+    if (next[start] < 0 || visited[start]) continue;
+    std::vector<int> edges;
+    for (int e = start; !visited[e]; e = next[e]) {
+      visited[e] = true;
+      edges.push_back(e);
+    }
+    const std::size_t n = edges.size();
+    std::vector<int> loop(n);
+    for (std::size_t i = 0; i < n; ++i) loop[i] = vertex(edges[i]);
+    // A fan apex whose diagonals leave every face: else a centre vertex inside the cell.
+    int apex = -1;
+    for (std::size_t a = 0; a < n && apex < 0; ++a) {
+      bool ok = true;
+      for (std::size_t m = 2; m + 1 < n && ok; ++m) ok = (faceMask(edges[a]) & faceMask(edges[(a + m) % n])) == 0;
+      if (ok) apex = static_cast<int>(a);
+    }
+    if (apex >= 0) {
+      for (std::size_t m = 1; m + 1 < n; ++m) emit(loop[apex], loop[(apex + m) % n], loop[(apex + m + 1) % n]);
+    } else {
+      CellVertex centre;
+      centre.key = (std::uint64_t{1} << 63) | (static_cast<std::uint64_t>(cell) << 4) | loopIndex;
+      Eigen::Vector3f sum = Eigen::Vector3f::Zero();
+      Vec3d gradient = Vec3d::Zero();
+      for (int v : loop) {
+        sum += out.vertices[v].position;
+        gradient += out.vertices[v].gradient;
+      }
+      centre.position = sum / static_cast<float>(n);
+      centre.gradient = gradient / static_cast<double>(n);
+      const int c = static_cast<int>(out.vertices.size());
+      out.vertices.push_back(centre);
+      for (std::size_t m = 0; m < n; ++m) emit(c, loop[m], loop[(m + 1) % n]);
+    }
+    ++loopIndex;
+  }
+}
+
+}  // namespace
+
+HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField& field,
+                                  const HexContourOptions& options) {
+  const std::size_t cells = grid.cellCount();
+  std::vector<CellOutput> outputs(cells);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells, 256), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t cell = r.begin(); cell != r.end(); ++cell)
+      if (field.usable[cell]) contourCell(grid, field, cell, options, outputs[cell]);
+  });
+
+  HexContourResult result;
+  std::vector<std::uint64_t> keys;
+  for (const CellOutput& out : outputs) {
+    result.cutCells += !out.triangles.empty();
+    result.ambiguousFaces += out.ambiguousFaces;
+    for (const CellVertex& v : out.vertices) keys.push_back(v.key);
+  }
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  mesh::Mesh& m = result.mesh;
+  m.positions.resize(keys.size());
+  std::vector<Vec3d> gradients(keys.size(), Vec3d::Zero());
+  for (const CellOutput& out : outputs) {
+    std::vector<std::uint32_t> index(out.vertices.size());
+    for (std::size_t n = 0; n < out.vertices.size(); ++n) {
+      const CellVertex& v = out.vertices[n];
+      index[n] = static_cast<std::uint32_t>(std::lower_bound(keys.begin(), keys.end(), v.key) - keys.begin());
+      m.positions[index[n]] = {v.position.x(), v.position.y(), v.position.z()};
+      gradients[index[n]] += v.gradient;
+    }
+    for (const auto& t : out.triangles) {
+      const mesh::Triangle tri{index[t[0]], index[t[1]], index[t[2]]};
+      if (tri[0] != tri[1] && tri[1] != tri[2] && tri[0] != tri[2]) m.triangles.push_back(tri);
+    }
+  }
+  if (options.normals) {
+    // Fallback for vertices without a usable gradient (collapsed cells): area-weighted face normals.
+    std::vector<Vec3d> faceNormals(keys.size(), Vec3d::Zero());
+    for (const auto& t : m.triangles) {
+      const Vec3d a(m.positions[t[0]][0], m.positions[t[0]][1], m.positions[t[0]][2]);
+      const Vec3d b(m.positions[t[1]][0], m.positions[t[1]][1], m.positions[t[1]][2]);
+      const Vec3d c(m.positions[t[2]][0], m.positions[t[2]][1], m.positions[t[2]][2]);
+      const Vec3d n = (b - a).cross(c - a);
+      for (int k = 0; k < 3; ++k) faceNormals[t[k]] += n;
+    }
+    m.normals.resize(keys.size());
+    for (std::size_t n = 0; n < keys.size(); ++n) {
+      Vec3d normal = -gradients[n];
+      if (!(normal.norm() > 0) || !normal.allFinite()) normal = faceNormals[n];
+      if (normal.norm() > 0) normal.normalize();
+      m.normals[n] = {static_cast<float>(normal.x()), static_cast<float>(normal.y()), static_cast<float>(normal.z())};
+    }
+  }
+  return result;
+}
+
+}  // namespace isovdb::reservoir

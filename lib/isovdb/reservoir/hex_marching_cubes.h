@@ -1,0 +1,41 @@
+/// @file hex_marching_cubes.h
+/// @brief Marching Cubes on the hexahedra of a corner-point grid, in each
+/// cell's trilinear parameter space (paper 003 §5).
+///
+/// Each face is cut into segments from its own four corner values; a face
+/// with four crossings is resolved with the asymptotic decider (the sign of
+/// the bilinear saddle), so the two cells sharing a face always agree and the
+/// surface has no holes between them. The segments of a cell's six faces form
+/// closed loops, each triangulated as a fan from a vertex whose diagonals
+/// cross the cell (never along a face, where the neighbour's fan could put the
+/// same edge), or around a centre vertex when no such vertex exists. Vertices
+/// lie on cell edges and are keyed by the edge's two geometric points, so
+/// cells that touch share them (indexed, welded mesh); cells across a fault do not. Triangles face
+/// lower values (the normal points out of the region above the iso-value) in
+/// world space whatever the grid's handedness. Cells run in parallel (TBB);
+/// the output does not depend on the thread count.
+#pragma once
+
+#include <cstdint>
+
+#include "isovdb/mesh/mesh.h"
+#include "isovdb/reservoir/corner_point_grid.h"
+
+namespace isovdb::reservoir {
+
+struct HexContourOptions {
+  double iso = 0.0;
+  /// Per-vertex normals from the Jacobian-mapped gradient (jacobian_normals.h).
+  bool normals = true;
+};
+
+struct HexContourResult {
+  mesh::Mesh mesh;                 ///< world (file) coordinates
+  std::int64_t cutCells = 0;       ///< usable cells the surface crosses
+  std::int64_t ambiguousFaces = 0; ///< faces resolved by the asymptotic decider (counted per cell)
+};
+
+HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField& field,
+                                  const HexContourOptions& options = {});
+
+}  // namespace isovdb::reservoir

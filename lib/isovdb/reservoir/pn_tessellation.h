@@ -1,0 +1,43 @@
+/// @file pn_tessellation.h
+/// @brief Adaptive tessellation of a mesh into curved PN triangles (paper 003
+/// §4.3–4.4): a factor per edge from the angle between its two vertex normals
+/// (the linear or the exponential rule of Table 4.1, at most `maxFactor`),
+/// each triangle refined at the largest factor of its edges, the points on an
+/// edge snapped to that edge's own factor so both triangles of an edge put the
+/// same points there (no cracks: a closed mesh stays closed). Normals of the
+/// new vertices are envelope normals.
+#pragma once
+
+#include <cstdint>
+
+#include "isovdb/mesh/mesh.h"
+#include "isovdb/reservoir/corner_point_grid.h"
+
+namespace isovdb::reservoir {
+
+enum class FactorRule {
+  Linear,       ///< l = k (1 - t) / 2, t = n_i . n_j
+  Exponential,  ///< e = 6^(1/t'') - 5, t' = (t + 1) / 2, t'' = 0.45 (1 - t') + t'
+};
+
+/// Subdivisions of an edge before rounding and clamping (Table 4.1's e(t'') or l(t')).
+double edgeSubdivisions(double cosine, int maxFactor, FactorRule rule);
+/// The integer factor of an edge: ceil of edgeSubdivisions clamped to [1, maxFactor].
+int edgeFactor(const Vec3d& ni, const Vec3d& nj, int maxFactor, FactorRule rule);
+
+struct TessellationOptions {
+  int maxFactor = 8;                           ///< k, the most segments an edge is cut into
+  FactorRule rule = FactorRule::Exponential;
+  double inflation = 0.25;                     ///< envelope offset, times the mean edge length
+};
+
+struct TessellationResult {
+  mesh::Mesh mesh;
+  std::int64_t edges = 0;
+  double meanFactor = 0;  ///< over the input edges
+};
+
+/// @pre `input` has one unit normal per vertex. Deterministic.
+TessellationResult tessellatePn(const mesh::Mesh& input, const TessellationOptions& options = {});
+
+}  // namespace isovdb::reservoir
