@@ -46,5 +46,6 @@ void bindSeismic(py::module_& m);  // seismic_bindings.cc: read_segy
 void bindMesh(py::module_& m);     // mesh_bindings.cc: Mesh, read_mesh
 void bindExtract(py::module_& m);  // extract_bindings.cc: extract
 void bindMorph(py::module_& m);    // morph_bindings.cc: morph_slices
+void bindReservoir(py::module_& m);  // reservoir_bindings.cc: extract_reservoir
 
 }  // namespace isovdb::python

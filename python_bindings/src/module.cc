@@ -13,7 +13,8 @@ PYBIND11_MODULE(isovdb, m) {
       "(read_volume, read_segy), numpy arrays (from_numpy) or sparse slice stacks\n"
       "(morph_slices); distance_field() turns a mask into a narrow-band signed distance\n"
       "field; extract() contours any volume into a Mesh whose vertices/triangles are\n"
-      "numpy views. Arrays are indexed [x, y, z].\n\n"
+      "numpy views. Arrays are indexed [x, y, z]. extract_reservoir() contours a\n"
+      "property of an Eclipse corner-point grid (GRDECL).\n\n"
       "Errors: bad input raises ValueError, an unreadable or unwritable file OSError,\n"
       "both with the library's one-line message naming the file and the problem.";
   m.attr("__version__") = "0.1.0";
@@ -41,4 +42,5 @@ PYBIND11_MODULE(isovdb, m) {
   isovdb::python::bindMesh(m);
   isovdb::python::bindExtract(m);
   isovdb::python::bindMorph(m);
+  isovdb::python::bindReservoir(m);
 }
