@@ -1,8 +1,5 @@
 #include "isovdb/contour/dual_vertex.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 
@@ -59,21 +56,6 @@ DualVertex computeDualVertex(const octree::MetaCellSamples& samples, std::array<
                       : qefError(std::span<const Vec3f>(points.data(), n), std::span<const Vec3f>(normals.data(), n), x);
   for (int a = 0; a < 3; ++a) v.position[a] = x[a] + static_cast<float>(samples.origin[a]);
   return v;
-}
-
-std::vector<DualVertex> computeLeafVertices(const octree::MetaCellSamples& samples,
-                                            const octree::LinearOctree& octree, const DualVertexOptions& options) {
-  std::vector<DualVertex> vertices(octree.leafCount());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, octree.leafCount(), 256),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t i = r.begin(); i != r.end(); ++i) {
-                        const octree::OctreeLeaf& l = octree.leaf(i);
-                        const std::uint16_t bipolar = l.bipolarEdges();
-                        if (bipolar == 0) continue;
-                        vertices[i] = computeDualVertex(samples, l.origin, l.size, bipolar, options);
-                      }
-                    });
-  return vertices;
 }
 
 }  // namespace isovdb::contour

@@ -10,7 +10,6 @@
 
 #include <array>
 #include <cstdint>
-#include <vector>
 
 #include "isovdb/contour/qef.h"
 #include "isovdb/octree/linear_octree.h"
@@ -55,12 +54,5 @@ inline DualVertex computeDualVertex(const octree::MetaCellSamples& samples, std:
                                     int cellSize, const DualVertexOptions& options = {}) {
   return computeDualVertex(samples, cellOrigin, cellSize, 0x0fff, options);
 }
-
-/// @brief Dual vertex of every leaf (parallel with TBB; deterministic), indexed
-///        like octree.leaves(); leaves without a bipolar edge get an invalid vertex.
-/// @pre `octree` was built from `samples`.
-std::vector<DualVertex> computeLeafVertices(const octree::MetaCellSamples& samples,
-                                            const octree::LinearOctree& octree,
-                                            const DualVertexOptions& options = {});
 
 }  // namespace isovdb::contour
