@@ -3,7 +3,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include "isovdb/octree/morton.h"
+#include "isovdb/octree/criteria.h"
 
 namespace isovdb::contour {
 
@@ -16,21 +16,10 @@ int cellConfigAt(const octree::MetaCellSamples& samples, const std::array<int, 3
                  float iso) noexcept {
   for (int a = 0; a < 3; ++a)
     if (origin[a] < -samples.apron || origin[a] + size > samples.size + samples.apron) return -1;
-  return cellConfig(samples, origin, size, iso);
+  return octree::cellCornerSigns(samples, origin, size, iso);
 }
 
 }  // namespace
-
-std::uint8_t cellConfig(const octree::MetaCellSamples& samples, const std::array<int, 3>& origin, int size,
-                        float iso) noexcept {
-  std::uint8_t config = 0;
-  for (int c = 0; c < 8; ++c) {
-    const std::array<int, 3> p{origin[0] + (c & 1) * size, origin[1] + ((c >> 1) & 1) * size,
-                               origin[2] + ((c >> 2) & 1) * size};
-    if (octree::isInside(samples.value(p), iso)) config = static_cast<std::uint8_t>(config | (1u << c));
-  }
-  return config;
-}
 
 LeafGroups groupLeaves(const octree::MetaCellSamples& samples, const octree::LinearOctree& tree,
                        std::vector<std::uint8_t> configs, float iso, bool manifoldFix) {

@@ -52,8 +52,4 @@ LeafGroups groupLeaves(const octree::MetaCellSamples& samples, const octree::Lin
 std::vector<mesh::Vec3f> placeGroupVertices(const octree::MetaCellSamples& samples, const octree::LinearOctree& tree,
                                             const LeafGroups& groups, const DualVertexOptions& options);
 
-/// @brief Configuration of the cell [origin, origin + size] (meta-cell offsets) from the samples.
-std::uint8_t cellConfig(const octree::MetaCellSamples& samples, const std::array<int, 3>& origin, int size,
-                        float iso) noexcept;
-
 }  // namespace isovdb::contour

@@ -14,6 +14,7 @@
 #include "isovdb/contour/dual_vertex.h"
 #include "isovdb/contour/leaf_groups.h"
 #include "isovdb/errors.h"
+#include "isovdb/octree/criteria.h"
 #include "isovdb/octree/morton.h"
 
 namespace isovdb::contour {
@@ -81,7 +82,7 @@ MetaCellMesh contourRegularMetaCell(const MetaCellSamples& samples, const Linear
   std::vector<char> mismatch(n, 0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kGrain), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
-      configs[i] = cellConfig(samples, leaves[i].origin, leaves[i].size, options.iso);
+      configs[i] = octree::cellCornerSigns(samples, leaves[i].origin, leaves[i].size, options.iso);
       mismatch[i] = configs[i] != leaves[i].cornerSigns;
     }
   });
