@@ -38,18 +38,24 @@ bool orientedPlane(const Vec3d& p0, const Vec3d& p1, const Vec3d& p2, const Vec3
   return true;
 }
 
+/// A convex polygon of at most 8 vertices: a triangle clipped by two planes has at most 5.
+struct SmallPolygon {
+  std::array<Vec3d, 8> points;
+  std::size_t size = 0;
+};
+
 /// Keeps the part of a convex polygon where plane >= 0 (Sutherland–Hodgman).
-void clip(const std::vector<Vec3d>& in, const Plane& plane, std::vector<Vec3d>& out) {
-  out.clear();
-  const std::size_t n = in.size();
+void clip(const SmallPolygon& in, const Plane& plane, SmallPolygon& out) {
+  out.size = 0;
+  const std::size_t n = in.size;
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec3d& p = in[i];
-    const Vec3d& q = in[(i + 1) % n];
+    const Vec3d& p = in.points[i];
+    const Vec3d& q = in.points[(i + 1) % n];
     const double sp = plane.eval(p), sq = plane.eval(q);
-    if (sp >= 0) out.push_back(p);
+    if (sp >= 0) out.points[out.size++] = p;
     if ((sp >= 0) != (sq >= 0)) {
       const double t = sp / (sp - sq);
-      out.push_back(add(p, scale(sub(q, p), t)));
+      out.points[out.size++] = add(p, scale(sub(q, p), t));
     }
   }
 }
@@ -63,26 +69,71 @@ double distanceToSegment(const Vec3d& x, const Vec3d& p, const Vec3d& q) {
   return distance(x, add(p, scale(d, t)));
 }
 
-/// Is the triangle inside tetrahedron conv(e0, e1, P, Q) within the angular sector of (P, Q)?
-bool insideSector(const Vec3d& e0, const Vec3d& e1, const Vec3d& P, const Vec3d& Q,
-                  const std::vector<Vec3d>& triangle, const EnvelopeOptions& options,
-                  std::vector<Vec3d>& scratchA, std::vector<Vec3d>& scratchB) {
+/// One tetrahedron conv(e0, e1, P, Q) of an envelope: the planes of its
+/// angular sector around the edge line and of its two outer faces.
+struct Sector {
+  Vec3d P{0, 0, 0}, Q{0, 0, 0};
   Plane sectorP, sectorQ, outer0, outer1;
+  bool valid = false;  ///< false if degenerate: no triangle is inside it
+};
+
+Sector makeSector(const Vec3d& e0, const Vec3d& e1, const Vec3d& P, const Vec3d& Q) {
+  Sector sector;
+  sector.P = P;
+  sector.Q = Q;
   // Sector: the side of plane (e, P) containing Q and the side of plane (e, Q) containing P.
-  if (!orientedPlane(e0, e1, P, Q, sectorP) || !orientedPlane(e0, e1, Q, P, sectorQ)) return false;
   // Outer faces shared with neighbouring edges' tetrahedra: (e0, P, Q) and (e1, P, Q).
-  if (!orientedPlane(e0, P, Q, e1, outer0) || !orientedPlane(e1, P, Q, e0, outer1)) return false;
-  clip(triangle, sectorP, scratchA);
-  if (scratchA.empty()) return true;
-  clip(scratchA, sectorQ, scratchB);
-  if (scratchB.empty()) return true;
-  const double touch = 1e-9 * std::max(1.0, distance(e0, e1));
-  for (const Vec3d& x : scratchB) {
-    if (outer0.eval(x) >= options.margin && outer1.eval(x) >= options.margin) continue;
+  sector.valid = orientedPlane(e0, e1, P, Q, sector.sectorP) && orientedPlane(e0, e1, Q, P, sector.sectorQ) &&
+                 orientedPlane(e0, P, Q, e1, sector.outer0) && orientedPlane(e1, P, Q, e0, sector.outer1);
+  return sector;
+}
+
+/// The 2k tetrahedra of an envelope (cell point before and after each face point),
+/// built once per edge and shared by every candidate triangle.
+struct EnvelopeSectors {
+  std::array<Sector, 8> sectors;
+  int count = 0;
+  double touch = 0.0;  ///< contact tolerance on the segments v_c v_f
+
+  explicit EnvelopeSectors(const EdgeEnvelope& envelope) {
+    const int k = envelope.cellCount;
+    for (int i = 0; i < k; ++i) {
+      const Vec3d& face = envelope.facePoints[static_cast<std::size_t>(i)];
+      const Vec3d& before = envelope.cellPoints[static_cast<std::size_t>(i)];
+      const Vec3d& after = envelope.cellPoints[static_cast<std::size_t>((i + 1) % k)];
+      sectors[static_cast<std::size_t>(count++)] = makeSector(envelope.edgeStart, envelope.edgeEnd, before, face);
+      sectors[static_cast<std::size_t>(count++)] = makeSector(envelope.edgeStart, envelope.edgeEnd, after, face);
+    }
+    touch = 1e-9 * std::max(1.0, distance(envelope.edgeStart, envelope.edgeEnd));
+  }
+};
+
+/// Is the triangle inside the tetrahedron, within its angular sector?
+bool insideSector(const Sector& sector, double touch, const SmallPolygon& triangle, const EnvelopeOptions& options) {
+  if (!sector.valid) return false;
+  SmallPolygon inP, inBoth;
+  clip(triangle, sector.sectorP, inP);
+  if (inP.size == 0) return true;
+  clip(inP, sector.sectorQ, inBoth);
+  for (std::size_t i = 0; i < inBoth.size; ++i) {
+    const Vec3d& x = inBoth.points[i];
+    if (sector.outer0.eval(x) >= options.margin && sector.outer1.eval(x) >= options.margin) continue;
     // Allowed contact: the segment v_c v_f, which neighbouring edges share.
-    if (distanceToSegment(x, P, Q) <= touch) continue;
+    if (distanceToSegment(x, sector.P, sector.Q) <= touch) continue;
     return false;
   }
+  return true;
+}
+
+bool triangleInSectors(const EnvelopeSectors& envelope, const Vec3d& a, const Vec3d& b, const Vec3d& c,
+                       const EnvelopeOptions& options) {
+  SmallPolygon triangle;
+  triangle.points[0] = a;
+  triangle.points[1] = b;
+  triangle.points[2] = c;
+  triangle.size = 3;
+  for (int i = 0; i < envelope.count; ++i)
+    if (!insideSector(envelope.sectors[static_cast<std::size_t>(i)], envelope.touch, triangle, options)) return false;
   return true;
 }
 
@@ -114,21 +165,7 @@ FacePoint computeFacePoint(const Vec3d& a, const Vec3d& b, const MinimalFace& fa
 
 bool triangleInEnvelope(const EdgeEnvelope& envelope, const Vec3d& a, const Vec3d& b, const Vec3d& c,
                         const EnvelopeOptions& options) {
-  const std::vector<Vec3d> triangle{a, b, c};
-  std::vector<Vec3d> scratchA, scratchB;
-  scratchA.reserve(8);
-  scratchB.reserve(8);
-  const int k = envelope.cellCount;
-  for (int i = 0; i < k; ++i) {
-    const Vec3d& face = envelope.facePoints[static_cast<std::size_t>(i)];
-    const Vec3d& before = envelope.cellPoints[static_cast<std::size_t>(i)];
-    const Vec3d& after = envelope.cellPoints[static_cast<std::size_t>((i + 1) % k)];
-    if (!insideSector(envelope.edgeStart, envelope.edgeEnd, before, face, triangle, options, scratchA, scratchB))
-      return false;
-    if (!insideSector(envelope.edgeStart, envelope.edgeEnd, after, face, triangle, options, scratchA, scratchB))
-      return false;
-  }
-  return true;
+  return triangleInSectors(EnvelopeSectors(envelope), a, b, c, options);
 }
 
 std::vector<int> edgePolygon(int cellCount, const std::array<bool, 4>& facesCrossed) {
@@ -162,10 +199,11 @@ EdgeTriangulation chooseTriangulation(const EdgeEnvelope& envelope, const std::a
     for (int a = 0; a < m; ++a) apexes.push_back(a);
   }
   if (!intersectionFree) return EdgeTriangulation{false, apexes.front()};
+  const EnvelopeSectors sectors(envelope);
   for (int apex : apexes) {
     bool ok = true;
     for (int j = 1; j + 1 < m && ok; ++j)
-      ok = triangleInEnvelope(envelope, point(at(apex)), point(at(apex + j)), point(at(apex + j + 1)), options);
+      ok = triangleInSectors(sectors, point(at(apex)), point(at(apex + j)), point(at(apex + j + 1)), options);
     if (ok) return EdgeTriangulation{false, apex};
   }
   return EdgeTriangulation{true, 0};

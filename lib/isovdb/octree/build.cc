@@ -4,6 +4,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <bit>
 #include <string>
 
@@ -75,8 +76,8 @@ struct Evaluation {
 class Builder {
  public:
   Builder(const MetaCellSamples& samples, const OctreeOptions& options, OctreeDepths depths)
-      : samples_(samples), options_(options), depths_(depths) {
-    classify_.iso = options.iso;
+      : samples_(samples), options_(options), depths_(depths), phases_(samples, options.iso),
+        leavesAtDepth_(static_cast<std::size_t>(depths.maxDepth) + 1) {
     classify_.detectInteriorComponents = options.detectInteriorComponents;
   }
 
@@ -93,7 +94,7 @@ class Builder {
       return ev;
     }
     ev.classified = true;
-    const CellTopology topo = classifyCell(samples_, ev.leaf.origin, size, classify_, labeller);
+    const CellTopology topo = classifyCell(phases_, ev.leaf.origin, size, classify_, labeller);
     ev.leaf.cornerSigns = topo.cornerSigns;
     ev.leaf.surface = topo.isHeterogeneous();
     ev.complex = topo.isComplex();
@@ -121,12 +122,16 @@ class Builder {
           samples_, ev.leaf.origin, size, ev.leaf.bipolarEdges(),
           contour::DualVertexOptions{.iso = options_.iso, .singularValueThreshold = options_.singularValueThreshold});
       ev.split = ev.geometric = v.valid() && v.rmsError() > options_.qefTolerance;
+      if (v.valid()) {
+        ev.leaf.vertex = v.position;
+        ev.leaf.vertexTruncation = options_.singularValueThreshold;
+      }
     }
     // A leaf-to-be of the adaptive tree whose faces the surface crosses may still hide a
     // bubble or a speck inside (the criteria only look at edges and faces; a cell with
     // one-phase faces was scanned by classifyCell already).
     if (!ev.split && options_.construction == OctreeConstruction::Adaptive && options_.detectInteriorComponents &&
-        !topo.boundaryUniform && ev.leaf.surface && hasHiddenComponent(samples_, ev.leaf.origin, size, options_.iso))
+        !topo.boundaryUniform && ev.leaf.surface && hasHiddenComponent(phases_, ev.leaf.origin, size))
       ev.split = ev.hidden = true;
     return ev;
   }
@@ -200,29 +205,41 @@ class Builder {
 
   /// Restores 2:1 balance over faces, edges and corners, refining complex
   /// children created on the way, until nothing changes.
+  ///
+  /// Leaves that share a face, an edge or a corner differ by at most one depth
+  /// iff every internal node's 26 same-size neighbours exist (their parents are
+  /// internal): a leaf's neighbours lie in its parent's neighbourhood, and an
+  /// internal node has a child beside each of its neighbours. Checking the
+  /// internal nodes costs an eighth of checking the leaves. Deepest first: a
+  /// split only creates nodes at the split leaf's depth or above, so one pass
+  /// from the bottom up balances the tree.
   void balance(Interrupter* interrupter) {
     FaceLabeller labeller;
     const ProgressStage progress(interrupter, "octree balance");
     bool changed = true;
     while (changed) {
       changed = false;
-      for (int depth = depths_.maxDepth; depth >= 2; --depth) {
-        progress.update(depths_.maxDepth - depth, depths_.maxDepth);
-        std::vector<std::int32_t> atDepth;
-        for (std::size_t i = 0; i < records_.size(); ++i)
-          if (alive_[i] && records_[i].leaf.depth == depth) atDepth.push_back(static_cast<std::int32_t>(i));
-        for (const std::int32_t li : atDepth) {
-          if (!alive_[static_cast<std::size_t>(li)]) continue;
-          const MortonKey key = records_[static_cast<std::size_t>(li)].leaf.key;
+      std::vector<MortonKey> internal;  // internal nodes one depth below the current one
+      for (int depth = depths_.maxDepth - 1; depth >= 2; --depth) {
+        progress.update(depths_.maxDepth - 1 - depth, depths_.maxDepth);
+        // Internal nodes at `depth`: parents of the leaves and internal nodes one depth below.
+        std::vector<MortonKey> nodes;
+        nodes.reserve(internal.size() + leavesAtDepth_[static_cast<std::size_t>(depth) + 1].size() / 8 + 1);
+        for (const MortonKey k : internal) nodes.push_back(parentKey(k));
+        for (const std::int32_t li : leavesAtDepth_[static_cast<std::size_t>(depth) + 1])
+          if (alive_[static_cast<std::size_t>(li)]) nodes.push_back(parentKey(records_[static_cast<std::size_t>(li)].leaf.key));
+        std::sort(nodes.begin(), nodes.end());
+        nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+        for (const MortonKey node : nodes)
           for (int dz = -1; dz <= 1; ++dz)
             for (int dy = -1; dy <= 1; ++dy)
               for (int dx = -1; dx <= 1; ++dx) {
                 if (dx == 0 && dy == 0 && dz == 0) continue;
-                const MortonKey n = neighbourKey(key, dx, dy, dz);
+                const MortonKey n = neighbourKey(node, dx, dy, dz);
                 if (n == kInvalidKey) continue;
-                // Is the node at depth - 2 containing n a leaf or missing (covered by a coarser leaf)?
+                // Split the leaf that covers n's parent until that parent is internal.
                 for (;;) {
-                  MortonKey a = ancestorKey(n, depth - 2);
+                  MortonKey a = parentKey(n);
                   std::int32_t* v = map_.find(a);
                   while (v == nullptr) {
                     a = parentKey(a);
@@ -234,7 +251,7 @@ class Builder {
                   changed = true;
                 }
               }
-        }
+        internal.swap(nodes);
       }
       // Complex (or geometrically rough) leaves created by balancing get refined.
       const std::size_t n = records_.size();
@@ -280,16 +297,19 @@ class Builder {
     const auto index = static_cast<std::int32_t>(records_.size());
     records_.push_back(Record{ev.leaf, ev.split});
     alive_.push_back(true);
+    leavesAtDepth_[ev.leaf.depth].push_back(index);
     map_.assign(ev.leaf.key, index);
   }
 
   const MetaCellSamples& samples_;
   const OctreeOptions& options_;
   OctreeDepths depths_;
+  SamplePhases phases_;  // what the criteria read
   CellClassifyOptions classify_;
   OctreeBuildStats stats_;
   std::vector<Record> records_;
   std::vector<bool> alive_;
+  std::vector<std::vector<std::int32_t>> leavesAtDepth_;  // record indices (dead ones too) per depth
   KeyMap map_;
 };
 

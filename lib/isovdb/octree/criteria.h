@@ -5,18 +5,19 @@
 /// - An edge is *complex* if the inside/outside state changes more than once
 ///   along the samples on it.
 /// - A face is *complex* if none of its edges is complex but a connected
-///   component of its samples (Hoshen–Kopelman labelling, 4-connectivity)
-///   touches none of its four edges. Both phases are labelled: an inside
-///   island and an outside hole (e.g. the hole of a ring) are both closed
-///   contour loops that the edges cannot see. (The paper labels inside samples
-///   only; labelling both is a superset and never misses a hole.)
+///   component of its samples (4-connectivity) touches none of its four edges.
+///   Both phases are labelled: an inside island and an outside hole (e.g. the
+///   hole of a ring) are both closed contour loops that the edges cannot see.
+///   (The paper labels inside samples only, with Hoshen–Kopelman; labelling
+///   both is a superset and never misses a hole.)
 /// - A cell is complex if one of its edges or faces is complex. Optionally
 ///   (CellClassifyOptions::detectInteriorComponents) a cell whose six faces are
 ///   all one phase but which holds a sample of the other phase (a blob or
 ///   bubble touching no face) is complex too, so no component is lost.
 ///
 /// Sign convention: inside iff value <= iso. Coordinates are offsets in the
-/// meta-cell (voxel index space minus MetaCellSamples::origin).
+/// meta-cell (voxel index space minus MetaCellSamples::origin). The criteria
+/// read the samples' phases only (sample_phases.h), never their values.
 #pragma once
 
 #include <array>
@@ -25,22 +26,23 @@
 
 #include "isovdb/octree/meta_cell_samples.h"
 #include "isovdb/octree/morton.h"
+#include "isovdb/octree/sample_phases.h"
 
 namespace isovdb::octree {
 
 /// @brief Number of inside/outside transitions between consecutive samples of
 ///        the axis-aligned segment from `start` to `start + length * e_axis`.
 /// @pre the segment lies in [-1, S + 1]^3.
-int countSignChanges(const MetaCellSamples& samples, std::array<int, 3> start, int axis, int length,
-                     float iso) noexcept;
+int countSignChanges(const SamplePhases& phases, std::array<int, 3> start, int axis, int length) noexcept;
 
 /// @brief True iff the edge is complex (more than one sign change along its samples).
-inline bool isComplexEdge(const MetaCellSamples& samples, std::array<int, 3> start, int axis, int length,
-                          float iso) noexcept {
-  return countSignChanges(samples, start, axis, length, iso) > 1;
+inline bool isComplexEdge(const SamplePhases& phases, std::array<int, 3> start, int axis, int length) noexcept {
+  return countSignChanges(phases, start, axis, length) > 1;
 }
 
-/// @brief Hoshen–Kopelman labelling of a square face of samples, with reusable
+/// @brief Finds the components of a square face of samples that touch none of
+///        its edges: a bit-parallel flood from the border for faces of at most
+///        64 samples a side, Hoshen–Kopelman labelling for wider ones. Reusable
 ///        scratch buffers (one object per thread; no allocation once warmed up).
 class FaceLabeller {
  public:
@@ -49,16 +51,17 @@ class FaceLabeller {
     bool isolatedComponent = false;  ///< a component (either phase) touches none of the face's edges
     bool uniform = true;             ///< all samples of the face are one phase
     bool inside = false;             ///< phase of the first sample (the face's min corner)
-    int components = 0;              ///< number of 4-connected components (both phases)
   };
 
   /// @brief Labels the (size + 1)^2 samples of the face with min corner
   ///        `origin`, normal `normalAxis`, side length `size` (cells).
   /// @pre the face lies in [-1, S + 1]^3; size >= 1.
-  Result label(const MetaCellSamples& samples, std::array<int, 3> origin, int normalAxis, int size,
-               float iso);
+  Result label(const SamplePhases& phases, std::array<int, 3> origin, int normalAxis, int size);
 
  private:
+  // Faces of at most 64 samples a side: one word per row, bit-parallel flood.
+  std::vector<std::uint64_t> rows_, floodPhase_, floodReached_;
+  // Wider faces: Hoshen–Kopelman labelling.
   std::vector<std::uint8_t> phase_;
   std::vector<std::int32_t> parent_;
   std::vector<std::uint8_t> touches_;
@@ -66,7 +69,6 @@ class FaceLabeller {
 
 /// Options of classifyCell.
 struct CellClassifyOptions {
-  float iso = 0.0f;                     ///< isovalue; inside iff value <= iso
   bool detectInteriorComponents = true; ///< scan the interior of cells whose faces are all one phase
                                         ///< (costs one pass over those cells' samples)
 };
@@ -88,7 +90,7 @@ struct CellTopology {
 
 /// @brief Classifies the cell with min corner `origin` (meta-cell offsets) and side `size`.
 /// @pre the cell lies in [0, S]^3.
-CellTopology classifyCell(const MetaCellSamples& samples, std::array<int, 3> origin, int size,
+CellTopology classifyCell(const SamplePhases& phases, std::array<int, 3> origin, int size,
                           const CellClassifyOptions& options, FaceLabeller& labeller);
 
 /// @brief True if the cell [origin, origin + size] holds a connected set of
@@ -99,10 +101,12 @@ CellTopology classifyCell(const MetaCellSamples& samples, std::array<int, 3> ori
 ///        too: a conservative answer that costs at most a split). O(size^3),
 ///        flood fill from the faces with per-thread scratch.
 /// @pre the cell lies in [0, S]^3.
-bool hasHiddenComponent(const MetaCellSamples& samples, std::array<int, 3> origin, int size, float iso);
+bool hasHiddenComponent(const SamplePhases& phases, std::array<int, 3> origin, int size);
 
 /// @brief 8-bit corner sign configuration of a cell (bit c set iff corner c inside).
 std::uint8_t cellCornerSigns(const MetaCellSamples& samples, std::array<int, 3> origin, int size,
                              float iso) noexcept;
+/// @brief The same, read from the phases.
+std::uint8_t cellCornerSigns(const SamplePhases& phases, std::array<int, 3> origin, int size) noexcept;
 
 }  // namespace isovdb::octree

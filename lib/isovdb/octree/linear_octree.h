@@ -35,6 +35,10 @@ struct OctreeLeaf {
   std::uint8_t cornerSigns = 0;       ///< bit c set iff corner c is inside (value <= iso); corner bits as octants
   bool surface = false;               ///< the surface crosses the leaf (its samples are not all one phase)
   bool complex = false;               ///< still topologically complex (only at the maximum depth)
+  /// The dual vertex the adaptive construction's geometric criterion placed (QEF of
+  /// all bipolar edges, global voxel index coordinates), which contouring reuses.
+  std::array<float, 3> vertex{0.0f, 0.0f, 0.0f};
+  float vertexTruncation = -1.0f;     ///< QEF truncation `vertex` was placed with; < 0: none placed
 
   /// Edges whose two corners differ in sign (bit e, numbering of morton.h).
   std::uint16_t bipolarEdges() const noexcept { return bipolarEdgeMask(cornerSigns); }

@@ -1,5 +1,6 @@
 #include "isovdb/octree/meta_cell_samples.h"
 
+#include <algorithm>
 #include <string>
 
 #include "isovdb/errors.h"
@@ -7,6 +8,11 @@
 namespace isovdb::octree {
 
 void MetaCellSamples::allocate(int newSize, std::array<int, 3> newOrigin, float fill, int newApron) {
+  reshape(newSize, newOrigin, newApron);
+  std::fill(values.begin(), values.end(), fill);
+}
+
+void MetaCellSamples::reshape(int newSize, std::array<int, 3> newOrigin, int newApron) {
   if (newSize < 1 || newSize > (1 << 16) || (newSize & (newSize - 1)) != 0)
     throw InputError("meta-cell size: expected a power of two in [1, 65536], got " +
                      std::to_string(newSize));
@@ -17,7 +23,7 @@ void MetaCellSamples::allocate(int newSize, std::array<int, 3> newOrigin, float 
   apron = newApron;
   origin = newOrigin;
   const std::size_t n = static_cast<std::size_t>(newSize + 1 + 2 * newApron);
-  values.assign(n * n * n, fill);
+  values.resize(n * n * n);
 }
 
 }  // namespace isovdb::octree

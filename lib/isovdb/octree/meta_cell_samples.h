@@ -57,6 +57,12 @@ struct MetaCellSamples {
   /// @throw InputError if `size` is not a power of two in [1, 2^16] or `apron` is not in [1, size].
   void allocate(int size, std::array<int, 3> origin, float fill = 0.0f, int apron = 1);
 
+  /// @brief As allocate, but leaves the values unspecified: for a caller that
+  ///        writes every sample anyway. A block reused for meta-cells of one
+  ///        size keeps its memory, so no page is faulted in again.
+  /// @throw InputError as allocate.
+  void reshape(int size, std::array<int, 3> origin, int apron = 1);
+
   /// @brief Fills every sample (apron included) from `f(x, y, z)` with x, y, z
   ///        the sample's global index coordinates (ints). Used by tests
   ///        (analytic SDFs) and small inputs.

@@ -1,6 +1,5 @@
 #include "isovdb/volume/meta_cells.h"
 
-#include <openvdb/tools/Dense.h>
 
 #include <algorithm>
 #include <cmath>
@@ -67,13 +66,42 @@ void readMetaCell(const Volume& field, const MetaCellIndex& index, int size, oct
 
 void readBlock(const Volume& field, const std::array<int, 3>& origin, int size, octree::MetaCellSamples& out,
                int apron) {
+  using Leaf = FieldGrid::TreeType::LeafNodeType;
+  constexpr int kLeafDim = static_cast<int>(Leaf::DIM);
   const FieldGrid& grid = fieldGrid(field);
-  out.allocate(size, origin, grid.background(), apron);
-  // The sample block with its apron, x fastest: exactly openvdb's LayoutXYZ.
+  // Every sample is written below (a leaf's values, or the value of the tile or
+  // background that holds a leaf-sized block), so the block needs no fill.
+  out.reshape(size, origin, apron);
+  const int n = out.stride();
   const openvdb::Coord lo(origin[0] - apron, origin[1] - apron, origin[2] - apron);
-  const openvdb::CoordBBox box(lo, lo.offsetBy(out.stride() - 1));
-  openvdb::tools::Dense<float, openvdb::tools::LayoutXYZ> dense(box, out.values.data());
-  openvdb::tools::copyToDense(grid, dense);
+  const openvdb::Coord hi = lo.offsetBy(n - 1);
+  const std::size_t rowStride = static_cast<std::size_t>(n), sliceStride = rowStride * rowStride;
+  auto accessor = grid.getConstAccessor();
+  // Leaf-aligned blocks, x fastest like the samples. tools::copyToDense does the
+  // same walk with z innermost, which for this x-fastest block is a strided write
+  // per sample (it cost more than the octree's face labelling).
+  for (int bz = lo.z() & ~(kLeafDim - 1); bz <= hi.z(); bz += kLeafDim)
+    for (int by = lo.y() & ~(kLeafDim - 1); by <= hi.y(); by += kLeafDim)
+      for (int bx = lo.x() & ~(kLeafDim - 1); bx <= hi.x(); bx += kLeafDim) {
+        const openvdb::Coord block(bx, by, bz);
+        const openvdb::Coord from = openvdb::Coord::maxComponent(block, lo);
+        const openvdb::Coord to = openvdb::Coord::minComponent(block.offsetBy(kLeafDim - 1), hi);
+        const Leaf* leaf = accessor.probeConstLeaf(block);
+        const float tile = leaf ? 0.0f : accessor.getValue(block);
+        for (int z = from.z(); z <= to.z(); ++z)
+          for (int y = from.y(); y <= to.y(); ++y) {
+            float* row = out.values.data() + static_cast<std::size_t>(z - lo.z()) * sliceStride +
+                         static_cast<std::size_t>(y - lo.y()) * rowStride + (from.x() - lo.x());
+            if (leaf == nullptr) {
+              std::fill(row, row + (to.x() - from.x() + 1), tile);
+              continue;
+            }
+            // A leaf stores z fastest: offset (x << 6) + (y << 3) + z within it.
+            const float* column = leaf->buffer().data() + Leaf::coordToOffset(openvdb::Coord(0, y, z));
+            for (int x = from.x(); x <= to.x(); ++x)
+              row[x - from.x()] = column[static_cast<std::size_t>(x & (kLeafDim - 1)) << (2 * Leaf::LOG2DIM)];
+          }
+      }
 }
 
 bool hasSignChange(const octree::MetaCellSamples& samples, float iso) {
