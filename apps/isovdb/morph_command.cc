@@ -55,7 +55,8 @@ void addMorphCommand(CLI::App& app, Context& context) {
   command->add_option("--method", state->method, "Contouring: vdb, regular or adaptive")->capture_default_str();
   command->add_flag("--pls", state->pls, "Particle level set correction (Enright et al.; paper 002 Alg. 3.2-3.3; much slower)");
   command->add_flag("!--no-centring", state->options.pair.centre,
-                    "Morph the contours where they lie instead of centring both on their convex-hull centroids");
+                    "Never centre the contours on their convex-hull centroids (by default a pair is centred when that "
+                    "makes its two slices overlap more)");
   command->add_option("--interpolate", state->interpolation,
                       "levelset (metamorphosis), nearest (copy the nearer slice) or linear (shape-based: "
                       "blend of the two signed distances)")

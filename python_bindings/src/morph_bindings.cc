@@ -101,7 +101,7 @@ interpolate: "levelset" (metamorphosis), "nearest" (copy the nearer slice) or "l
 progress_mode: which iterate each intermediate slice shows: "exponential" (time of arrival
   from the exponential approach), "arrival" (measured per pixel) or "iterations" (the paper's).
 pls: particle level set correction (levelset only). centring: centre both contours on their
-  convex-hull centroids first. tolerance, max_iterations: convergence (eq. 3.13), per pair.
+  convex-hull centroids first when that makes the pair overlap more (False: never). tolerance, max_iterations: convergence (eq. 3.13), per pair.
 half_width: narrow band of the output distance field (voxels).
 threads: worker threads (None = every core); the result is the same.
 progress: callable(stage, percent); raising cancels and propagates.

@@ -35,6 +35,27 @@ Field2 lerp(const Field2& a, const Field2& b, double s) {
   return out;
 }
 
+/// Pixels inside both `a` and `b` shifted by (dx, dy) (b read at p + (dx, dy)).
+std::int64_t overlap(const Mask2& a, const Mask2& b, int dx, int dy) {
+  std::int64_t n = 0;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) {
+      const int bx = x + dx, by = y + dy;
+      n += a.at(x, y) && bx >= 0 && by >= 0 && bx < b.width && by < b.height && b.at(bx, by);
+    }
+  return n;
+}
+
+/// Centring assumes the section translates from one slice to the next; it is worth
+/// doing when the translation between the centroids makes the two slices overlap
+/// more than where they lie. Where a component appears or vanishes the hull
+/// centroid jumps, and centring would drag the components that stay.
+bool centringHelps(const Mask2& a, const Mask2& b, Vec2 ca, Vec2 cb) {
+  const int dx = static_cast<int>(std::lround(cb.x - ca.x)), dy = static_cast<int>(std::lround(cb.y - ca.y));
+  if (dx == 0 && dy == 0) return true;
+  return overlap(a, b, dx, dy) > overlap(a, b, 0, 0);
+}
+
 std::int64_t countDifferent(const Mask2& a, const Mask2& b) {
   std::int64_t n = 0;
   for (std::size_t i = 0; i < a.inside.size(); ++i) n += a.inside[i] != b.inside[i];
@@ -93,7 +114,8 @@ PairResult morphPair(const Mask2& a, const Mask2& b, const Field2& sdfA, const F
   }
 
   std::optional<Vec2> ca = hullCentroid(a), cb = hullCentroid(b);
-  if (!options.centre && ca && cb) ca = cb = Vec2{0.5 * (ca->x + cb->x), 0.5 * (ca->y + cb->y)};
+  result.stats.centred = options.centre && ca && cb && centringHelps(a, b, *ca, *cb);
+  if (!result.stats.centred && ca && cb) ca = cb = Vec2{0.5 * (ca->x + cb->x), 0.5 * (ca->y + cb->y)};
   if (!ca && !cb) {
     for (std::size_t j = 0; j < fractions.size(); ++j) result.slices.push_back(sdfA);
     return finish();

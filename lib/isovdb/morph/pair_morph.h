@@ -1,6 +1,7 @@
 /// @file pair_morph.h
 /// @brief The intermediate slices between two consecutive slices (paper 002 §3.3):
-///        centre both on their convex-hull centroids, morph the source into the
+///        centre both on their convex-hull centroids (when that makes them overlap
+///        more), morph the source into the
 ///        target, pick the iterates at the requested fractions, de-centre them along
 ///        the line between the centroids.
 #pragma once
@@ -37,8 +38,10 @@ struct PairOptions {
   Interpolation interpolation = Interpolation::LevelSet;
   Progress progress = Progress::Exponential;
   bool particles = false;  ///< particle level set correction (LevelSet only)
-  /// Centre both contours on their convex-hull centroids (paper 002 §3.3.2); false
-  /// morphs them where they lie (better when a slice's hull jumps: several objects).
+  /// Centre both contours on their convex-hull centroids (paper 002 §3.3.2) when that
+  /// translation makes the two slices overlap more than where they lie; false never
+  /// centres. (Where a component appears or vanishes the hull centroid jumps and
+  /// centring would drag the components that stay.)
   bool centre = true;
   EvolutionOptions evolution;
   ParticleOptions particleOptions;
@@ -52,6 +55,7 @@ struct PairStats {
   double timeStep = 0;           ///< Δt (CFL)
   double finalCriterion = 0;     ///< eq. 3.13 at the last step
   int workWidth = 0, workHeight = 0;
+  bool centred = false;          ///< the contours were centred (PairOptions::centre and it helped)
   std::int64_t particles = 0, discardedParticles = 0, escapedParticles = 0;  ///< PLS; escaped summed over steps
   /// Mean over the slices of |p - s|, p the fraction of the swept area (A Δ B,
   /// centred) the slice covers at fraction s: 0 is perfectly uniform progress.

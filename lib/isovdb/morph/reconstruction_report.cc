@@ -58,13 +58,14 @@ nlohmann::ordered_json reconstructionReport(const Reconstruction& r, const Recon
   m["original_slices"] = r.originalPlane.size();
   m["planes"] = r.planes.size();
   m["intermediate_slices"] = r.planes.size() - r.originalPlane.size();
-  std::int64_t iterations = 0, capped = 0;
+  std::int64_t iterations = 0, capped = 0, centred = 0;
   double pairSeconds = 0, progressError = 0;
   auto pairs = Json::array();
   for (std::size_t i = 0; i < r.pairs.size(); ++i) {
     const PairStats& p = r.pairs[i];
     iterations += p.iterations;
     capped += p.hitMaxIterations;
+    centred += p.centred;
     pairSeconds += p.seconds;
     progressError += p.progressError;
     Json j;
@@ -73,6 +74,7 @@ nlohmann::ordered_json reconstructionReport(const Reconstruction& r, const Recon
     j["time_step"] = p.timeStep;
     j["criterion"] = p.finalCriterion;
     j["grid"] = std::to_string(p.workWidth) + "x" + std::to_string(p.workHeight);
+    j["centred"] = p.centred;
     if (pls) {
       j["particles"] = p.particles;
       j["particles_discarded"] = p.discardedParticles;
@@ -84,6 +86,7 @@ nlohmann::ordered_json reconstructionReport(const Reconstruction& r, const Recon
   }
   m["iterations_total"] = iterations;
   m["pairs_at_max_iterations"] = capped;
+  m["pairs_centred"] = centred;
   m["progress_error_mean"] = r.pairs.empty() ? 0.0 : progressError / r.pairs.size();
   const auto intermediate = r.planes.size() - r.originalPlane.size();
   m["seconds_per_intermediate_slice"] = intermediate ? pairSeconds / intermediate : 0.0;
