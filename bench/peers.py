@@ -395,6 +395,7 @@ def main():
                         runs_of_label = earlier[label] + [dict(row)]
                         row["times"] = [r["time"] for r in runs_of_label]
                         row["time"] = statistics.median(row["times"])
+                        row["work"] = statistics.median(r["work"] for r in runs_of_label)
                         row["contouring"] = statistics.median(r["contouring"] for r in runs_of_label)
                         row["note"] = f"contouring {row['contouring']:.2f} s; median of {len(runs_of_label)} runs"
                 else:
@@ -440,7 +441,7 @@ def main():
               + (f"  ({r['note']})" if r.get("note") else ""))
     print()
     print("time s: wall time around the process (end to end: read -> mesh file; with --repeat, the median); "
-          "work s: the process's own read -> write time; contouring: isovdb's stages after the distance field "
+          "work s: the process's own read -> write time (median too); contouring: isovdb's stages after the distance field "
           "(partition, meta-cells, stitching; or volumeToMesh); ratio: time / isovdb regular's time on the same input; RSS: peak RSS of the "
           "process; closed: no:N = N boundary edges; nm e/v: non-manifold edges/vertices; self-x: "
           "self-intersecting triangle pairs; chi: Euler characteristic.")
