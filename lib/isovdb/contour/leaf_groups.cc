@@ -62,14 +62,14 @@ std::vector<mesh::Vec3f> placeGroupVertices(const octree::MetaCellSamples& sampl
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
       const DmcEntry& entry = groups.entry(i);
       const octree::OctreeLeaf& leaf = tree.leaf(i);
-      // Several sheets in one cell: each vertex at its group's mass point, which stays
-      // among its own crossings (a QEF minimiser may wander towards the other sheet).
       if (entry.vertexCount == 1 && !options.massPointOnly &&
           leaf.vertexTruncation == options.singularValueThreshold) {
         // The construction's geometric criterion solved this QEF already.
         positions[groups.firstVertex[i]] = leaf.vertex;
         continue;
       }
+      // Several sheets in one cell: each vertex at its group's mass point, which stays
+      // among its own crossings (a QEF minimiser may wander towards the other sheet).
       DualVertexOptions groupOptions = options;
       groupOptions.massPointOnly = entry.vertexCount > 1;
       for (int g = 0; g < entry.vertexCount; ++g) {

@@ -222,7 +222,7 @@ void contourMetaCells(const volume::Volume& field, const OctreeContourOptions& o
   std::size_t next = 0, contoured = 0, done = 0;
   const std::size_t total = partition.cells.size();
   // One sample block per thread, reused meta-cell after meta-cell: a fresh 9 MB
-  // block per meta-cell spent more time faulting its pages in than reading it.
+  // block per meta-cell had every page faulted in again.
   tbb::enumerable_thread_specific<octree::MetaCellSamples> sampleBlocks;
   {
     Statistics::StageTimer timer(stats, "contour_meta_cells");
