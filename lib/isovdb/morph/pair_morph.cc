@@ -35,6 +35,19 @@ Field2 lerp(const Field2& a, const Field2& b, double s) {
   return out;
 }
 
+/// The field of a slice with nothing inside, next to a slice with field `other`:
+/// `other` raised until only a seed around its deepest point (within half a pixel
+/// of the deepest value) is inside, so the section grows from that seed. The level-set
+/// equation only moves the levels φ already has: from an empty slice's field (no zero
+/// level) the morph leaves every plane empty up to the other slice.
+Field2 seededField(const Field2& other) {
+  float deepest = 0.0f;
+  for (float v : other.values) deepest = std::min(deepest, v);
+  Field2 out = other;
+  for (float& v : out.values) v -= deepest + 0.5f;
+  return out;
+}
+
 /// Pixels inside both `a` and `b` shifted by (dx, dy) (b read at p + (dx, dy)).
 std::int64_t overlap(const Mask2& a, const Mask2& b, int dx, int dy) {
   std::int64_t n = 0;
@@ -113,6 +126,12 @@ PairResult morphPair(const Mask2& a, const Mask2& b, const Field2& sdfA, const F
     return finish();
   }
 
+  // A structure that ends between the two slices tapers to a seed at the empty one.
+  const bool emptyA = a.area() == 0, emptyB = b.area() == 0;
+  const Field2 seeded = emptyA != emptyB ? seededField(emptyA ? sdfB : sdfA) : Field2{};
+  const Field2& fieldA = emptyA && !emptyB ? seeded : sdfA;
+  const Field2& fieldB = emptyB && !emptyA ? seeded : sdfB;
+
   std::optional<Vec2> ca = hullCentroid(a), cb = hullCentroid(b);
   result.stats.centred = options.centre && ca && cb && centringHelps(a, b, *ca, *cb);
   if (!result.stats.centred && ca && cb) ca = cb = Vec2{0.5 * (ca->x + cb->x), 0.5 * (ca->y + cb->y)};
@@ -131,8 +150,8 @@ PairResult morphPair(const Mask2& a, const Mask2& b, const Field2& sdfA, const F
   const int loY = static_cast<int>(std::floor(box.minY)) - options.margin;
   const int w = std::max(2, static_cast<int>(std::ceil(box.maxX)) + options.margin - loX + 1);
   const int h = std::max(2, static_cast<int>(std::ceil(box.maxY)) + options.margin - loY + 1);
-  const Field2 source = resample(sdfA, w, h, {ca->x + loX, ca->y + loY});
-  const Field2 target = resample(sdfB, w, h, {cb->x + loX, cb->y + loY});
+  const Field2 source = resample(fieldA, w, h, {ca->x + loX, ca->y + loY});
+  const Field2 target = resample(fieldB, w, h, {cb->x + loX, cb->y + loY});
   result.stats.workWidth = w;
   result.stats.workHeight = h;
 
