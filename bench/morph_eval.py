@@ -41,6 +41,7 @@ METHODS = {
     "levelset-iterations": ["--progress", "iterations"],
     "pls": ["--pls"],
     "levelset-nocentring": ["--no-centring"],
+    "levelset-noareamatch": ["--no-area-match"],
     "nearest": ["--interpolate", "nearest"],
     "linear": ["--interpolate", "linear"],
 }
@@ -307,8 +308,12 @@ def main():
     parser.add_argument("--work", default="/tmp/morph_eval")
     parser.add_argument("--skip-frog-pls", action="store_true")
     parser.add_argument("--only", choices=["truth", "corners", "real"], action="append")
+    parser.add_argument("--methods", help="comma-separated subset of " + ",".join(METHODS))
     args = parser.parse_args()
     cli = str(Path(args.build) / "isovdb")
+    if args.methods:
+        for name in [m for m in METHODS if m not in args.methods.split(",")]:
+            del METHODS[name]
     work = Path(args.work)
     work.mkdir(parents=True, exist_ok=True)
     report = {"machine": os.uname().nodename, "cores": os.cpu_count()}

@@ -55,8 +55,11 @@ void addMorphCommand(CLI::App& app, Context& context) {
   command->add_option("--method", state->method, "Contouring: vdb, regular or adaptive")->capture_default_str();
   command->add_flag("--pls", state->pls, "Particle level set correction (Enright et al.; paper 002 Alg. 3.2-3.3; much slower)");
   command->add_flag("!--no-centring", state->options.pair.centre,
-                    "Never centre the contours on their convex-hull centroids (by default a pair is centred when that "
-                    "makes its two slices overlap more)");
+                    "Never centre: by default both contours are centred on their convex-hull centroids when "
+                    "that makes them overlap more (one moving object), else morphed where they lie");
+  command->add_flag("!--no-area-match", state->options.pair.matchArea,
+                    "Keep each morphed slice's own area instead of setting it to the linear blend of the two "
+                    "originals' areas (one offset of its distance)");
   command->add_option("--interpolate", state->interpolation,
                       "levelset (metamorphosis), nearest (copy the nearer slice) or linear (shape-based: "
                       "blend of the two signed distances)")

@@ -38,7 +38,7 @@ morph::SliceStack sliceStackOf(const py::object& slices, const std::optional<std
 PyVolume morphSlices(const py::object& slices, const std::optional<std::filesystem::path>& heights,
                      std::optional<double> spacing, double pixelSize, int sliceStep, int sliceOffset,
                      std::optional<double> zStep, const std::string& interpolate, const std::string& progressMode,
-                     bool pls, bool centring, double tolerance, int maxIterations, float halfWidth,
+                     bool pls, bool centring, bool areaMatch, double tolerance, int maxIterations, float halfWidth,
                      std::optional<int> threads, const py::object& progress) {
   morph::ReconstructOptions options;
   const auto interpolation = morph::parseInterpolation(interpolate);
@@ -51,6 +51,7 @@ PyVolume morphSlices(const py::object& slices, const std::optional<std::filesyst
   options.pair.progress = *mode;
   options.pair.particles = pls;
   options.pair.centre = centring;
+  options.pair.matchArea = areaMatch;
   options.pair.evolution.tolerance = tolerance;
   options.pair.evolution.maxIterations = maxIterations;
   options.halfWidth = halfWidth;
@@ -83,6 +84,7 @@ void bindMorph(py::module_& m) {
         py::arg("interpolate") = std::string(morph::interpolationName(defaults.pair.interpolation)),
         py::arg("progress_mode") = std::string(morph::progressName(defaults.pair.progress)),
         py::arg("pls") = defaults.pair.particles, py::arg("centring") = defaults.pair.centre,
+        py::arg("area_match") = defaults.pair.matchArea,
         py::arg("tolerance") = defaults.pair.evolution.tolerance,
         py::arg("max_iterations") = defaults.pair.evolution.maxIterations, py::arg("half_width") = defaults.halfWidth,
         py::arg("threads") = py::none(), py::arg("progress") = py::none(), R"doc(
@@ -101,7 +103,10 @@ interpolate: "levelset" (metamorphosis), "nearest" (copy the nearer slice) or "l
 progress_mode: which iterate each intermediate slice shows: "exponential" (time of arrival
   from the exponential approach), "arrival" (measured per pixel) or "iterations" (the paper's).
 pls: particle level set correction (levelset only). centring: centre both contours on their
-  convex-hull centroids first when that makes the pair overlap more (False: never). tolerance, max_iterations: convergence (eq. 3.13), per pair.
+  convex-hull centroids first when that makes them overlap more (one moving object), else
+  morph them in place. area_match: give each intermediate slice the linear blend of the two
+  originals' areas (one offset of its distance; the morph alone shrinks moving sections and
+  caps). tolerance, max_iterations: convergence (eq. 3.13), per pair.
 half_width: narrow band of the output distance field (voxels).
 threads: worker threads (None = every core); the result is the same.
 progress: callable(stage, percent); raising cancels and propagates.

@@ -74,3 +74,17 @@ def test_bad_input(tmp_path):
     volume = isovdb.from_numpy(np.zeros((8, 8, 8), dtype=np.uint8) + 1, threshold=0)
     with pytest.raises(ValueError, match="heights"):
         isovdb.morph_slices(volume, spacing=4)
+
+
+def test_area_match_and_centring_switches(tmp_path):
+    write_slices(tmp_path, [disc_image(40, (14, 20), 6), disc_image(40, (26, 20), 6)])
+    matched = isovdb.morph_slices(tmp_path, spacing=8)
+    plain = isovdb.morph_slices(tmp_path, spacing=8, area_match=False, centring=False)
+    morph, morph_plain = matched.info()["input"]["morph"], plain.info()["input"]["morph"]
+    assert morph["area_match"] and not morph_plain["area_match"]
+    # One disc that moves: centring registers it (they overlap more centred).
+    assert morph["pairs_centred"] == 1 and morph_plain["pairs_centred"] == 0
+    # Two equal discs: the matched middle plane keeps the discs' area, the plain
+    # morph in place shrinks it (the sections move sideways).
+    area = lambda sdf: int((sdf.to_numpy(bbox=((0, 0, 4), (39, 39, 4))) < 0).sum())
+    assert area(matched) > area(plain)

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 
+#include "isovdb/morph/area_match.h"
 #include "isovdb/morph/arrival.h"
 #include "isovdb/morph/centring.h"
 
@@ -94,7 +95,7 @@ void runMorph(const Field2& source, const Field2& target, const PairOptions& opt
     more = morph.step();
     if (morph.iteration() == before) break;
     if (particles) {
-      particles->advect(previous, target, morph.timeStep());
+      particles->advect(target, morph.timeStep());
       stats.escapedParticles += particles->correct(morph.phi());
       morph.corrected();
     }
@@ -218,8 +219,14 @@ PairResult morphPair(const Mask2& a, const Mask2& b, const Field2& sdfA, const F
       }
     }
 
-  // Uniformity of progress: fraction of the swept area covered by each slice.
   const Mask2 insideA = insideOf(source), insideB = insideOf(target);
+  if (options.matchArea) {
+    const double areaA = static_cast<double>(insideA.area()), areaB = static_cast<double>(insideB.area());
+    for (std::size_t j = 0; j < fractions.size(); ++j)
+      shiftToArea(work[j], std::llround((1 - fractions[j]) * areaA + fractions[j] * areaB));
+  }
+
+  // Uniformity of progress: fraction of the swept area covered by each slice.
   const std::int64_t swept = countDifferent(insideA, insideB);
   double error = 0;
   for (std::size_t j = 0; j < fractions.size(); ++j) {

@@ -1,9 +1,9 @@
 /// @file pair_morph.h
 /// @brief The intermediate slices between two consecutive slices (paper 002 §3.3):
-///        centre both on their convex-hull centroids (when that makes them overlap
-///        more), morph the source into the
-///        target, pick the iterates at the requested fractions, de-centre them along
-///        the line between the centroids.
+///        centre both on their convex-hull centroids (when that registers them),
+///        morph the source into the target, pick the iterates at the requested
+///        fractions, set each one's area (area_match.h), de-centre them along the
+///        line between the centroids.
 #pragma once
 
 #include <cstdint>
@@ -43,6 +43,9 @@ struct PairOptions {
   /// centres. (Where a component appears or vanishes the hull centroid jumps and
   /// centring would drag the components that stay.)
   bool centre = true;
+  /// Give each slice at fraction s the area (1 - s) A_a + s A_b by one offset of its φ
+  /// (area_match.h): the morph shrinks sections that move sideways or grow from a cap.
+  bool matchArea = true;
   EvolutionOptions evolution;
   ParticleOptions particleOptions;
   int margin = 4;  ///< pixels around the centred contours in the working grid

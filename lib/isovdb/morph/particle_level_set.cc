@@ -89,18 +89,22 @@ ParticleLevelSet::ParticleLevelSet(const Field2& phi0, const ParticleOptions& op
           ++discarded_;
           continue;
         }
-        p.radius = static_cast<float>(std::clamp(double(p.sign) * phi0.sample(p.x, p.y), rMin, rMax));
+        p.level = phi0.sample(p.x, p.y);
+        p.radius = static_cast<float>(std::clamp(double(p.sign) * p.level, rMin, rMax));
         particles_.push_back(p);
       }
     }
 }
 
-void ParticleLevelSet::advect(const Field2& phi, const Field2& target, double dt) {
+void ParticleLevelSet::advect(const Field2& target, double dt) {
+  // Exact solution of dp/dt = -(φ_target(p) - level) N_target over one step when the
+  // path stays on one target normal: the remaining distance decays by e^{-Δt}.
+  const double fraction = 1 - std::exp(-dt);
   for (Particle& p : particles_) {
-    const double speed = phi.sample(p.x, p.y) - target.sample(p.x, p.y);
-    const Vec2 n = normalAt(phi, p.x, p.y);
-    p.x = std::clamp(p.x + dt * speed * n.x, 0.0, double(phi.width - 1));
-    p.y = std::clamp(p.y + dt * speed * n.y, 0.0, double(phi.height - 1));
+    const double remaining = target.sample(p.x, p.y) - p.level;
+    const Vec2 n = normalAt(target, p.x, p.y);
+    p.x = std::clamp(p.x - fraction * remaining * n.x, 0.0, double(target.width - 1));
+    p.y = std::clamp(p.y - fraction * remaining * n.y, 0.0, double(target.height - 1));
   }
 }
 

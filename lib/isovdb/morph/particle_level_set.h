@@ -25,6 +25,7 @@ struct ParticleOptions {
 struct Particle {
   double x = 0, y = 0;
   float sign = 1;    ///< s_p: +1 outside, -1 inside
+  float level = 0;   ///< φ⁰ at the seeded position (pixels): the level set the particle stays on
   float radius = 0;  ///< r_p in [0.1, 0.5] pixels
 };
 
@@ -34,8 +35,14 @@ class ParticleLevelSet {
   /// of its sign in [0.1, 3] pixels, discards those that fail, sets the radii.
   ParticleLevelSet(const Field2& phi0, const ParticleOptions& options);
 
-  /// Eq. 3.21: p ← p + Δt F(p) N(p), F = φ − φ_target and N = ∇φ/|∇φ| from φⁿ⁻¹.
-  void advect(const Field2& phi, const Field2& target, double dt);
+  /// Moves every particle towards the point of the target's level set `level` closest
+  /// to it: p ← p − (1 − e^{−Δt}) (φ_target(p) − level) N_target(p). Departs from
+  /// eq. 3.21 (F N with N from φⁿ⁻¹): where the front is not resolved (a corner),
+  /// φ's normal is the scheme's rounded one and particles following it round the
+  /// corner with the front, so they cannot restore it. The target's normal is exact,
+  /// and on a front parallel to the target both move it alike (normal speed = the
+  /// remaining distance, decaying as e^{−t}, the model of Progress::Exponential).
+  void advect(const Field2& target, double dt);
 
   /// Alg. 3.3: escaped particles (wrong side by more than their radius) rebuild
   /// φ⁺ (positive) and φ⁻ (negative) at their cell's corners by eq. 3.23; φ takes

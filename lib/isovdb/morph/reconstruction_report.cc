@@ -53,6 +53,7 @@ nlohmann::ordered_json reconstructionReport(const Reconstruction& r, const Recon
   m["interpolation"] = interpolationName(options.pair.interpolation);
   m["particle_level_set"] = pls;
   m["centring"] = options.pair.centre;
+  m["area_match"] = options.pair.matchArea;
   m["progress"] = progressName(options.pair.progress);
   m["tolerance"] = options.pair.evolution.tolerance;
   m["original_slices"] = r.originalPlane.size();
