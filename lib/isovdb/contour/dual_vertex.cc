@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 
 #include "isovdb/contour/edge_intersection.h"
 #include "isovdb/octree/morton.h"
@@ -11,6 +13,31 @@ namespace isovdb::contour {
 float DualVertex::rmsError() const noexcept {
   return intersections > 0 ? std::sqrt(std::max(qefError, 0.0f) / static_cast<float>(intersections)) : 0.0f;
 }
+
+namespace {
+
+/// The point of the line x + t d (the QEF's minimisers on a crease) in the cell box nearest
+/// x, or x if the line misses the box: a crease that crosses the cell near a corner has its
+/// minimiser nearest the mass point just outside, while the cell holds a part of it.
+Vec3f slideIntoCell(const Vec3f& x, const Vec3f& d, std::array<int, 3> cellOrigin, int cellSize) {
+  float lo = -std::numeric_limits<float>::infinity(), hi = std::numeric_limits<float>::infinity();
+  for (std::size_t a = 0; a < 3; ++a) {
+    const float boxLo = static_cast<float>(cellOrigin[a]), boxHi = static_cast<float>(cellOrigin[a] + cellSize);
+    if (std::abs(d[a]) < 1e-6f) {
+      if (x[a] < boxLo || x[a] > boxHi) return x;
+      continue;
+    }
+    float t0 = (boxLo - x[a]) / d[a], t1 = (boxHi - x[a]) / d[a];
+    if (t0 > t1) std::swap(t0, t1);
+    lo = std::max(lo, t0);
+    hi = std::min(hi, t1);
+  }
+  if (lo > hi) return x;
+  const float t = std::clamp(0.0f, lo, hi);
+  return {x[0] + t * d[0], x[1] + t * d[1], x[2] + t * d[2]};
+}
+
+}  // namespace
 
 DualVertex computeDualVertex(const octree::MetaCellSamples& samples, std::array<int, 3> cellOrigin, int cellSize,
                              std::uint16_t edgeMask, const DualVertexOptions& options) {
@@ -28,7 +55,8 @@ DualVertex computeDualVertex(const octree::MetaCellSamples& samples, std::array<
     if (octree::isInside(samples.value(p0), options.iso) == octree::isInside(samples.value(p1), options.iso))
       continue;  // not bipolar
     EdgeIntersection hit;
-    if (!intersectEdge(samples, p0, octree::cellEdgeAxis(e), cellSize, options.iso, hit)) continue;
+    if (!intersectEdge(samples, p0, octree::cellEdgeAxis(e), cellSize, options.iso, hit, options.sharpFeatures))
+      continue;
     points[n] = hit.point;
     normals[n] = hit.normal;
     ++n;
@@ -39,21 +67,29 @@ DualVertex computeDualVertex(const octree::MetaCellSamples& samples, std::array<
                                  QefOptions{.singularValueThreshold = options.singularValueThreshold});
   v.intersections = static_cast<std::uint8_t>(n);
   v.rank = static_cast<std::uint8_t>(s.rank);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      v.minNormalDot = std::min(v.minNormalDot, normals[i][0] * normals[j][0] + normals[i][1] * normals[j][1] +
+                                                    normals[i][2] * normals[j][2]);
   Vec3f x = s.point;
-  constexpr float kSlack = 1e-4f;  // rounding tolerance on the cell box
+  if (options.sharpFeatures && s.rank == 2) x = slideIntoCell(x, s.freeDirections[0], cellOrigin, cellSize);
+  const float slack = options.sharpFeatures ? kFeatureSlack : 1e-4f;  // else a rounding tolerance on the cell box
   bool inside = true;
   for (int a = 0; a < 3; ++a) {
     const float lo = static_cast<float>(cellOrigin[a]), hi = static_cast<float>(cellOrigin[a] + cellSize);
-    if (!(x[a] >= lo - kSlack && x[a] <= hi + kSlack)) inside = false;
+    if (!(x[a] >= lo - slack && x[a] <= hi + slack)) inside = false;
   }
   if (!inside || options.massPointOnly) {
     x = s.massPoint;
     v.massPointFallback = true;
   }
-  for (int a = 0; a < 3; ++a)  // the mass point is a mean of edge points: inside up to rounding
+  // The mass point is a mean of edge points (inside up to rounding); a minimiser within the slack
+  // moves onto the cell's boundary, no farther than the slack.
+  for (int a = 0; a < 3; ++a)
     x[a] = std::clamp(x[a], static_cast<float>(cellOrigin[a]), static_cast<float>(cellOrigin[a] + cellSize));
-  v.qefError = inside ? s.error
-                      : qefError(std::span<const Vec3f>(points.data(), n), std::span<const Vec3f>(normals.data(), n), x);
+  v.qefError = inside && !options.sharpFeatures
+                  ? s.error
+                  : qefError(std::span<const Vec3f>(points.data(), n), std::span<const Vec3f>(normals.data(), n), x);
   for (int a = 0; a < 3; ++a) v.position[a] = x[a] + static_cast<float>(samples.origin[a]);
   return v;
 }

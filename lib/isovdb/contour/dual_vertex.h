@@ -1,7 +1,9 @@
 /// @file dual_vertex.h
 /// @brief The dual vertex of an octree leaf: crossings on its bipolar edges,
-///        Prewitt normals, QEF minimised towards the mass point, mass-point
-///        fallback when the minimiser leaves the cell (paper 000, section 4.2.2).
+///        Prewitt normals (or, with sharp features, the normals of the faces
+///        beside a crease: crease_crossing.h), QEF minimised towards the mass
+///        point, mass-point fallback when the minimiser leaves the cell
+///        (paper 000, section 4.2.2).
 ///
 /// Positions are global voxel index coordinates (meta-cell offsets plus
 /// MetaCellSamples::origin). A vertex always lies in its cell (closed box).
@@ -24,7 +26,17 @@ struct DualVertexOptions {
   /// Skip the QEF: the vertex is the mass point of the crossings. For a cell with several
   /// sheets (DMC groups), where a QEF minimiser can wander towards another sheet.
   bool massPointOnly = false;
+  /// Sharp features (crease_crossing.h): crossings near a crease of the field are placed and
+  /// oriented from the face they lie on. A crease line that grazes a cell's corner has its QEF
+  /// minimiser nearest the mass point just outside the cell: a rank-2 minimiser slides along
+  /// the crease into the cell, and one at most kFeatureSlack outside is clamped into it,
+  /// rather than replaced by the mass point.
+  bool sharpFeatures = false;
 };
+
+/// How far (voxels) a QEF minimiser may lie outside its cell and still be clamped into it
+/// with DualVertexOptions::sharpFeatures.
+inline constexpr float kFeatureSlack = 0.1f;
 
 /// @brief One dual vertex.
 struct DualVertex {
@@ -34,6 +46,7 @@ struct DualVertex {
   std::uint8_t intersections = 0;    ///< number of crossings used (0 = no vertex)
   std::uint8_t rank = 0;             ///< rank of the truncated QEF system
   bool massPointFallback = false;    ///< the QEF minimiser left the cell; the mass point was used
+  float minNormalDot = 1.0f;         ///< smallest dot product of two crossing normals (1: all parallel)
 
   bool valid() const noexcept { return intersections > 0; }
   /// RMS distance (voxels) from the vertex to the tangent planes: sqrt(E / n).

@@ -2,10 +2,12 @@
 
 #include <cstddef>
 
+#include "isovdb/contour/crease_crossing.h"
+
 namespace isovdb::contour {
 
 bool intersectEdge(const octree::MetaCellSamples& samples, std::array<int, 3> start, int axis, int length,
-                   float iso, EdgeIntersection& out) noexcept {
+                   float iso, EdgeIntersection& out, bool sharpFeatures) noexcept {
   const std::ptrdiff_t step =
       axis == 0 ? 1 : axis == 1 ? samples.stride() : static_cast<std::ptrdiff_t>(samples.stride()) * samples.stride();
   const float* p = samples.values.data() + samples.indexOf(start[0], start[1], start[2]);
@@ -28,7 +30,13 @@ bool intersectEdge(const octree::MetaCellSamples& samples, std::array<int, 3> st
   s0[axis] += first;
   out.point = {static_cast<float>(s0[0]), static_cast<float>(s0[1]), static_cast<float>(s0[2])};
   out.point[axis] += t;
-  out.normal = normalized(prewittGradientOnEdge(samples, s0, axis, t));
+  CreaseCrossing crease;
+  if (sharpFeatures && crossingBesideCrease(samples, s0, axis, t, iso, crease)) {
+    out.point[axis] = static_cast<float>(s0[axis]) + crease.t;
+    out.normal = normalized(crease.gradient);
+  } else {
+    out.normal = normalized(prewittGradientOnEdge(samples, s0, axis, t));
+  }
   out.transitions = transitions;
   return true;
 }

@@ -16,16 +16,19 @@ namespace isovdb::contour {
 /// @brief A surface crossing on an edge.
 struct EdgeIntersection {
   Vec3f point{0.0f, 0.0f, 0.0f};   ///< crossing, meta-cell offsets (voxels)
-  Vec3f normal{0.0f, 0.0f, 0.0f};  ///< unit Prewitt gradient there (outward); 0 if the gradient vanishes
+  Vec3f normal{0.0f, 0.0f, 0.0f};  ///< unit gradient there (outward; Prewitt's, or the face's beside a
+                                   ///< crease with sharpFeatures); 0 if the gradient vanishes
   int transitions = 0;             ///< sign changes seen along the whole edge (1 for a simple edge)
 };
 
 /// @brief Finds the first inside/outside transition along the edge from `start`
 ///        over `length` unit steps on `axis`; the point is the linear
 ///        interpolation of the iso value between the two transition samples.
+/// @param sharpFeatures  near a crease of the field, place and orient the crossing
+///        from the face it lies on (crease_crossing.h) instead.
 /// @return false if the samples along the edge are all one phase.
 /// @pre the edge lies in [0, S]^3 (so that gradients are defined).
 bool intersectEdge(const octree::MetaCellSamples& samples, std::array<int, 3> start, int axis, int length,
-                   float iso, EdgeIntersection& out) noexcept;
+                   float iso, EdgeIntersection& out, bool sharpFeatures = false) noexcept;
 
 }  // namespace isovdb::contour

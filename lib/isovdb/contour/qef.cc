@@ -37,10 +37,15 @@ QefSolution solveQef(std::span<const Vec3f> points, std::span<const Vec3f> norma
   const Eigen::Vector3d sigma = svd.singularValues();
   Eigen::Vector3d inv = Eigen::Vector3d::Zero();
   const double cutoff = sigma(0) * static_cast<double>(options.singularValueThreshold);
+  int free = 0;
   for (int i = 0; i < 3; ++i)
     if (sigma(i) > 0.0 && sigma(i) >= cutoff) {
       inv(i) = 1.0 / sigma(i);
       ++s.rank;
+    } else {
+      const Eigen::Vector3d d = svd.matrixV().col(i);
+      s.freeDirections[static_cast<std::size_t>(free++)] = {static_cast<float>(d(0)), static_cast<float>(d(1)),
+                                                            static_cast<float>(d(2))};
     }
   const Eigen::Vector3d c = svd.matrixV() * inv.asDiagonal() * svd.matrixU().transpose() * atr;
   const Eigen::Vector3d x = mass + c;
