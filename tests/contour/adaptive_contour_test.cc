@@ -24,6 +24,8 @@
 #include "isovdb/volume/grids.h"
 #include "isovdb/volume/ingest.h"
 #include "isovdb/volume/mask_rule.h"
+#include "support/analytic_sdf.h"
+#include "support/mesh_distance.h"
 
 namespace isovdb::contour {
 namespace {
@@ -34,8 +36,6 @@ using octree::MetaCellSamples;
 using V3 = std::array<double, 3>;
 
 V3 sub(const V3& a, const V3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-V3 add(const V3& a, const V3& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-V3 mul(const V3& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
 double dot(const V3& a, const V3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 double len(const V3& a) { return std::sqrt(dot(a, a)); }
 V3 toV3(const mesh::Vec3f& p) { return {p[0], p[1], p[2]}; }
@@ -51,12 +51,7 @@ double boxSdf(const V3& p, const V3& c, const V3& half) {
   return len(outside) + std::min(std::max({q[0], q[1], q[2]}), 0.0);
 }
 
-/// Capped cylinder along z.
-double cylinderSdf(const V3& p, const V3& c, double r, double halfHeight) {
-  const double dx = p[0] - c[0], dy = p[1] - c[1];
-  const double qr = std::sqrt(dx * dx + dy * dy) - r, qz = std::abs(p[2] - c[2]) - halfHeight;
-  return std::min(std::max(qr, qz), 0.0) + std::hypot(std::max(qr, 0.0), std::max(qz, 0.0));
-}
+using test::cylinderSdf;
 
 /// The sample shape's distance field (mask -> OpenVDB SDF), in a padded whole-volume meta-cell.
 MetaCellSamples shapeSamples(samples::ShapeKind kind, int shapeSize, int metaCellSize, int pad) {
@@ -245,41 +240,7 @@ TEST(AdaptiveContour, SaltDomeThreeTimesFewerTrianglesThanRegularWithinHalfAVoxe
 
 // ---- sharp features ---------------------------------------------------------
 
-V3 closestOnTriangle(const V3& p, const V3& a, const V3& b, const V3& c) {
-  // Ericson, Real-Time Collision Detection, 5.1.5.
-  const V3 ab = sub(b, a), ac = sub(c, a), ap = sub(p, a);
-  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
-  if (d1 <= 0 && d2 <= 0) return a;
-  const V3 bp = sub(p, b);
-  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
-  if (d3 >= 0 && d4 <= d3) return b;
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return add(a, mul(ab, d1 / (d1 - d3)));
-  const V3 cp = sub(p, c);
-  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
-  if (d6 >= 0 && d5 <= d6) return c;
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return add(a, mul(ac, d2 / (d2 - d6)));
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
-    return add(b, mul(sub(c, b), (d4 - d3) / ((d4 - d3) + (d5 - d6))));
-  const double denom = 1.0 / (va + vb + vc);
-  return add(a, add(mul(ab, vb * denom), mul(ac, vc * denom)));
-}
-
-double distanceToMesh(const mesh::Mesh& m, const V3& p) {
-  double best = std::numeric_limits<double>::max();
-  for (const auto& t : m.triangles) {
-    const V3 a = toV3(m.positions[t[0]]), b = toV3(m.positions[t[1]]), c = toV3(m.positions[t[2]]);
-    // Cheap reject on the bounding box.
-    bool far = false;
-    for (int ax = 0; ax < 3 && !far; ++ax)
-      far = p[ax] < std::min({a[ax], b[ax], c[ax]}) - best || p[ax] > std::max({a[ax], b[ax], c[ax]}) + best;
-    if (far) continue;
-    best = std::min(best, len(sub(p, closestOnTriangle(p, a, b, c))));
-  }
-  return best;
-}
+using test::distanceToMesh;
 
 double nearestVertex(const mesh::Mesh& m, const V3& p) {
   double best = std::numeric_limits<double>::max();
@@ -333,27 +294,34 @@ std::vector<std::size_t> leavesOnFeature(const LinearOctree& tree, const std::ve
 /// 4-voxel cells the Prewitt normals of crossings within ~1 voxel of a feature
 /// are blended, the QEF minimiser leaves the cell and the dual vertex falls back
 /// to the mass point (errors up to 2.5 voxels; dual_vertex.cc, not contouring).
-octree::OctreeOptions featureTree() {
+/// `sharp`: OctreeOptions::sharpFeatures (crease crossings and the feature gap criterion).
+octree::OctreeOptions featureTree(bool sharp) {
   octree::OctreeOptions o = adaptiveTree();
   o.minDepth = 3;
+  o.sharpFeatures = sharp;
   return o;
 }
 
-/// The same SDF as an OpenVDB level set (narrow band 3) for the reference mesher.
-template <class F>
-volume::Volume levelSetVolume(int size, F&& sdf) {
-  auto grid = openvdb::FloatGrid::create(3.0f);
-  grid->setGridClass(openvdb::GRID_LEVEL_SET);
-  auto acc = grid->getAccessor();
-  for (int z = -2; z <= size + 2; ++z)
-    for (int y = -2; y <= size + 2; ++y)
-      for (int x = -2; x <= size + 2; ++x) {
-        const float v = static_cast<float>(sdf(V3{double(x), double(y), double(z)}));
-        if (std::abs(v) < 3.0f) acc.setValue(openvdb::Coord(x, y, z), v);
-        else acc.setValueOff(openvdb::Coord(x, y, z), v < 0 ? -3.0f : 3.0f);
-      }
-  return volume::Volume(volume::VolumeKind::DistanceField, grid, volume::Geometry{}, "analytic");
+/// A sharp-feature test's tree and mesh (Ju–Udeshi fans), checked closed, intersection-free, genus 0.
+struct FeatureRun {
+  octree::OctreeBuildStats build;
+  LinearOctree tree;
+  ContourRun run;
+};
+
+FeatureRun contourFeatures(const MetaCellSamples& samples, bool sharp) {
+  FeatureRun f;
+  f.tree = octree::buildOctree(samples, featureTree(sharp), &f.build);
+  f.run.mesh = contourAdaptive(samples, f.tree, AdaptiveContourOptions{.sharpFeatures = sharp}, &f.run.stats);
+  f.run.report = mesh::validateMesh(f.run.mesh);
+  EXPECT_TRUE(f.run.report.closed);
+  EXPECT_EQ(f.run.report.selfIntersectingPairs, 0);
+  EXPECT_EQ(f.run.report.eulerCharacteristic, 2);
+  return f;
 }
+
+/// The same SDF as an OpenVDB level set (narrow band 3) for the reference mesher.
+using test::levelSetVolume;
 
 TEST(AdaptiveContour, SharpCubeKeepsEdgesAndCornersUnlikeMarchingCubes) {
   const V3 c{32.37, 31.71, 32.23}, h{12.3, 11.6, 10.9};
@@ -361,66 +329,73 @@ TEST(AdaptiveContour, SharpCubeKeepsEdgesAndCornersUnlikeMarchingCubes) {
   const MetaCellSamples s = makeMetaCellSamples(64, {0, 0, 0}, [&](int x, int y, int z) {
     return sdf({double(x), double(y), double(z)});
   });
-  const LinearOctree tree = octree::buildOctree(s, featureTree());
-  const ContourRun run = contourAndValidate(s, tree, true);
-  EXPECT_TRUE(run.report.closed);
-  EXPECT_EQ(run.report.selfIntersectingPairs, 0);
-  EXPECT_EQ(run.report.eulerCharacteristic, 2);
   const mesh::Mesh mc = contourWithOpenVdb(levelSetVolume(64, sdf));
-  FeatureError dc, ref;
-  // Distance from a point to the cube's 12 edges.
-  auto edgeDistance = [&](const V3& p) {
-    double best = std::numeric_limits<double>::max();
+  // Prewitt normals already do on a cube's 8-voxel cells; crease crossings too.
+  for (const bool sharp : {false, true}) {
+    SCOPED_TRACE(sharp ? "sharp features" : "Prewitt normals");
+    const FeatureRun f = contourFeatures(s, sharp);
+    const LinearOctree& tree = f.tree;
+    const ContourRun& run = f.run;
+    FeatureError dc, ref;
+    // Distance from a point to the cube's 12 edges.
+    auto edgeDistance = [&](const V3& p) {
+      double best = std::numeric_limits<double>::max();
+      for (int axis = 0; axis < 3; ++axis)
+        for (int q = 0; q < 4; ++q) {
+          const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+          const double du = p[u] - (c[u] + ((q & 1) ? h[u] : -h[u])), dv = p[v] - (c[v] + ((q & 2) ? h[v] : -h[v]));
+          const double da = std::max(std::abs(p[axis] - c[axis]) - h[axis], 0.0);
+          best = std::min(best, std::sqrt(du * du + dv * dv + da * da));
+        }
+      return best;
+    };
+    std::vector<V3> featurePoints;
+    for (int corner = 0; corner < 8; ++corner) {
+      V3 p;
+      for (int a = 0; a < 3; ++a) p[a] = c[a] + (((corner >> a) & 1) ? h[a] : -h[a]);
+      dc.corner = std::max(dc.corner, nearestVertex(run.mesh, p));
+      ref.corner = std::max(ref.corner, nearestVertex(mc, p));
+    }
     for (int axis = 0; axis < 3; ++axis)
       for (int q = 0; q < 4; ++q) {
+        V3 p = c;
         const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-        const double du = p[u] - (c[u] + ((q & 1) ? h[u] : -h[u])), dv = p[v] - (c[v] + ((q & 2) ? h[v] : -h[v]));
-        const double da = std::max(std::abs(p[axis] - c[axis]) - h[axis], 0.0);
-        best = std::min(best, std::sqrt(du * du + dv * dv + da * da));
+        p[u] += (q & 1) ? h[u] : -h[u];
+        p[v] += (q & 2) ? h[v] : -h[v];
+        for (double t = -h[axis] + 0.5; t <= h[axis] - 0.5; t += 0.25) {
+          p[axis] = c[axis] + t;
+          featurePoints.push_back(p);
+          dc.line = std::max(dc.line, distanceToMesh(run.mesh, p));
+          ref.line = std::max(ref.line, distanceToMesh(mc, p));
+        }
       }
-    return best;
-  };
-  std::vector<V3> featurePoints;
-  for (int corner = 0; corner < 8; ++corner) {
-    V3 p;
-    for (int a = 0; a < 3; ++a) p[a] = c[a] + (((corner >> a) & 1) ? h[a] : -h[a]);
-    dc.corner = std::max(dc.corner, nearestVertex(run.mesh, p));
-    ref.corner = std::max(ref.corner, nearestVertex(mc, p));
+    // The dual vertex of every leaf the edges cross lies on the edges.
+    double vertexError = 0;
+    const std::vector<std::size_t> featureLeaves = leavesOnFeature(tree, featurePoints);
+    const std::vector<V3> featureVertices = leafVertices(run.mesh, tree, featureLeaves);
+    EXPECT_EQ(featureVertices.size(), featureLeaves.size());
+    for (const V3& v : featureVertices) vertexError = std::max(vertexError, edgeDistance(v));
+    std::printf("cube%s: %zu tris; corner error %.4f (OpenVDB MC-style %.4f), edge-to-surface %.4f (OpenVDB %.4f), "
+                "max vertex-to-edge %.4f over %zu feature leaves\n",
+                sharp ? " (sharp features)" : "", run.mesh.triangles.size(), dc.corner, ref.corner, dc.line, ref.line,
+                vertexError, featureLeaves.size());
+    EXPECT_LT(vertexError, 0.1);
+    EXPECT_LT(dc.corner, 0.1);
+    EXPECT_LT(dc.line, 0.1);
+    EXPECT_GT(ref.line, 0.1);  // Marching-Cubes-like meshing cuts the edges
   }
-  for (int axis = 0; axis < 3; ++axis)
-    for (int q = 0; q < 4; ++q) {
-      V3 p = c;
-      const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-      p[u] += (q & 1) ? h[u] : -h[u];
-      p[v] += (q & 2) ? h[v] : -h[v];
-      for (double t = -h[axis] + 0.5; t <= h[axis] - 0.5; t += 0.25) {
-        p[axis] = c[axis] + t;
-        featurePoints.push_back(p);
-        dc.line = std::max(dc.line, distanceToMesh(run.mesh, p));
-        ref.line = std::max(ref.line, distanceToMesh(mc, p));
-      }
-    }
-  // The dual vertex of every leaf the edges cross lies on the edges.
-  double vertexError = 0;
-  const std::vector<std::size_t> featureLeaves = leavesOnFeature(tree, featurePoints);
-  const std::vector<V3> featureVertices = leafVertices(run.mesh, tree, featureLeaves);
-  EXPECT_EQ(featureVertices.size(), featureLeaves.size());
-  for (const V3& v : featureVertices) vertexError = std::max(vertexError, edgeDistance(v));
-  std::printf("cube: %zu tris; corner error %.4f (OpenVDB MC-style %.4f), edge-to-surface %.4f (OpenVDB %.4f), "
-              "max vertex-to-edge %.4f over %zu feature leaves\n",
-              run.mesh.triangles.size(), dc.corner, ref.corner, dc.line, ref.line, vertexError, featureLeaves.size());
-  EXPECT_LT(vertexError, 0.1);
-  EXPECT_LT(dc.corner, 0.1);
-  EXPECT_LT(dc.line, 0.1);
-  EXPECT_GT(ref.line, 0.1);  // Marching-Cubes-like meshing cuts the edges
 }
 
-// The dual vertex of a leaf on a curved rim sits where the tangent planes of its
-// crossings meet, outside the circle by about r (1 / cos(theta) - 1) for crossings
-// theta apart (0.2-0.7 voxel here): the 0.1-voxel vertex target is NOT met on the
-// cylinder (see the printed figures); the test checks the mesh follows the rims
-// much more closely than OpenVDB's Marching-Cubes-style mesher.
-TEST(AdaptiveContour, SharpCylinderFollowsItsRimsBetterThanMarchingCubes) {
+// With Prewitt normals the dual vertex of a leaf on a curved rim sits where the
+// tangent planes of its crossings meet, outside the circle by about
+// r (1 / cos(theta / 2) - 1) for crossings theta apart (0.66 voxel median on
+// 8-voxel cells here), with an almost exact QEF fit; refining by the QEF
+// residual cannot see it, and on small cells the Prewitt normals blend the two
+// faces. With sharp features (OctreeOptions / AdaptiveContourOptions) the rim's
+// leaves are refined until their vertex is on the zero level (octree/surface_gap.h)
+// and crossings near the crease come from their own face (crease_crossing.h):
+// every leaf the rim passes through has its vertex within 0.1 voxel of the rim.
+TEST(AdaptiveContour, SharpCylinderKeepsItsRimsWithSharpFeatures) {
   const int size = 64;
   const V3 c{32.41, 31.63, 32.27};
   const double r = 14.3, hh = 11.2;
@@ -428,44 +403,50 @@ TEST(AdaptiveContour, SharpCylinderFollowsItsRimsBetterThanMarchingCubes) {
   const MetaCellSamples s = makeMetaCellSamples(size, {0, 0, 0}, [&](int x, int y, int z) {
     return sdf({double(x), double(y), double(z)});
   });
-  const LinearOctree tree = octree::buildOctree(s, featureTree());
-  const ContourRun run = contourAndValidate(s, tree, true);
-  EXPECT_TRUE(run.report.closed);
-  EXPECT_EQ(run.report.selfIntersectingPairs, 0);
-  EXPECT_EQ(run.report.eulerCharacteristic, 2);
   const mesh::Mesh mc = contourWithOpenVdb(levelSetVolume(size, sdf));
-  double dcLine = 0, refLine = 0;
-  std::vector<V3> featurePoints;
   auto rimDistance = [&](const V3& p) {
     const double rho = std::hypot(p[0] - c[0], p[1] - c[1]) - r;
     const double dz = std::min(std::abs(p[2] - (c[2] - hh)), std::abs(p[2] - (c[2] + hh)));
     return std::hypot(rho, dz);
   };
+  std::vector<V3> featurePoints;
   for (int side = -1; side <= 1; side += 2)
     for (int i = 0; i < 720; ++i) {
       const double a = 2 * M_PI * i / 720;
-      const V3 p{c[0] + r * std::cos(a), c[1] + r * std::sin(a), c[2] + side * hh};
-      featurePoints.push_back(p);
-      dcLine = std::max(dcLine, distanceToMesh(run.mesh, p));
-      refLine = std::max(refLine, distanceToMesh(mc, p));
+      featurePoints.push_back({c[0] + r * std::cos(a), c[1] + r * std::sin(a), c[2] + side * hh});
     }
-  double vertexError = 0;
-  const std::vector<std::size_t> featureLeaves = leavesOnFeature(tree, featurePoints);
-  const std::vector<V3> featureVertices = leafVertices(run.mesh, tree, featureLeaves);
-  EXPECT_EQ(featureVertices.size(), featureLeaves.size());
-  std::vector<double> errors;
-  for (const V3& v : featureVertices) errors.push_back(rimDistance(v));
-  std::sort(errors.begin(), errors.end());
-  if (!errors.empty()) vertexError = errors.back();
-  const double medianError = errors.empty() ? 0.0 : errors[errors.size() / 2];
-  const double p90Error = errors.empty() ? 0.0 : errors[errors.size() * 9 / 10];
-  std::printf("cylinder rim vertex errors: median %.4f, 90%% %.4f, max %.4f\n", medianError, p90Error, vertexError);
-  std::printf("cylinder: %zu tris; max vertex-to-rim %.4f over %zu feature leaves; rim-to-surface %.4f "
-              "(OpenVDB MC-style %.4f)\n",
-              run.mesh.triangles.size(), vertexError, featureLeaves.size(), dcLine, refLine);
-  EXPECT_LT(dcLine, 0.5 * refLine);
-  EXPECT_LT(medianError, refLine);
-  EXPECT_GT(refLine, 0.1);
+  double refLine = 0;
+  for (const V3& p : featurePoints) refLine = std::max(refLine, distanceToMesh(mc, p));
+  for (const bool sharp : {false, true}) {
+    SCOPED_TRACE(sharp ? "sharp features" : "Prewitt normals");
+    const FeatureRun f = contourFeatures(s, sharp);
+    const LinearOctree& tree = f.tree;
+    const ContourRun& run = f.run;
+    double dcLine = 0;
+    for (const V3& p : featurePoints) dcLine = std::max(dcLine, distanceToMesh(run.mesh, p));
+    // The vertices that represent the rim: those of the leaves it passes through.
+    const std::vector<std::size_t> featureLeaves = leavesOnFeature(tree, featurePoints);
+    const std::vector<V3> featureVertices = leafVertices(run.mesh, tree, featureLeaves);
+    EXPECT_EQ(featureVertices.size(), featureLeaves.size());
+    std::vector<double> errors;
+    for (const V3& v : featureVertices) errors.push_back(rimDistance(v));
+    std::sort(errors.begin(), errors.end());
+    ASSERT_FALSE(errors.empty());
+    const double median = errors[errors.size() / 2], p90 = errors[errors.size() * 9 / 10], max = errors.back();
+    std::printf("cylinder%s: %zu tris (%zu feature splits); rim vertex errors over %zu feature leaves: median %.4f, "
+                "90%% %.4f, max %.4f; rim-to-surface %.4f (OpenVDB MC-style %.4f)\n",
+                sharp ? " (sharp features)" : "", run.mesh.triangles.size(), f.build.featureSplits,
+                featureLeaves.size(), median, p90, max, dcLine, refLine);
+    EXPECT_LT(dcLine, 0.5 * refLine);
+    EXPECT_GT(refLine, 0.1);
+    if (sharp) {
+      EXPECT_LT(median, 0.1);
+      EXPECT_LT(max, 0.1);
+      EXPECT_LT(dcLine, 0.1);
+    } else {
+      EXPECT_LT(median, refLine);
+    }
+  }
 }
 
 // ---- topology: several sheets in one cell, hidden components ------------------

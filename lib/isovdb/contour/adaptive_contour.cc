@@ -33,7 +33,9 @@ MetaCellMesh contourAdaptiveMetaCell(const octree::MetaCellSamples& samples, con
   for (std::size_t i = 0; i < leafCount; ++i) configs[i] = tree.leaf(i).cornerSigns;
   const LeafGroups groups = groupLeaves(samples, tree, std::move(configs), options.iso, options.manifoldFix);
   const std::vector<mesh::Vec3f> positions = placeGroupVertices(
-      samples, tree, groups, DualVertexOptions{.iso = options.iso, .singularValueThreshold = options.singularValueThreshold});
+      samples, tree, groups,
+      DualVertexOptions{.iso = options.iso, .singularValueThreshold = options.singularValueThreshold,
+                        .sharpFeatures = options.sharpFeatures});
   std::vector<Vec3d> cellPoints(positions.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leafCount, 256), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i)
@@ -48,7 +50,8 @@ MetaCellMesh contourAdaptiveMetaCell(const octree::MetaCellSamples& samples, con
     std::array<int, 3> start = leaf.origin;
     for (int a = 0; a < 3; ++a) start[a] += ((c0 >> a) & 1) * leaf.size;
     EdgeIntersection ix;
-    if (!intersectEdge(samples, start, axis, leaf.size, options.iso, ix)) return std::numeric_limits<double>::quiet_NaN();
+    if (!intersectEdge(samples, start, axis, leaf.size, options.iso, ix, options.sharpFeatures))
+      return std::numeric_limits<double>::quiet_NaN();
     return static_cast<double>(ix.point[axis] - static_cast<float>(start[axis]));
   };
   const AdaptiveTree source{.tree = &tree, .origin = samples.origin, .firstVertex = &groups.firstVertex,

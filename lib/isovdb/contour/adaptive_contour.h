@@ -63,6 +63,8 @@ struct AdaptiveContourOptions {
   bool manifoldFix = true;              ///< Wenger's fix on doubled ambiguous faces (leaf_groups.h); false only in tests
   float singularValueThreshold = 0.1f;  ///< QEF truncation of the dual vertices (see QefOptions); larger = smoother,
                                         ///< smaller = sharper features but noisier vertices
+  bool sharpFeatures = false;  ///< crossings near a crease from the face they lie on (crease_crossing.h);
+                               ///< the octree should be built with the same OctreeOptions::sharpFeatures
 };
 
 /// What contourAdaptive did (figures for statistics, tests and paper 000's Tables 5.1–5.2).

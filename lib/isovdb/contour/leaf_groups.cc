@@ -63,7 +63,8 @@ std::vector<mesh::Vec3f> placeGroupVertices(const octree::MetaCellSamples& sampl
       const DmcEntry& entry = groups.entry(i);
       const octree::OctreeLeaf& leaf = tree.leaf(i);
       if (entry.vertexCount == 1 && !options.massPointOnly &&
-          leaf.vertexTruncation == options.singularValueThreshold) {
+          leaf.vertexTruncation == options.singularValueThreshold &&
+          leaf.vertexSharpFeatures == options.sharpFeatures) {
         // The construction's geometric criterion solved this QEF already.
         positions[groups.firstVertex[i]] = leaf.vertex;
         continue;

@@ -12,6 +12,7 @@
 #include "isovdb/contour/dual_vertex.h"
 #include "isovdb/errors.h"
 #include "isovdb/octree/criteria.h"
+#include "isovdb/octree/surface_gap.h"
 
 namespace isovdb::octree {
 
@@ -59,6 +60,10 @@ class KeyMap {
 
 constexpr std::int32_t kInternal = -1;
 
+/// Crossing normals farther apart than this (cosine: 60 degrees) mark a leaf on a sharp
+/// feature, whose vertex the sharp-feature gap checks (a smooth leaf's planes are close).
+constexpr float kFeatureCone = 0.5f;
+
 /// Result of evaluating one cell.
 struct Evaluation {
   OctreeLeaf leaf;
@@ -66,6 +71,7 @@ struct Evaluation {
   bool classified = false;
   bool complex = false;
   bool geometric = false;  // split only because of the QEF criterion
+  bool feature = false;    // of those, because of the sharp-feature gap
   bool multiSheet = false; // split only because one vertex cannot stand for the cell (adaptive)
   bool hidden = false;     // split only because of a component hidden inside (adaptive)
   bool interiorOnly = false;
@@ -120,11 +126,21 @@ class Builder {
     } else if (options_.qefTolerance >= 0.0f && ev.leaf.surface) {
       const contour::DualVertex v = contour::computeDualVertex(
           samples_, ev.leaf.origin, size, ev.leaf.bipolarEdges(),
-          contour::DualVertexOptions{.iso = options_.iso, .singularValueThreshold = options_.singularValueThreshold});
+          contour::DualVertexOptions{.iso = options_.iso,
+                                     .singularValueThreshold = options_.singularValueThreshold,
+                                     .sharpFeatures = options_.sharpFeatures});
       ev.split = ev.geometric = v.valid() && v.rmsError() > options_.qefTolerance;
+      if (!ev.split && options_.sharpFeatures && v.valid() && v.minNormalDot < kFeatureCone) {
+        // A few tangent planes of a curved crease meet off it while fitting almost exactly.
+        std::array<float, 3> x;
+        for (int a = 0; a < 3; ++a) x[a] = v.position[a] - static_cast<float>(samples_.origin[a]);
+        ev.split = ev.geometric = ev.feature =
+            surfaceGap(samples_, ev.leaf.origin, size, x, options_.iso) > options_.featureTolerance;
+      }
       if (v.valid()) {
         ev.leaf.vertex = v.position;
         ev.leaf.vertexTruncation = options_.singularValueThreshold;
+        ev.leaf.vertexSharpFeatures = options_.sharpFeatures;
       }
     }
     // A leaf-to-be of the adaptive tree whose faces the surface crosses may still hide a
@@ -144,6 +160,7 @@ class Builder {
     stats_.interiorComponents += ev.interiorOnly;
     stats_.complexCells += ev.complex;
     stats_.geometricSplits += ev.geometric;
+    stats_.featureSplits += ev.feature;
     stats_.multiSheetSplits += ev.multiSheet;
     stats_.hiddenComponentSplits += ev.hidden;
   }

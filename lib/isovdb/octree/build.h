@@ -12,7 +12,8 @@
 ///   (criteria.h, hasHiddenComponent), are subdivided; the tree is then kept 2:1
 ///   balanced (leaves that share a face, an edge or a corner differ by at most
 ///   one depth); optionally a geometric criterion (QEF error above a
-///   tolerance) refines further. For octree dual contouring + Ju–Udeshi.
+///   tolerance; with sharp features, a vertex off a curved crease) refines
+///   further. For octree dual contouring + Ju–Udeshi.
 /// Memory: O(leaves) beside the dense MetaCellSamples block. Deterministic:
 /// the result does not depend on the number of threads.
 #pragma once
@@ -45,6 +46,14 @@ struct OctreeOptions {
   float qefTolerance = -1.0f;  ///< adaptive only: also subdivide a surface leaf whose dual vertex is farther
                                ///< than this RMS distance (voxels) from its tangent planes; < 0 = off
   float singularValueThreshold = 0.1f;  ///< QEF truncation used by the geometric criterion (see contour::QefOptions)
+  /// Adaptive, with the QEF criterion on: sharp features (contour::DualVertexOptions::sharpFeatures
+  /// for the criterion's vertices), and also subdivide a surface leaf whose crossing normals are
+  /// more than 60 degrees apart and whose dual vertex is at least `featureTolerance` voxels off
+  /// the zero level by the field's Lipschitz bound (surface_gap.h): on a curved rim the tangent
+  /// planes of a coarse leaf meet outside the rim, with an almost exact fit. Contouring must
+  /// use the same setting (contour::AdaptiveContourOptions::sharpFeatures).
+  bool sharpFeatures = false;
+  float featureTolerance = 0.05f;       ///< voxels; see sharpFeatures
   float iso = 0.0f;                     ///< isovalue; a sample is inside iff value <= iso
   bool detectInteriorComponents = true; ///< a cell with one-phase faces but a sample of the other phase inside
                                         ///< is complex (catches blobs that touch no face; one pass over such cells)
@@ -70,6 +79,7 @@ struct OctreeBuildStats {
   std::size_t complexCells = 0;          ///< complex cells found (subdivided or left at the maximum depth)
   std::size_t unresolvedComplexLeaves = 0;  ///< complex leaves at the maximum depth
   std::size_t geometricSplits = 0;       ///< cells subdivided by the QEF criterion
+  std::size_t featureSplits = 0;         ///< of them, by the sharp-feature gap (OctreeOptions::sharpFeatures)
   std::size_t multiSheetSplits = 0;      ///< adaptive: cells subdivided because their configuration has several
                                          ///< DMC groups or a doubled ambiguous face (one vertex cannot stand for them)
   std::size_t hiddenComponentSplits = 0; ///< adaptive: cells subdivided because a component of samples hides

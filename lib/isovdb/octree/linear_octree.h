@@ -39,6 +39,7 @@ struct OctreeLeaf {
   /// all bipolar edges, global voxel index coordinates), which contouring reuses.
   std::array<float, 3> vertex{0.0f, 0.0f, 0.0f};
   float vertexTruncation = -1.0f;     ///< QEF truncation `vertex` was placed with; < 0: none placed
+  bool vertexSharpFeatures = false;   ///< `vertex` was placed with sharp features (crease_crossing.h)
 
   /// Edges whose two corners differ in sign (bit e, numbering of morton.h).
   std::uint16_t bipolarEdges() const noexcept { return bipolarEdgeMask(cornerSigns); }
