@@ -62,6 +62,8 @@ void addExtractCommand(CLI::App& app, Context& context) {
       ->capture_default_str();
   command->add_flag("!--no-intersection-free", state->options.octree.intersectionFree,
                     "adaptive: plain dual contouring without Ju-Udeshi fans (for comparison)");
+  command->add_flag("--sharp-features", state->options.octree.sharpFeatures,
+                    "adaptive, exact distance fields (not masks): keep sharp edges and corners");
   command->add_option("--boundary", state->boundary,
                       "Surfaces reaching the data boundary (survey edge): cap (closed mesh, caps on the boundary) "
                       "or open (caps dropped, the mesh ends on the boundary)")

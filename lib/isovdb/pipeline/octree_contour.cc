@@ -39,6 +39,7 @@ octree::OctreeOptions treeOptionsFor(const OctreeContourOptions& options, int si
   t.maxDepth = options.maxLevel;
   if (options.maxLevel < 0) t.finestCellSize = options.finestCellSize;
   t.qefTolerance = options.method == OctreeMethod::Adaptive ? options.qefTolerance : -1.f;
+  t.sharpFeatures = options.method == OctreeMethod::Adaptive && options.sharpFeatures;
   t.iso = iso;
   return t;
 }
@@ -102,7 +103,9 @@ contour::MetaCellMesh contourBlock(const octree::MetaCellSamples& samples, const
   } else {
     contour::AdaptiveContourStats s;
     result = contour::contourAdaptiveMetaCell(
-        samples, tree, {.iso = iso, .intersectionFree = options.intersectionFree, .manifoldFix = options.manifoldFix},
+        samples, tree,
+        {.iso = iso, .intersectionFree = options.intersectionFree, .manifoldFix = options.manifoldFix,
+         .sharpFeatures = options.sharpFeatures},
         &s);
     totals.manifoldFixes += s.manifoldFixes;
     totals.multiVertexCells += s.multiVertexCells;
@@ -138,6 +141,7 @@ void recordTotals(const MetaCellTotals& totals, const OctreeContourOptions& opti
     section["hidden_component_splits"] = totals.hiddenComponentSplits;
     section["multi_vertex_cells"] = totals.multiVertexCells;
     section["intersection_free"] = options.intersectionFree;
+    section["sharp_features"] = options.sharpFeatures;
     section["minimal_edges"] = totals.minimalEdges;
     section["fanned_edges"] = totals.fannedEdges;
     section["triangles_added_by_fans"] = totals.trianglesAddedByFans;
