@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <tuple>
 
 #include <nlohmann/json.hpp>
@@ -10,6 +11,8 @@
 #include <openvdb/openvdb.h>
 
 #include "generators/shapes.h"
+#include "isovdb/volume/grids.h"
+#include "support/analytic_sdf.h"
 #include "support/test_support.h"
 
 namespace isovdb::test {
@@ -166,6 +169,39 @@ TEST(CliSdf, WritesALevelSetThatOpenVdbReads) {
             0)
       << output;
   EXPECT_NE(output.find("check.closed: true"), std::string::npos) << output;
+}
+
+// --sharp-features through the binary on an exact distance field (.vdb level set
+// of a capped cylinder): the flag reaches the octree and the contouring (more
+// leaves on the rims) and the mesh keeps the guarantees.
+TEST(CliExtract, SharpFeaturesOnALevelSetKeepTheGuarantees) {
+  TempDir dir;
+  const std::array<double, 3> c{32.41, 31.63, 32.27};
+  const volume::Volume cylinder =
+      levelSetVolume(64, [&](const std::array<double, 3>& p) { return cylinderSdf(p, c, 14.3, 11.2); });
+  const auto vdb = dir / "cylinder.vdb";
+  openvdb::initialize();
+  const openvdb::FloatGrid::Ptr grid = volume::fieldGridPtr(cylinder);
+  grid->setName("cylinder");
+  openvdb::io::File(vdb.string()).write(openvdb::GridPtrVec{grid});
+  int triangles[2] = {0, 0};
+  for (const bool sharp : {false, true}) {
+    const auto stats = dir / (sharp ? "sharp.json" : "plain.json");
+    std::string output;
+    ASSERT_EQ(runCommand(cliPath().string() + " -q extract " + vdb.string() + " -o " + (dir / "m.ply").string() +
+                             " --method adaptive --max-cell-size 8 --check --stats " + stats.string() +
+                             (sharp ? " --sharp-features" : ""),
+                         &output),
+              0)
+        << output;
+    const nlohmann::json json = readJson(stats);
+    EXPECT_EQ(json["meta_cells"]["sharp_features"].get<bool>(), sharp);
+    EXPECT_TRUE(json["check"]["closed"].get<bool>());
+    EXPECT_EQ(json["check"]["self_intersecting_pairs"].get<int>(), 0);
+    EXPECT_EQ(json["check"]["euler_characteristic"].get<int>(), 2);
+    triangles[sharp] = json["contour"]["triangles"].get<int>();
+  }
+  EXPECT_GT(triangles[1], 2 * triangles[0]);  // the rims' leaves are refined
 }
 
 TEST(CliInfo, ReportsTheSparseGrid) {
