@@ -74,7 +74,7 @@ def distance_field(volume: Volume, half_width: int = 3, closing: int = 0, chunk_
 def extract(volume: Volume, *, method: Literal["adaptive", "regular", "vdb"] = "adaptive", iso: float = 0.0,
             min_level: int = -1, max_level: int = -1, finest_size: int = 1, max_cell_size: int = 16,
             meta_cell: int = 128, qef_tolerance: float = 0.25, intersection_free: bool = True,
-            adaptivity: float = 0.0, half_width: int = 3, closing: int = 0, sdf_chunk: int = 128,
+            sharp_features: bool = False, adaptivity: float = 0.0, half_width: int = 3, closing: int = 0, sdf_chunk: int = 128,
             boundary: Literal["cap", "open"] = "cap", threads: int | None = None, progress: Progress = None,
             output: PathLike | None = None) -> Mesh | dict[str, Any]: ...
 def read_mesh(path: PathLike) -> Mesh: ...

@@ -15,7 +15,8 @@ namespace {
 /// The options of extract()'s keywords (each the CLI flag of the same name).
 pipeline::ExtractOptions extractOptions(const std::string& method, double iso, int minLevel, int maxLevel,
                                         int finestSize, int maxCellSize, int metaCell, float qefTolerance,
-                                        bool intersectionFree, double adaptivity, int halfWidth, int closing,
+                                        bool intersectionFree, bool sharpFeatures, double adaptivity, int halfWidth,
+                                        int closing,
                                         int sdfChunk, const std::string& boundary, std::optional<int> threads) {
   pipeline::ExtractOptions result;
   const auto parsed = pipeline::parseContourMethod(method);
@@ -34,18 +35,19 @@ pipeline::ExtractOptions extractOptions(const std::string& method, double iso, i
   result.octree.maxCellSize = maxCellSize;
   result.octree.qefTolerance = qefTolerance;
   result.octree.intersectionFree = intersectionFree;
+  result.octree.sharpFeatures = sharpFeatures;
   result.threads = threads.value_or(0);
   return result;
 }
 
 py::object extract(const PyVolume& volume, const std::string& method, double iso, int minLevel, int maxLevel,
                    int finestSize, int maxCellSize, int metaCell, float qefTolerance, bool intersectionFree,
-                   double adaptivity, int halfWidth, int closing, int sdfChunk, const std::string& boundary,
+                   bool sharpFeatures, double adaptivity, int halfWidth, int closing, int sdfChunk, const std::string& boundary,
                    std::optional<int> threads, const py::object& progress,
                    const std::optional<std::filesystem::path>& output) {
   const pipeline::ExtractOptions options =
       extractOptions(method, iso, minLevel, maxLevel, finestSize, maxCellSize, metaCell, qefTolerance,
-                     intersectionFree, adaptivity, halfWidth, closing, sdfChunk, boundary, threads);
+                     intersectionFree, sharpFeatures, adaptivity, halfWidth, closing, sdfChunk, boundary, threads);
   CallbackProgress callback(progress);
   pipeline::Statistics stats;
   if (output) {
@@ -69,7 +71,8 @@ void bindExtract(py::module_& m) {
         py::arg("iso") = defaults.iso, py::arg("min_level") = octree.minLevel, py::arg("max_level") = octree.maxLevel,
         py::arg("finest_size") = octree.finestCellSize, py::arg("max_cell_size") = octree.maxCellSize,
         py::arg("meta_cell") = octree.metaCellSize, py::arg("qef_tolerance") = octree.qefTolerance,
-        py::arg("intersection_free") = octree.intersectionFree, py::arg("adaptivity") = defaults.adaptivity,
+        py::arg("intersection_free") = octree.intersectionFree, py::arg("sharp_features") = octree.sharpFeatures,
+        py::arg("adaptivity") = defaults.adaptivity,
         py::arg("half_width") = defaults.distance.halfWidth, py::arg("closing") = defaults.distance.closingSteps,
         py::arg("sdf_chunk") = defaults.distance.chunkSize,
         py::arg("boundary") = std::string(pipeline::boundaryModeName(defaults.boundary)),
@@ -97,6 +100,8 @@ Octree methods (regular, adaptive) -- the octree under each meta-cell:
   qef_tolerance: adaptive: split cells whose QEF residual (RMS voxels) exceeds it; < 0 off.
     0.25 gives ~5x fewer triangles than regular at ~0.1 voxel mean error.
   intersection_free: adaptive: Ju-Udeshi fans (False: plain dual contouring, for comparison).
+  sharp_features: adaptive, exact distance fields (not masks): keep sharp edges and corners
+    (crossings near a crease from their own face, rim cells refined); off by default.
 adaptivity: vdb method only, OpenVDB's adaptivity in [0, 1].
 half_width, closing, sdf_chunk: distance field of a mask input (see distance_field()).
 boundary: "cap" (surfaces reaching the sampled box are closed by caps lying on it) or "open"

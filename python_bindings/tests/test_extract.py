@@ -52,6 +52,17 @@ def test_meta_cells_and_threads_do_not_change_the_mesh(torus_volume):
     assert one.statistics["meta_cells"]["contoured"] > 1
 
 
+def test_sharp_features_reach_the_octree_and_keep_the_guarantees(torus_volume):
+    one = isovdb.extract(torus_volume, method="adaptive", sharp_features=True, meta_cell=16, threads=1)
+    many = isovdb.extract(torus_volume, method="adaptive", sharp_features=True, meta_cell=16, threads=None)
+    assert one.statistics["meta_cells"]["sharp_features"]
+    assert np.array_equal(one.vertices, many.vertices)
+    assert np.array_equal(one.triangles, many.triangles)
+    report = one.check()
+    assert report["closed"]
+    assert report["self_intersecting_pairs"] == 0
+
+
 def test_iso_grows_the_surface(torus_volume):
     base = isovdb.extract(torus_volume, method="vdb")
     grown = isovdb.extract(torus_volume, method="vdb", iso=1.5)
