@@ -57,8 +57,6 @@ Vec3f toFloat(const std::array<int, 3>& p) {
   return {static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])};
 }
 
-float dot(const Vec3f& a, const Vec3f& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
 }  // namespace
 
 bool crossingBesideCrease(const octree::MetaCellSamples& samples, std::array<int, 3> sample0, int axis, float t,

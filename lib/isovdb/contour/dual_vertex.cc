@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "isovdb/contour/edge_intersection.h"
+#include "isovdb/contour/gradient.h"
 #include "isovdb/octree/morton.h"
 
 namespace isovdb::contour {
@@ -69,8 +70,7 @@ DualVertex computeDualVertex(const octree::MetaCellSamples& samples, std::array<
   v.rank = static_cast<std::uint8_t>(s.rank);
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = i + 1; j < n; ++j)
-      v.minNormalDot = std::min(v.minNormalDot, normals[i][0] * normals[j][0] + normals[i][1] * normals[j][1] +
-                                                    normals[i][2] * normals[j][2]);
+      v.minNormalDot = std::min(v.minNormalDot, dot(normals[i], normals[j]));
   Vec3f x = s.point;
   if (options.sharpFeatures && s.rank == 2) x = slideIntoCell(x, s.freeDirections[0], cellOrigin, cellSize);
   const float slack = options.sharpFeatures ? kFeatureSlack : 1e-4f;  // else a rounding tolerance on the cell box

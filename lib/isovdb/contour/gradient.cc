@@ -33,7 +33,7 @@ Vec3f prewittGradientOnEdge(const octree::MetaCellSamples& samples, std::array<i
 }
 
 Vec3f normalized(const Vec3f& v) noexcept {
-  const float len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  const float len = std::sqrt(dot(v, v));
   if (!(len > 0.0f) || !std::isfinite(len)) return {0.0f, 0.0f, 0.0f};
   return {v[0] / len, v[1] / len, v[2] / len};
 }

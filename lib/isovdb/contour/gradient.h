@@ -25,6 +25,9 @@ Vec3f prewittGradient(const octree::MetaCellSamples& samples, int i, int j, int 
 Vec3f prewittGradientOnEdge(const octree::MetaCellSamples& samples, std::array<int, 3> sample0, int axis,
                             float t) noexcept;
 
+/// @brief Dot product.
+inline float dot(const Vec3f& a, const Vec3f& b) noexcept { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
 /// @brief Unit vector of v, or (0, 0, 0) when |v| is 0 or not finite.
 Vec3f normalized(const Vec3f& v) noexcept;
 
