@@ -2,9 +2,8 @@
 #include "commands.h"
 #include "input_flags.h"
 #include "isovdb/io/atomic_file.h"
-#include "isovdb/io/vdb_file.h"
-#include "isovdb/pipeline/extract.h"
 #include "isovdb/pipeline/load_volume.h"
+#include "isovdb/pipeline/write_distance_field.h"
 
 namespace isovdb::cli {
 
@@ -21,7 +20,7 @@ void addSdfCommand(CLI::App& app, Context& context) {
   command->add_option("--half-width", state->distance.halfWidth, "Narrow-band half-width in voxels")
       ->capture_default_str();
   command->add_option("--sdf-chunk", state->distance.chunkSize,
-                      "Distance field computed in cubes of this many voxels (multiple of 8; 0 = all at once)")
+                      "Distance field computed in cubes of this many voxels (multiple of 8) and written to the file as they finish; 0 = the whole band at once, in memory")
       ->capture_default_str();
   command->add_option("--closing", state->distance.closingSteps,
                       "Morphological closing steps before the transform (changes topology)")
@@ -35,11 +34,8 @@ void addSdfCommand(CLI::App& app, Context& context) {
     pipeline::Statistics stats;
     const volume::Volume input =
         pipeline::loadVolume(state->input, state->flags.toOptions(state->input), context.interrupter(), &stats);
-    const volume::Volume sdf = pipeline::toContourable(input, state->distance, context.interrupter(), &stats);
-    {
-      pipeline::Statistics::StageTimer timer(&stats, "write");
-      io::writeVdb(state->output, sdf, {.gridName = state->gridName});
-    }
+    pipeline::writeDistanceFieldVdb(input, state->distance, state->output, state->gridName, context.interrupter(),
+                                    &stats);
     stats["output"]["path"] = state->output;
     stats.recordMemory();
     if (!state->statsPath.empty()) stats.write(state->statsPath);

@@ -149,10 +149,20 @@ TEST(CliSdf, WritesALevelSetThatOpenVdbReads) {
   const auto input = writeShape(dir, samples::ShapeKind::Sphere, 48);
   const auto vdb = dir / "sphere.vdb";
   std::string output;
-  ASSERT_EQ(runCommand(cliPath().string() + " -q sdf " + input.string() + " -o " + vdb.string() + " --name salt",
+  const auto stats = dir / "sdf.json";
+  ASSERT_EQ(runCommand(cliPath().string() + " -q sdf " + input.string() + " -o " + vdb.string() + " --name salt" +
+                           " --stats " + stats.string(),
                        &output),
             0)
       << output;
+  // Streamed leaf by leaf (the band never held whole); the spill file is gone.
+  const nlohmann::json json = readJson(stats);
+  EXPECT_TRUE(json["distance_field"]["streamed_to_file"].get<bool>());
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(dir.path()))
+    files.push_back(entry.path().filename().string());
+  std::sort(files.begin(), files.end());
+  EXPECT_EQ(files, (std::vector<std::string>{"sdf.json", "sphere.nrrd", "sphere.vdb"}));
   openvdb::initialize();
   openvdb::io::File file(vdb.string());
   file.open();
@@ -161,14 +171,25 @@ TEST(CliSdf, WritesALevelSetThatOpenVdbReads) {
   EXPECT_EQ(grid->getGridClass(), openvdb::GRID_LEVEL_SET);
   EXPECT_LT(grid->tree().getValue(openvdb::Coord(24, 24, 24)), 0.f);  // centre is inside
   EXPECT_GT(grid->tree().getValue(openvdb::Coord(0, 0, 0)), 0.f);
+  EXPECT_EQ(json["distance_field"]["leaf_nodes"].get<std::int64_t>(),
+            static_cast<std::int64_t>(grid->tree().leafCount()));
+  EXPECT_EQ(json["distance_field"]["active_voxels"].get<std::int64_t>(),
+            static_cast<std::int64_t>(grid->activeVoxelCount()));
+  file.close();
 
-  // And the .vdb is itself a valid input: contour it directly.
+  // And the .vdb is itself a valid input: contour it directly. It is the field
+  // `extract` computes in memory from the same mask, so the meshes are the same bytes.
   ASSERT_EQ(runCommand(cliPath().string() + " -q extract " + vdb.string() + " -o " + (dir / "m.ply").string() +
                            " --check",
                        &output),
             0)
       << output;
   EXPECT_NE(output.find("check.closed: true"), std::string::npos) << output;
+  ASSERT_EQ(runCommand(cliPath().string() + " -q extract " + input.string() + " -o " + (dir / "direct.ply").string(),
+                       &output),
+            0)
+      << output;
+  EXPECT_EQ(readFile(dir / "m.ply"), readFile(dir / "direct.ply"));
 }
 
 // --sharp-features through the binary on an exact distance field (.vdb level set

@@ -5,10 +5,10 @@
 #include <openvdb/tools/ValueTransformer.h>
 
 #include <cmath>
-#include <mutex>
 
 #include "isovdb/errors.h"
 #include "isovdb/io/atomic_file.h"
+#include "isovdb/io/vdb_grid_setup.h"
 #include "isovdb/volume/grids.h"
 
 namespace isovdb::io {
@@ -20,11 +20,6 @@ using volume::Geometry;
 using volume::MaskGrid;
 using volume::Volume;
 using volume::VolumeKind;
-
-void initializeOpenVdb() {
-  static std::once_flag once;
-  std::call_once(once, [] { openvdb::initialize(); });
-}
 
 std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
 
@@ -162,31 +157,23 @@ void writeVdb(const std::filesystem::path& path, const Volume& volume, const Vdb
   const Geometry& geometry = volume.geometry();
   openvdb::GridBase::Ptr out;
   std::string defaultName;
+  const bool levelSet = volume.kind() == VolumeKind::DistanceField;
   if (volume.kind() == VolumeKind::Mask) {
     out = volume.grid()->copyGrid();  // shares the tree: only the transform and name differ
     defaultName = "mask";
   } else {
     const FieldGrid::Ptr grid = volume::fieldGridPtr(volume);
-    const bool levelSet = volume.kind() == VolumeKind::DistanceField;
-    if (levelSet && geometry.isUniform() && geometry.spacing[0] != 1.0) {
+    const float scale = levelSetWorldScale(geometry);
+    if (levelSet && scale != 1.f) {
       FieldGrid::Ptr scaled = grid->deepCopy();
-      scaleLevelSet(*scaled, static_cast<float>(geometry.spacing[0]));
+      scaleLevelSet(*scaled, scale);
       out = scaled;
     } else {
       out = grid->copyGrid();
-      if (levelSet && !geometry.isUniform()) out->insertMeta("isovdb_distance_units", openvdb::StringMetadata("voxels"));
     }
-    if (levelSet) out->setGridClass(openvdb::GRID_LEVEL_SET);
     defaultName = levelSet ? "sdf" : "field";
   }
-  openvdb::Mat4d m = openvdb::Mat4d::identity();
-  for (int a = 0; a < 3; ++a) {
-    m(a, a) = geometry.spacing[a];
-    m(3, a) = geometry.origin[a];
-  }
-  out->setTransform(openvdb::math::Transform::createLinearTransform(m));
-  out->setName(options.gridName.empty() ? defaultName : options.gridName);
-  out->insertMeta("isovdb_source", openvdb::StringMetadata(volume.name()));
+  describeGrid(*out, geometry, options.gridName.empty() ? defaultName : options.gridName, levelSet, volume.name());
 
   AtomicFile target(path);
   target.closeStream();

@@ -30,6 +30,9 @@ struct DistanceFieldOptions {
   int chunkSize = 128;
 };
 
+/// @throw InputError naming the option that is out of range.
+void checkDistanceFieldOptions(const DistanceFieldOptions& options);
+
 /// Signed distance to the boundary of the mask, in voxels, NEGATIVE inside.
 /// Voxels farther than halfWidth are inactive with value ±halfWidth (their sign
 /// is still right). Memory: O(surface · halfWidth) for the result plus one chunk

@@ -14,6 +14,7 @@ namespace isovdb::volume {
 
 using MaskGrid = openvdb::BoolGrid;
 using FieldGrid = openvdb::FloatGrid;
+using FieldLeaf = FieldGrid::TreeType::LeafNodeType;
 
 /// The mask grid of a VolumeKind::Mask volume. @throw InputError for another kind.
 const MaskGrid& maskGrid(const Volume& volume);

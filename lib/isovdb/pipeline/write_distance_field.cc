@@ -1,0 +1,55 @@
+#include "isovdb/pipeline/write_distance_field.h"
+
+#include "isovdb/io/leafwise_level_set_writer.h"
+#include "isovdb/io/vdb_file.h"
+#include "isovdb/pipeline/extract.h"
+#include "isovdb/pipeline/load_volume.h"
+#include "isovdb/volume/band_chunks.h"
+
+namespace isovdb::pipeline {
+
+void writeDistanceFieldVdb(const volume::Volume& volume, const volume::DistanceFieldOptions& options,
+                           const std::filesystem::path& output, const std::string& gridName,
+                           Interrupter* interrupter, Statistics* stats) {
+  volume::checkDistanceFieldOptions(options);
+  if (volume.kind() != volume::VolumeKind::Mask || options.chunkSize == 0) {
+    const volume::Volume sdf = toContourable(volume, options, interrupter, stats);
+    Statistics::StageTimer timer(stats, "write");
+    io::writeVdb(output, sdf, {.gridName = gridName});
+    return;
+  }
+  io::LeafwiseLevelSetWriter writer(output, static_cast<float>(options.halfWidth), volume.geometry(),
+                                    {.gridName = gridName, .source = volume.name()});
+  {
+    Statistics::StageTimer timer(stats, "distance_field");
+    volume::computeBandInChunks(volume::maskGrid(volume), options, [&writer](auto&& leaves) {
+      writer.add(std::move(leaves));
+    }, interrupter);
+  }
+  io::LevelSetFileSummary summary;
+  {
+    Statistics::StageTimer timer(stats, "write");
+    summary = writer.commit(interrupter);
+  }
+  if (!stats) return;
+  Statistics::Json section = Statistics::Json::object();
+  section["half_width_voxels"] = options.halfWidth;
+  section["closing_steps"] = options.closingSteps;
+  section["kind"] = std::string(volume::volumeKindName(volume::VolumeKind::DistanceField));
+  section["active_voxels"] = summary.activeVoxels;
+  section["leaf_nodes"] = summary.leafCount;
+  section["active_tiles"] = 0;
+  section["bbox_min"] = summary.bboxMin;
+  section["bbox_max"] = summary.bboxMax;
+  section["spacing"] = volume.geometry().spacing;
+  section["origin"] = volume.geometry().origin;
+  section["min_value"] = summary.minValue;
+  section["max_value"] = summary.maxValue;
+  // Streamed: the band was never a grid in memory, so there is no grid_memory_bytes.
+  section["streamed_to_file"] = true;
+  section["spill_bytes"] = summary.spillBytes;
+  (*stats)["distance_field"] = section;
+  (*stats)["output"]["file_bytes"] = summary.fileBytes;
+}
+
+}  // namespace isovdb::pipeline
