@@ -13,6 +13,7 @@
 #include "isovdb/io/vdb_file.h"
 #include "isovdb/pipeline/input_choices.h"
 #include "isovdb/pipeline/load_volume.h"
+#include "isovdb/pipeline/write_distance_field.h"
 #include "isovdb/volume/digital_topology.h"
 #include "isovdb/volume/distance_field.h"
 #include "isovdb/volume/ingest.h"
@@ -164,14 +165,25 @@ void write(const PyVolume& self, const std::filesystem::path& path, const std::s
   else throw InputError("'" + path.string() + "': unknown volume format, expected .vdb, .raw or .nrrd");
 }
 
-PyVolume distanceField(const PyVolume& source, int halfWidth, int closing, int chunkSize, const py::object& progress) {
+py::object distanceField(const PyVolume& source, int halfWidth, int closing, int chunkSize, const py::object& progress,
+                         const std::optional<std::filesystem::path>& output, const std::string& gridName) {
   CallbackProgress callback(progress);
-  PyVolume result;
   const volume::DistanceFieldOptions options{.halfWidth = halfWidth, .closingSteps = closing, .chunkSize = chunkSize};
+  if (output) {  // `isovdb sdf`: streamed to the file, never held whole
+    if (source.volume.kind() != volume::VolumeKind::Mask)
+      throw InputError("'" + source.volume.name() + "': a distance field is made from a mask");
+    pipeline::Statistics stats;
+    callback.run([&] {
+      pipeline::writeDistanceFieldVdb(source.volume, options, *output, gridName, &callback, &stats);
+    });
+    stats["output"]["path"] = output->string();
+    return toPython(stats.json());
+  }
+  PyVolume result;
   callback.run([&] { result.volume = volume::distanceField(source.volume, options, &callback); });
   result.input = source.input;
   result.input["distance_field"] = {{"half_width", halfWidth}, {"closing", closing}};
-  return result;
+  return py::cast(std::move(result));
 }
 
 std::int64_t eulerCharacteristic(const PyVolume& source, int adjacency, const py::object& progress) {
@@ -319,7 +331,8 @@ Wenger's manifold fix changes the mesh's value by 2).
 Raises ValueError for a scalar field or another adjacency.)doc");
 
   m.def("distance_field", &distanceField, py::arg("volume"), py::arg("half_width") = 3, py::arg("closing") = 0,
-        py::arg("chunk_size") = 128, py::arg("progress") = py::none(), R"doc(
+        py::arg("chunk_size") = 128, py::arg("progress") = py::none(), py::kw_only(),
+        py::arg("output") = py::none(), py::arg("grid_name") = "sdf", R"doc(
 Narrow-band signed distance field of a mask (kind "sdf"): distances in voxels, NEGATIVE
 inside, the surface half-way between inside and outside voxel centres.
 
@@ -327,6 +340,9 @@ half_width: band half-width in voxels (>= 2 for contouring); voxels farther away
 closing: morphological closing steps before the transform (0 keeps the mask's topology).
 chunk_size: the band is computed in cubes of this many voxels (multiple of 8; 0: at once).
 progress: callable(stage, percent); raising cancels and propagates.
+output: a .vdb path: the band is written there chunk by chunk as `isovdb sdf` does (never
+  held whole; the grid `grid_name`, a level set in world units) and the statistics are
+  returned as a dict instead of a Volume.
 Raises ValueError when `volume` is not a mask.)doc");
 }
 

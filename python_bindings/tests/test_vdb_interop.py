@@ -58,3 +58,32 @@ def test_pyopenvdb_float_grid_round_trips_through_isovdb(tmp_path):
     dense = np.zeros_like(values)
     back.copyToArray(dense)
     assert np.array_equal(dense, values)
+
+
+def test_streamed_distance_field_reads_in_pyopenvdb_like_the_in_memory_one(tmp_path):
+    # distance_field(output=...) writes the band chunk by chunk (isovdb sdf's path):
+    # pyopenvdb must read the same level set as from the grid written in memory.
+    mask = isovdb.from_numpy(ball((40, 36, 44), (20, 18, 22), 13), voxel_size=0.5)
+    stats = isovdb.distance_field(mask, chunk_size=16, output=tmp_path / "streamed.vdb", grid_name="ball")
+    assert stats["distance_field"]["streamed_to_file"] is True
+    isovdb.distance_field(mask, chunk_size=16).write(tmp_path / "memory.vdb", grid_name="ball")
+    streamed = vdb.read(str(tmp_path / "streamed.vdb"), "ball")
+    memory = vdb.read(str(tmp_path / "memory.vdb"), "ball")
+    assert streamed.gridClass == vdb.GridClass.LEVEL_SET
+    assert streamed.activeVoxelCount() == memory.activeVoxelCount() == stats["distance_field"]["active_voxels"]
+    assert streamed.leafCount() == memory.leafCount() == stats["distance_field"]["leaf_nodes"]
+    # every voxel of the box and a margin: band values and the signs of the rest
+    shape = (56, 52, 60)
+    a, b = np.zeros(shape, np.float32), np.zeros(shape, np.float32)
+    streamed.copyToArray(a, ijk=(-8, -8, -8))
+    memory.copyToArray(b, ijk=(-8, -8, -8))
+    assert np.array_equal(a, b)
+    assert (a < 0).sum() > 0 and (a > 0).sum() > 0
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["memory.vdb", "streamed.vdb"]
+
+
+def test_streamed_distance_field_rejects_non_masks(tmp_path):
+    sdf = isovdb.distance_field(isovdb.from_numpy(ball((20, 20, 20), (10, 10, 10), 6)))
+    with pytest.raises(ValueError, match="made from a mask"):
+        isovdb.distance_field(sdf, output=tmp_path / "s.vdb")
+    assert not (tmp_path / "s.vdb").exists()
