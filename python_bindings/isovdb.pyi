@@ -76,6 +76,7 @@ def extract(volume: Volume, *, method: Literal["adaptive", "regular", "vdb"] = "
             min_level: int = -1, max_level: int = -1, finest_size: int = 1, max_cell_size: int = 16,
             meta_cell: int = 128, qef_tolerance: float = 0.25, intersection_free: bool = True,
             sharp_features: bool = False, adaptivity: float = 0.0, half_width: int = 3, closing: int = 0, sdf_chunk: int = 128,
-            boundary: Literal["cap", "open"] = "cap", threads: int | None = None, progress: Progress = None,
+            boundary: Literal["cap", "open"] = "cap", topology: Literal["auto", "voxels", "mdmc"] = "auto",
+            threads: int | None = None, progress: Progress = None,
             output: PathLike | None = None) -> Mesh | dict[str, Any]: ...
 def read_mesh(path: PathLike) -> Mesh: ...

@@ -13,7 +13,7 @@ namespace isovdb::cli {
 
 void addExtractCommand(CLI::App& app, Context& context) {
   struct State {
-    std::string input, output, statsPath, method = "vdb", boundary = "cap";
+    std::string input, output, statsPath, method = "vdb", boundary = "cap", topology = "auto";
     InputFlags flags;
     pipeline::ExtractOptions options;
     bool check = false;
@@ -24,6 +24,12 @@ void addExtractCommand(CLI::App& app, Context& context) {
   command->add_option("IN", state->input, "Volume file (.raw, .nrrd, .nhdr, .mhd, .mha, .sgy, .segy, .vdb)")->required();
   command->add_option("-o,--output", state->output, "Output mesh (.ply binary, or .obj)")->required();
   command->add_option("--method", state->method, "Contouring method: vdb (OpenVDB volumeToMesh), regular (manifold DMC), adaptive (DC + Ju-Udeshi)")
+      ->capture_default_str();
+  command->add_option("--topology", state->topology,
+                      "regular: reading of ambiguous cells. voxels: the voxel object's topology (26-connected "
+                      "inside, 6-connected outside; Euler characteristic 2x the mask's), mdmc: Wenger's manifold "
+                      "DMC (inside corners of ambiguous faces separated, doubled faces regrouped), auto: voxels "
+                      "for masks, mdmc for fields")
       ->capture_default_str();
   command->add_option("--iso", state->options.iso,
                       "Isovalue: voxels on distance fields (0 = mask boundary), field units on scalars")
@@ -81,6 +87,11 @@ void addExtractCommand(CLI::App& app, Context& context) {
     const auto method = pipeline::parseContourMethod(state->method);
     if (!method) throw InputError("--method: unknown method '" + state->method + "', expected vdb, regular or adaptive");
     state->options.method = *method;
+    if (state->topology != "auto") {
+      state->options.regularTopology = pipeline::parseRegularTopology(state->topology);
+      if (!state->options.regularTopology)
+        throw InputError("--topology: unknown reading '" + state->topology + "', expected auto, voxels or mdmc");
+    }
     const auto boundary = pipeline::parseBoundaryMode(state->boundary);
     if (!boundary) throw InputError("--boundary: unknown mode '" + state->boundary + "', expected cap or open");
     state->options.boundary = *boundary;

@@ -17,7 +17,8 @@ pipeline::ExtractOptions extractOptions(const std::string& method, double iso, i
                                         int finestSize, int maxCellSize, int metaCell, float qefTolerance,
                                         bool intersectionFree, bool sharpFeatures, double adaptivity, int halfWidth,
                                         int closing,
-                                        int sdfChunk, const std::string& boundary, std::optional<int> threads) {
+                                        int sdfChunk, const std::string& boundary, const std::string& topology,
+                                        std::optional<int> threads) {
   pipeline::ExtractOptions result;
   const auto parsed = pipeline::parseContourMethod(method);
   if (!parsed) throw InputError("method: unknown method '" + method + "', expected adaptive, regular or vdb");
@@ -25,6 +26,11 @@ pipeline::ExtractOptions extractOptions(const std::string& method, double iso, i
   const auto mode = pipeline::parseBoundaryMode(boundary);
   if (!mode) throw InputError("boundary: unknown mode '" + boundary + "', expected cap or open");
   result.boundary = *mode;
+  if (topology != "auto") {
+    result.regularTopology = pipeline::parseRegularTopology(topology);
+    if (!result.regularTopology)
+      throw InputError("topology: unknown reading '" + topology + "', expected auto, voxels or mdmc");
+  }
   result.iso = iso;
   result.adaptivity = adaptivity;
   result.distance = {.halfWidth = halfWidth, .closingSteps = closing, .chunkSize = sdfChunk};
@@ -43,11 +49,11 @@ pipeline::ExtractOptions extractOptions(const std::string& method, double iso, i
 py::object extract(const PyVolume& volume, const std::string& method, double iso, int minLevel, int maxLevel,
                    int finestSize, int maxCellSize, int metaCell, float qefTolerance, bool intersectionFree,
                    bool sharpFeatures, double adaptivity, int halfWidth, int closing, int sdfChunk, const std::string& boundary,
-                   std::optional<int> threads, const py::object& progress,
+                   const std::string& topology, std::optional<int> threads, const py::object& progress,
                    const std::optional<std::filesystem::path>& output) {
   const pipeline::ExtractOptions options =
       extractOptions(method, iso, minLevel, maxLevel, finestSize, maxCellSize, metaCell, qefTolerance,
-                     intersectionFree, sharpFeatures, adaptivity, halfWidth, closing, sdfChunk, boundary, threads);
+                     intersectionFree, sharpFeatures, adaptivity, halfWidth, closing, sdfChunk, boundary, topology, threads);
   CallbackProgress callback(progress);
   pipeline::Statistics stats;
   if (output) {
@@ -76,7 +82,7 @@ void bindExtract(py::module_& m) {
         py::arg("half_width") = defaults.distance.halfWidth, py::arg("closing") = defaults.distance.closingSteps,
         py::arg("sdf_chunk") = defaults.distance.chunkSize,
         py::arg("boundary") = std::string(pipeline::boundaryModeName(defaults.boundary)),
-        py::arg("threads") = py::none(), py::arg("progress") = py::none(), py::arg("output") = py::none(), R"doc(
+        py::arg("topology") = "auto", py::arg("threads") = py::none(), py::arg("progress") = py::none(), py::arg("output") = py::none(), R"doc(
 Contours a volume into a closed triangle Mesh in world space (the `isovdb extract` job;
 each keyword is the CLI flag of the same name, underscores for dashes, with the same
 default except method).
@@ -86,7 +92,7 @@ volume: a mask (its distance field is computed first, see half_width), a distanc
 method: "adaptive" (adaptive octree + dual contouring with Ju-Udeshi fans: closed, manifold
   with regular's topology, free of self-intersections away from the data boundary's caps,
   far fewer triangles), "regular" (regular octree +
-  manifold Dual Marching Cubes with Wenger's fix: closed and manifold) or "vdb" (OpenVDB's
+  manifold Dual Marching Cubes: closed and manifold, see topology) or "vdb" (OpenVDB's
   volumeToMesh, the reference; the CLI's default).
 iso: isovalue, in voxels on distance fields (0 = the mask boundary, > 0 grows the surface),
   in the field's units on scalar fields (inside = value >= iso).
@@ -106,6 +112,9 @@ adaptivity: vdb method only, OpenVDB's adaptivity in [0, 1].
 half_width, closing, sdf_chunk: distance field of a mask input (see distance_field()).
 boundary: "cap" (surfaces reaching the sampled box are closed by caps lying on it) or "open"
   (the caps are dropped: the mesh ends on the box). Volumes without a sampled box: ignored.
+topology: regular method: "voxels" (the voxel object's topology, 26-connected inside and
+  6-connected outside: Euler characteristic twice the mask's), "mdmc" (Wenger's manifold DMC,
+  adaptive's reading) or "auto" (voxels for masks, mdmc for fields).
 threads: worker threads, None or 0 = every core; the mesh is the same for any count.
 progress: callable(stage: str, percent: int), called from worker threads (with the GIL)
   whenever a stage's percentage changes. If it raises, the work is cancelled and the

@@ -85,6 +85,24 @@ def test_sdf_input_gives_the_same_mesh_as_its_mask():
     assert np.array_equal(direct.vertices, via_sdf.vertices)
 
 
+def test_regular_topology_follows_the_voxels_of_a_mask():
+    # Random voxels: face-diagonal bridges and vertex contacts everywhere.
+    rng = np.random.default_rng(7)
+    voxels = np.zeros((20, 20, 20), np.uint8)
+    voxels[1:-1, 1:-1, 1:-1] = rng.random((18, 18, 18)) < 0.35
+    mask = isovdb.from_numpy(voxels)
+    solid = isovdb.euler_characteristic(mask)
+    meshes = {t: isovdb.extract(mask, method="regular", topology=t) for t in ("auto", "voxels", "mdmc")}
+    for topology, mesh in meshes.items():
+        report = mesh.check(self_intersections=False)
+        assert report["closed"] and report["manifold"], topology
+    assert meshes["voxels"].check(self_intersections=False)["euler_characteristic"] == 2 * solid
+    assert meshes["mdmc"].check(self_intersections=False)["euler_characteristic"] != 2 * solid
+    assert np.array_equal(meshes["auto"].triangles, meshes["voxels"].triangles)  # auto: voxels for a mask
+    assert meshes["voxels"].statistics["meta_cells"]["topology"] == "voxels"
+    assert meshes["voxels"].statistics["meta_cells"]["tube_cells"] > 0
+
+
 def test_boundary_open_leaves_the_mesh_open_on_the_sampled_box():
     cut = np.zeros((20, 20, 20), np.uint8)
     cut[:8, 5:15, 5:15] = 1  # touches the x = 0 face
@@ -99,6 +117,7 @@ def test_boundary_open_leaves_the_mesh_open_on_the_sampled_box():
 @pytest.mark.parametrize("kwargs, message", [
     ({"method": "marching"}, "unknown method"),
     ({"boundary": "wrap"}, "unknown mode"),
+    ({"topology": "digital"}, "unknown reading"),
     ({"meta_cell": 100}, "meta"),
     ({"threads": -2}, "threads"),
 ])

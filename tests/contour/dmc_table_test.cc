@@ -1,6 +1,8 @@
 // Tests of lib/isovdb/contour/dmc_table.h: the generated Dual Marching Cubes
-// table and Wenger's alternative groupings (2B-I / 3B-I).
+// table and Wenger's alternative groupings (2B-I / 3B-I); and voxel_dmc.h's
+// reading of the same cells (joined faces, split faces, tube sectors).
 #include "isovdb/contour/dmc_table.h"
+#include "isovdb/contour/voxel_dmc.h"
 
 #include <gtest/gtest.h>
 
@@ -155,6 +157,78 @@ TEST(DmcTable, FaceDecisionDependsOnlyOnTheFace) {
         EXPECT_TRUE((config >> shared) & 1) << "config " << c << " face " << f;
       }
     }
+}
+
+TEST(VoxelDmc, JoinedFacesAreTheComplementsTableAndEveryEntryIsConsistent) {
+  for (int c = 0; c < 256; ++c) {
+    const auto config = static_cast<std::uint8_t>(c);
+    const DmcEntry& voxels = voxelDmcEntry(config);
+    expectConsistent(config, voxels);
+    EXPECT_EQ(voxels.groups, dmcEntry(static_cast<std::uint8_t>(~config)).groups) << c;
+    // The doubled face of the joined reading is the complement's: outside corners on its diagonal.
+    EXPECT_EQ(voxels.doubleFace, dmcEntry(static_cast<std::uint8_t>(~config)).doubleFace) << c;
+  }
+}
+
+TEST(VoxelDmc, TubesAreTheFourBodyDiagonalPairsAndTheirSectorsCutEveryEdge) {
+  int tubes = 0;
+  for (int c = 0; c < 256; ++c) {
+    const auto config = static_cast<std::uint8_t>(c);
+    if (!isTubeConfig(config)) {
+      EXPECT_EQ(voxelCellVertexCount(config), voxelDmcEntry(config).vertexCount) << c;
+      continue;
+    }
+    ++tubes;
+    EXPECT_EQ(std::popcount(static_cast<unsigned>(config)), 2);
+    EXPECT_EQ(voxelCellVertexCount(config), 3);
+    EXPECT_EQ(voxelDmcEntry(config).vertexCount, 2) << "two caps without the tube";
+    const TubeSectors& t = tubeSectors(config);
+    const std::uint16_t bipolar = bipolarEdgeMask(config);
+    std::array<int, 3> faces{};
+    for (int f = 0; f < 6; ++f) {
+      const int k = t.sectorOfFace[static_cast<std::size_t>(f)];
+      ASSERT_GE(k, 0);
+      ASSERT_LT(k, 3);
+      ++faces[static_cast<std::size_t>(k)];
+      // The sector holds the face's two bipolar edges.
+      const std::uint16_t onFace = static_cast<std::uint16_t>(bipolar & cellFaceEdgeMask(f));
+      EXPECT_EQ(std::popcount(static_cast<unsigned>(onFace)), 2);
+      EXPECT_EQ(t.edges[static_cast<std::size_t>(k)] & onFace, onFace);
+    }
+    EXPECT_EQ(faces, (std::array<int, 3>{2, 2, 2}));
+    // Every bipolar edge separates two sectors (it is in exactly two), and a sector
+    // touches both inside corners (one face at each).
+    for (int e = 0; e < 12; ++e) {
+      int in = 0;
+      for (const std::uint16_t edges : t.edges) in += (edges >> e) & 1;
+      EXPECT_EQ(in, ((bipolar >> e) & 1) ? 2 : 0) << "config " << c << " edge " << e;
+    }
+    const int a = std::countr_zero(static_cast<unsigned>(config));
+    for (int k = 0; k < 3; ++k) {
+      int nearA = 0;
+      for (int f = 0; f < 6; ++f)
+        if (t.sectorOfFace[static_cast<std::size_t>(f)] == k && ((a >> (f >> 1)) & 1) == (f & 1)) ++nearA;
+      EXPECT_EQ(nearA, 1) << "config " << c << " sector " << k;
+    }
+  }
+  EXPECT_EQ(tubes, 4);
+}
+
+TEST(VoxelDmc, SplitVerticesTakeTheTwoEdgesAtEachOutsideCorner) {
+  // Corners 0 and 3 inside on face z = 0 (an ambiguous face), corners 1 and 2 outside.
+  const std::uint8_t config = corners({0, 3, 4, 5, 6, 7});
+  ASSERT_TRUE(isAmbiguousFace(config, 4));
+  const auto edges = splitVertexEdges(config, 4);
+  for (int slot = 0; slot < 2; ++slot) {
+    const int outside = slot == 0 ? 1 : 2;
+    const unsigned pair = edges[static_cast<std::size_t>(slot)];
+    ASSERT_EQ(std::popcount(pair), 2);
+    for (int e = 0; e < 12; ++e)
+      if ((pair >> e) & 1) {
+        EXPECT_TRUE((cellFaceEdgeMask(4) >> e) & 1);
+        EXPECT_TRUE(cellEdgeCorner(e, 0) == outside || cellEdgeCorner(e, 1) == outside);
+      }
+  }
 }
 
 }  // namespace

@@ -33,7 +33,8 @@ struct ContourRun {
 
 /// Regular octree down to 1-voxel cells, then manifold DMC, then validation.
 ContourRun contour(const MetaCellSamples& samples, float iso = 0.0f, bool manifoldFix = true, bool parallel = true,
-            bool selfIntersections = false, int minDepth = 0) {
+            bool selfIntersections = false, int minDepth = 0,
+            RegularTopology topology = RegularTopology::Voxels) {
   octree::OctreeOptions treeOptions;
   treeOptions.construction = octree::OctreeConstruction::Regular;
   treeOptions.minDepth = minDepth;
@@ -42,7 +43,7 @@ ContourRun contour(const MetaCellSamples& samples, float iso = 0.0f, bool manifo
   treeOptions.parallel = parallel;
   const octree::LinearOctree tree = octree::buildOctree(samples, treeOptions);
   ContourRun run;
-  run.mesh = contourRegular(samples, tree, {.iso = iso, .manifoldFix = manifoldFix}, &run.stats);
+  run.mesh = contourRegular(samples, tree, {.iso = iso, .topology = topology, .manifoldFix = manifoldFix}, &run.stats);
   run.report = mesh::validateMesh(run.mesh, {.selfIntersections = selfIntersections});
   return run;
 }
@@ -98,7 +99,11 @@ float phaseValue(bool inside, std::mt19937& rng) {
   return inside ? -mag(rng) : mag(rng);
 }
 
-TEST(RegularContour, ExhaustivePairsOfConfigurationsAcrossEverySharedFace) {
+/// Both readings of ambiguous cells (voxel_dmc.h, dmc_table.h).
+class RegularTopologies : public ::testing::TestWithParam<RegularTopology> {};
+
+TEST_P(RegularTopologies, ExhaustivePairsOfConfigurationsAcrossEverySharedFace) {
+  const RegularTopology topology = GetParam();
   std::mt19937 rng(12345);
   std::int64_t meshes = 0, pairsWithAmbiguousFace = 0, fixesUsed = 0, brokenWithoutFix = 0, failures = 0;
   for (int axis = 0; axis < 3; ++axis) {
@@ -144,7 +149,7 @@ TEST(RegularContour, ExhaustivePairsOfConfigurationsAcrossEverySharedFace) {
             block.interior[static_cast<std::size_t>(idx)] = phaseValue(in, rng);
           }
           const MetaCellSamples samples = block.samples();
-          const ContourRun r = contour(samples, 0.0f, true, false);
+          const ContourRun r = contour(samples, 0.0f, true, false, false, 0, topology);
           ++meshes;
           fixesUsed += r.stats.manifoldFixes;
           if (!good(r)) {
@@ -153,7 +158,7 @@ TEST(RegularContour, ExhaustivePairsOfConfigurationsAcrossEverySharedFace) {
                             << describe(r);
           }
           if (ambiguous && fill >= 2) {
-            const ContourRun off = contour(samples, 0.0f, false, false);
+            const ContourRun off = contour(samples, 0.0f, false, false, false, 0, topology);
             brokenWithoutFix += !off.report.manifold;
           }
         }
@@ -168,9 +173,10 @@ TEST(RegularContour, ExhaustivePairsOfConfigurationsAcrossEverySharedFace) {
               static_cast<long long>(fixesUsed), static_cast<long long>(brokenWithoutFix));
 }
 
-TEST(RegularContour, RandomSignFieldsWithExactIsoSamplesStayClosedAndManifold) {
+TEST_P(RegularTopologies, RandomSignFieldsWithExactIsoSamplesStayClosedAndManifold) {
   // Integer samples in {-1, 0, 1} at iso 0: many samples equal the isovalue
   // (counted inside) and every configuration pattern occurs.
+  const RegularTopology topology = GetParam();
   std::mt19937 rng(7);
   std::int64_t fixes = 0, brokenWithoutFix = 0, triangles = 0;
   for (int trial = 0; trial < 40; ++trial) {
@@ -179,11 +185,11 @@ TEST(RegularContour, RandomSignFieldsWithExactIsoSamplesStayClosedAndManifold) {
       if (x < 1 || y < 1 || z < 1 || x > 15 || y > 15 || z > 15) return 1.0f;
       return float(d(rng));
     });
-    const ContourRun r = contour(samples, 0.0f);
+    const ContourRun r = contour(samples, 0.0f, true, true, false, 0, topology);
     EXPECT_TRUE(good(r)) << "trial " << trial << ": " << describe(r);
     fixes += r.stats.manifoldFixes;
     triangles += r.report.triangles;
-    const ContourRun off = contour(samples, 0.0f, false);
+    const ContourRun off = contour(samples, 0.0f, false, true, false, 0, topology);
     brokenWithoutFix += !off.report.manifold;
   }
   EXPECT_GT(fixes, 0);
@@ -191,6 +197,10 @@ TEST(RegularContour, RandomSignFieldsWithExactIsoSamplesStayClosedAndManifold) {
   std::printf("[random] triangles=%lld manifoldFixes=%lld nonManifoldWithoutFix=%d/40\n",
               static_cast<long long>(triangles), static_cast<long long>(fixes), int(brokenWithoutFix));
 }
+
+INSTANTIATE_TEST_SUITE_P(Readings, RegularTopologies,
+                         ::testing::Values(RegularTopology::Voxels, RegularTopology::Mdmc),
+                         [](const auto& info) { return info.param == RegularTopology::Voxels ? "voxels" : "mdmc"; });
 
 // --- analytic SDFs -------------------------------------------------------
 

@@ -121,29 +121,53 @@ TEST(OctreeMethodsSharpFeatures, CylinderKeepsItsRimsAcrossMetaCells) {
   }
 }
 
-TEST(OctreeMethodsRealSample, FrogSkeletonRegularNeedsTheManifoldFix) {
-  const auto path = test::dataDir() / "frog" / "frogtissue.mhd";
+mesh::Mesh contourRegular(const volume::Volume& sdf, contour::RegularTopology topology, bool manifoldFix = true) {
+  return contourWithOctree(sdf, {.method = OctreeMethod::Regular, .regularTopology = topology, .manifoldFix = manifoldFix});
+}
+
+volume::Volume frogSkeletonMask() {
   InputOptions input;
   input.rule.labels = {13};
-  const volume::Volume sdf = toContourable(loadVolume(path, input), {});
-  const mesh::MeshReport fixed = mesh::validateMesh(contour(sdf, OctreeMethod::Regular), {.selfIntersections = false});
-  EXPECT_TRUE(fixed.closed);
-  EXPECT_TRUE(fixed.manifold);
-  const mesh::MeshReport unfixed =
-      mesh::validateMesh(contour(sdf, OctreeMethod::Regular, /*manifoldFix=*/false), {.selfIntersections = false});
-  EXPECT_GT(unfixed.nonManifoldEdges + unfixed.nonManifoldVertices, 0)
-      << "the frog skeleton has 2B/3B cells sharing an ambiguous face: without Wenger's fix it is non-manifold";
+  return loadVolume(test::dataDir() / "frog" / "frogtissue.mhd", input);
+}
+
+// The real sample: the skeleton's 1-voxel bones touch along edges and at corners
+// everywhere. Regular mode's voxel reading gives the mesh the mask's (26, 6) topology,
+// chi = 2 chi(object) = -726, closed and manifold; without the split of doubled faces it
+// is non-manifold. Wenger's MDMC is closed and manifold too but reads the contacts as
+// separations (chi 354), and needs its fix as much.
+TEST(OctreeMethodsRealSample, FrogSkeletonRegularHasTheSkeletonsTopologyAndNeedsTheFix) {
+  const volume::Volume mask = frogSkeletonMask();
+  const std::int64_t solid = volume::eulerCharacteristic(mask);
+  const volume::Volume sdf = toContourable(mask, {});
+  for (const auto topology : {contour::RegularTopology::Voxels, contour::RegularTopology::Mdmc}) {
+    const bool voxels = topology == contour::RegularTopology::Voxels;
+    SCOPED_TRACE(voxels ? "voxels" : "mdmc");
+    const mesh::Mesh mesh = contourRegular(sdf, topology);
+    const mesh::MeshReport fixed = mesh::validateMesh(mesh, {.selfIntersections = false});
+    EXPECT_TRUE(fixed.closed);
+    EXPECT_TRUE(fixed.manifold);
+    EXPECT_EQ(fixed.inconsistentlyOrientedEdges, 0);
+    if (voxels) {
+      EXPECT_EQ(fixed.eulerCharacteristic, 2 * solid);
+    } else {
+      EXPECT_NE(fixed.eulerCharacteristic, 2 * solid);
+    }
+    EXPECT_LT(meanDistanceToZeroLevel(mesh, sdf), 0.2);
+    const mesh::MeshReport unfixed =
+        mesh::validateMesh(contourRegular(sdf, topology, /*manifoldFix=*/false), {.selfIntersections = false});
+    EXPECT_GT(unfixed.nonManifoldEdges + unfixed.nonManifoldVertices, 0)
+        << "the frog skeleton has doubled cells on both sides of ambiguous faces: without the fix it is non-manifold";
+  }
 }
 
 TEST(OctreeMethodsRealSample, FrogSkeletonAdaptiveIsClosedManifoldWithRegularsTopology) {
   // The skeleton is full of 1-voxel ambiguous faces, doubled faces and 1-voxel cavities
   // inside coarse cells: adaptive mode must come out as closed, manifold and of the same
-  // topology as regular mode, and free of self-intersections.
-  const auto path = test::dataDir() / "frog" / "frogtissue.mhd";
-  InputOptions input;
-  input.rule.labels = {13};
-  const volume::Volume sdf = toContourable(loadVolume(path, input), {});
-  const mesh::MeshReport regular = mesh::validateMesh(contour(sdf, OctreeMethod::Regular), {.selfIntersections = false});
+  // topology as regular mode's MDMC reading, and free of self-intersections.
+  const volume::Volume sdf = toContourable(frogSkeletonMask(), {});
+  const mesh::MeshReport regular =
+      mesh::validateMesh(contourRegular(sdf, contour::RegularTopology::Mdmc), {.selfIntersections = false});
   const mesh::MeshReport adaptive = mesh::validateMesh(contour(sdf, OctreeMethod::Adaptive));
   EXPECT_TRUE(adaptive.closed);
   EXPECT_EQ(adaptive.nonManifoldEdges, 0);
@@ -174,13 +198,56 @@ TEST(OctreeMethodsTopology, RegularMeshIsTheSixEighteenReadingPlusTheFixedPairs)
     const std::int64_t solid = volume::eulerCharacteristic(again, {}, nullptr, volume::Adjacency::Foreground6);
     Statistics stats;
     const volume::Volume sdf = toContourable(volume::ingestMask(stream, {}), {});
-    const mesh::Mesh mesh = contourWithOctree(sdf, {.method = OctreeMethod::Regular}, nullptr, &stats);
+    const mesh::Mesh mesh = contourWithOctree(
+        sdf, {.method = OctreeMethod::Regular, .regularTopology = contour::RegularTopology::Mdmc}, nullptr, &stats);
     const mesh::MeshReport report = mesh::validateMesh(mesh, {.selfIntersections = false});
     const std::int64_t fixedPairs = stats["meta_cells"]["manifold_fixes"].get<std::int64_t>() / 2;
     EXPECT_TRUE(report.closed) << seed;
     EXPECT_TRUE(report.manifold) << seed;
     EXPECT_GT(fixedPairs, 0) << seed;
     EXPECT_EQ(report.eulerCharacteristic, 2 * (solid + fixedPairs)) << seed;
+  }
+}
+
+/// Regular mode's default reading is the voxel object's: 26-connected inside, 6-connected
+/// outside, whatever the meta-cell size (seams cut through split faces and tubes), and both
+/// the split faces and the tubes are needed for it. Random voxels at several densities are
+/// full of bridges (face-diagonal contacts with the outside going round) and vertex contacts.
+TEST(OctreeMethodsTopology, RegularMeshHasTheVoxelObjectsTopology) {
+  for (unsigned seed : {1u, 2u, 3u, 6u}) {
+    std::mt19937 random(seed);
+    std::bernoulli_distribution inside(seed == 6u ? 0.55 : 0.3 + 0.05 * seed);
+    auto stream = test::VectorSliceStream::fromFunction({24, 24, 24}, [&](int x, int y, int z) {
+      const bool border = x == 0 || y == 0 || z == 0 || x == 23 || y == 23 || z == 23;
+      return !border && inside(random) ? 1.f : 0.f;
+    });
+    auto again = stream.rewound();
+    const std::int64_t solid = volume::eulerCharacteristic(again, {});
+    const volume::Volume sdf = toContourable(volume::ingestMask(stream, {}), {});
+    for (const int metaCellSize : {0, 16}) {
+      SCOPED_TRACE("seed " + std::to_string(seed) + ", meta-cell " + std::to_string(metaCellSize));
+      Statistics stats;
+      const mesh::Mesh mesh =
+          contourWithOctree(sdf, {.method = OctreeMethod::Regular, .metaCellSize = metaCellSize}, nullptr, &stats);
+      const mesh::MeshReport report = mesh::validateMesh(mesh, {.selfIntersections = false});
+      const auto& figures = stats[metaCellSize == 0 ? "octree" : "meta_cells"];
+      EXPECT_TRUE(report.closed);
+      EXPECT_EQ(report.nonManifoldEdges, 0);
+      EXPECT_EQ(report.nonManifoldVertices, 0);
+      EXPECT_EQ(report.inconsistentlyOrientedEdges, 0);
+      EXPECT_EQ(report.eulerCharacteristic, 2 * solid);
+      EXPECT_GT(figures["manifold_fixes"].get<std::int64_t>(), 0);  // split faces
+      EXPECT_GT(figures["tube_cells"].get<std::int64_t>(), 0);
+      std::printf("[voxels seed %u, meta-cell %d] solid chi %lld, mesh chi %lld, %lld triangles, split faces %lld, tubes %lld\n",
+                  seed, metaCellSize, static_cast<long long>(solid), static_cast<long long>(report.eulerCharacteristic),
+                  static_cast<long long>(report.triangles),
+                  static_cast<long long>(figures["manifold_fixes"].get<std::int64_t>()),
+                  static_cast<long long>(figures["tube_cells"].get<std::int64_t>()));
+    }
+    // Without the split the bridges' two cells share four polygons: non-manifold edges.
+    const mesh::MeshReport unsplit = mesh::validateMesh(
+        contourWithOctree(sdf, {.method = OctreeMethod::Regular, .manifoldFix = false}), {.selfIntersections = false});
+    EXPECT_GT(unsplit.nonManifoldEdges, 0) << seed;
   }
 }
 
@@ -196,7 +263,9 @@ TEST(OctreeMethodsTopology, AdaptiveMeshHasRegularsTopologyOnRandomVoxels) {
       return !border && inside(random) ? 1.f : 0.f;
     });
     const volume::Volume sdf = toContourable(volume::ingestMask(stream, {}), {});
-    const mesh::MeshReport regular = mesh::validateMesh(contour(sdf, OctreeMethod::Regular), {.selfIntersections = false});
+    const mesh::MeshReport regular = mesh::validateMesh(
+        contourWithOctree(sdf, {.method = OctreeMethod::Regular, .regularTopology = contour::RegularTopology::Mdmc}),
+        {.selfIntersections = false});
     const mesh::MeshReport adaptive = mesh::validateMesh(contour(sdf, OctreeMethod::Adaptive), {.selfIntersections = false});
     EXPECT_TRUE(adaptive.closed) << seed;
     EXPECT_EQ(adaptive.nonManifoldEdges, 0) << seed;

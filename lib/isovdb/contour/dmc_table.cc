@@ -26,16 +26,6 @@ std::array<int, 4> faceCorners(int face) noexcept {
   return out;
 }
 
-/// Edges of face f incident to corner c.
-std::uint16_t faceEdgesAtCorner(int face, int corner) noexcept {
-  std::uint16_t mask = 0;
-  const std::uint16_t faceEdges = cellFaceEdgeMask(face);
-  for (int e = 0; e < 12; ++e)
-    if (((faceEdges >> e) & 1) && (cellEdgeCorner(e, 0) == corner || cellEdgeCorner(e, 1) == corner))
-      mask = static_cast<std::uint16_t>(mask | (1u << e));
-  return mask;
-}
-
 int findRoot(std::array<int, 12>& parent, int e) noexcept {
   while (parent[static_cast<std::size_t>(e)] != e) e = parent[static_cast<std::size_t>(e)];
   return e;
@@ -107,7 +97,7 @@ DmcEntry buildDmcEntry(std::uint8_t config, std::uint8_t flippedFaces) noexcept 
     // Ambiguous face: pair the edges around each corner of the separated phase.
     const bool separateInside = ((flippedFaces >> f) & 1) == 0;
     for (int corner : faceCorners(f))
-      if (inside(config, corner) == separateInside) unitePair(parent, faceEdgesAtCorner(f, corner));
+      if (inside(config, corner) == separateInside) unitePair(parent, octree::cellFaceEdgesAtCorner(f, corner));
   }
 
   // Groups, ordered by their lowest edge.

@@ -5,6 +5,8 @@
 
 #include "isovdb/octree/criteria.h"
 
+#include <bit>
+
 namespace isovdb::contour {
 
 namespace {
@@ -21,34 +23,54 @@ int cellConfigAt(const octree::MetaCellSamples& samples, const std::array<int, 3
 
 }  // namespace
 
+namespace {
+
+/// The fix of doubled faces. MDMC (Wenger): a doubled leaf takes the alternative grouping
+/// when the cell across its doubled face is doubled on it too. Voxels: such a face is split,
+/// recorded by the leaf on its min side.
+void fixDoubledFaces(const octree::MetaCellSamples& samples, const octree::LinearOctree& tree, float iso,
+                     LeafGroups& groups, std::vector<char>& beyondApron) {
+  const auto entryOf = [&](int config) -> const DmcEntry& {
+    const auto c = static_cast<std::uint8_t>(config);
+    return groups.voxels ? voxelDmcEntry(c) : dmcEntry(c);
+  };
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tree.leafCount(), kGrain),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      const int face = entryOf(groups.configs[i]).doubleFace;
+      if (face < 0 || (groups.voxels && (face & 1) == 0)) continue;
+      const octree::OctreeLeaf& leaf = tree.leaf(i);
+      std::array<int, 3> neighbour = leaf.origin;
+      neighbour[static_cast<std::size_t>(face >> 1)] += (face & 1) ? leaf.size : -leaf.size;
+      const int config = cellConfigAt(samples, neighbour, leaf.size, iso);
+      if (config < 0) {
+        beyondApron[i] = 1;
+        continue;
+      }
+      if (entryOf(config).doubleFace != (face ^ 1)) continue;
+      if (groups.voxels) groups.splitFaces[i] = static_cast<std::uint8_t>(1u << (face >> 1));
+      else groups.alternative[i] = 1;
+    }
+  });
+}
+
+}  // namespace
+
 LeafGroups groupLeaves(const octree::MetaCellSamples& samples, const octree::LinearOctree& tree,
-                       std::vector<std::uint8_t> configs, float iso, bool manifoldFix) {
+                       std::vector<std::uint8_t> configs, float iso, bool manifoldFix, RegularTopology topology) {
   const std::size_t n = tree.leafCount();
   LeafGroups groups;
+  groups.voxels = topology == RegularTopology::Voxels;
   groups.configs = std::move(configs);
   groups.alternative.assign(n, 0);
+  if (groups.voxels) groups.splitFaces.assign(n, 0);
   std::vector<char> beyondApron(n, 0);
-  if (manifoldFix) {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kGrain), [&](const tbb::blocked_range<std::size_t>& r) {
-      for (std::size_t i = r.begin(); i != r.end(); ++i) {
-        const int face = dmcEntry(groups.configs[i]).doubleFace;
-        if (face < 0) continue;
-        const octree::OctreeLeaf& leaf = tree.leaf(i);
-        std::array<int, 3> neighbour = leaf.origin;
-        neighbour[static_cast<std::size_t>(face >> 1)] += (face & 1) ? leaf.size : -leaf.size;
-        const int config = cellConfigAt(samples, neighbour, leaf.size, iso);
-        if (config < 0) {
-          beyondApron[i] = 1;
-          continue;
-        }
-        groups.alternative[i] = dmcEntry(static_cast<std::uint8_t>(config)).doubleFace == (face ^ 1);
-      }
-    });
-  }
+  if (manifoldFix) fixDoubledFaces(samples, tree, iso, groups, beyondApron);
   groups.firstVertex.assign(n + 1, 0);
   for (std::size_t i = 0; i < n; ++i) {
-    groups.firstVertex[i + 1] = groups.firstVertex[i] + groups.entry(i).vertexCount;
-    groups.manifoldFixes += groups.alternative[i];
+    const int splits = groups.voxels ? 2 * std::popcount(static_cast<unsigned>(groups.splitFaces[i])) : 0;
+    groups.firstVertex[i + 1] = groups.firstVertex[i] + static_cast<std::uint32_t>(groups.cellVertexCount(i) + splits);
+    groups.manifoldFixes += groups.alternative[i] + splits / 2;
     groups.fixesBeyondApron += beyondApron[i];
   }
   return groups;
@@ -62,7 +84,8 @@ std::vector<mesh::Vec3f> placeGroupVertices(const octree::MetaCellSamples& sampl
     for (std::size_t i = r.begin(); i != r.end(); ++i) {
       const DmcEntry& entry = groups.entry(i);
       const octree::OctreeLeaf& leaf = tree.leaf(i);
-      if (entry.vertexCount == 1 && !options.massPointOnly &&
+      const bool hasSplits = groups.voxels && groups.splitFaces[i] != 0;
+      if (entry.vertexCount == 1 && !hasSplits && !options.massPointOnly &&
           leaf.vertexTruncation == options.singularValueThreshold &&
           leaf.vertexSharpFeatures == options.sharpFeatures) {
         // The construction's geometric criterion solved this QEF already.
@@ -71,16 +94,33 @@ std::vector<mesh::Vec3f> placeGroupVertices(const octree::MetaCellSamples& sampl
       }
       // Several sheets in one cell: each vertex at its group's mass point, which stays
       // among its own crossings (a QEF minimiser may wander towards the other sheet).
+      // Tube sectors and split faces are pieces of a sheet: their mass points too.
       DualVertexOptions groupOptions = options;
       groupOptions.massPointOnly = entry.vertexCount > 1;
-      for (int g = 0; g < entry.vertexCount; ++g) {
+      const std::uint8_t config = groups.configs[i];
+      const bool tube = groups.voxels && isTubeConfig(config);
+      std::array<std::uint16_t, 10> vertexEdges{};
+      int count = 0;
+      if (tube) {
+        for (const std::uint16_t edges : tubeSectors(config).edges) vertexEdges[static_cast<std::size_t>(count++)] = edges;
+      } else {
+        for (int g = 0; g < entry.vertexCount; ++g) vertexEdges[static_cast<std::size_t>(count++)] = entry.groups[static_cast<std::size_t>(g)];
+      }
+      const int groupVertices = count;
+      if (groups.voxels)
+        for (int axis = 0; axis < 3; ++axis)
+          if ((groups.splitFaces[i] >> axis) & 1)
+            for (const std::uint16_t edges : splitVertexEdges(config, 2 * axis + 1)) vertexEdges[static_cast<std::size_t>(count++)] = edges;
+      for (int k = 0; k < count; ++k) {
+        DualVertexOptions vertexOptions = groupOptions;
+        vertexOptions.massPointOnly = groupOptions.massPointOnly || tube || k >= groupVertices;
         const DualVertex v = computeDualVertex(samples, leaf.origin, leaf.size,
-                                               entry.groups[static_cast<std::size_t>(g)], groupOptions);
+                                               vertexEdges[static_cast<std::size_t>(k)], vertexOptions);
         mesh::Vec3f p = v.position;
         if (!v.valid())  // cannot happen for bipolar edges; keep the cell centre rather than garbage
           for (std::size_t a = 0; a < 3; ++a)
             p[a] = static_cast<float>(samples.origin[a] + leaf.origin[a]) + 0.5f * static_cast<float>(leaf.size);
-        positions[groups.firstVertex[i] + static_cast<std::size_t>(g)] = p;
+        positions[groups.firstVertex[i] + static_cast<std::size_t>(k)] = p;
       }
     }
   });

@@ -14,13 +14,21 @@
 /// size across that face does too. That cell's configuration is read from the
 /// samples (the apron included), so a leaf's grouping is final with its
 /// meta-cell, also next to the meta-cell boundary.
+///
+/// Voxel topology (regular mode's default, voxel_dmc.h): the joined-face
+/// table, three sector vertices for a tube cell, and instead of Wenger's fix
+/// two split vertices on a doubled face whose neighbour is doubled too, owned
+/// by the cell on the face's min side. A leaf's vertices are numbered: its
+/// groups (or sectors), then its split vertices by axis of the split max face.
 #pragma once
 
+#include <bit>
 #include <cstdint>
 #include <vector>
 
 #include "isovdb/contour/dmc_table.h"
 #include "isovdb/contour/dual_vertex.h"
+#include "isovdb/contour/voxel_dmc.h"
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/octree/linear_octree.h"
 #include "isovdb/octree/meta_cell_samples.h"
@@ -29,25 +37,40 @@ namespace isovdb::contour {
 
 /// Per leaf of one octree: configuration, grouping and vertex numbering.
 struct LeafGroups {
+  bool voxels = false;                      ///< RegularTopology::Voxels
   std::vector<std::uint8_t> configs;        ///< corner signs (bit c = corner c inside)
-  std::vector<char> alternative;            ///< Wenger's alternative grouping is used
+  std::vector<char> alternative;            ///< Wenger's alternative grouping is used (Mdmc)
+  std::vector<std::uint8_t> splitFaces;     ///< voxels: bit a = the max face along axis a is split
   std::vector<std::uint32_t> firstVertex;   ///< leafCount + 1 prefix sums of the vertex counts
-  std::int64_t manifoldFixes = 0;           ///< leaves with the alternative grouping
+  std::int64_t manifoldFixes = 0;           ///< leaves with the alternative grouping (voxels: split faces)
   std::int64_t fixesBeyondApron = 0;        ///< doubled faces whose neighbour lies beyond the apron (left unfixed)
 
-  const DmcEntry& entry(std::size_t leaf) const noexcept { return dmcEntry(configs[leaf], alternative[leaf] != 0); }
+  const DmcEntry& entry(std::size_t leaf) const noexcept {
+    return voxels ? voxelDmcEntry(configs[leaf]) : dmcEntry(configs[leaf], alternative[leaf] != 0);
+  }
+  /// Vertices of the leaf's groups (a tube's sectors), without its split vertices.
+  int cellVertexCount(std::size_t leaf) const noexcept {
+    return voxels ? voxelCellVertexCount(configs[leaf]) : entry(leaf).vertexCount;
+  }
+  /// Id of the leaf's split vertex `slot` on its max face along `axis` (that face must be split).
+  std::uint32_t splitVertex(std::size_t leaf, int axis, int slot) const noexcept {
+    const unsigned below = splitFaces[leaf] & ((1u << axis) - 1u);
+    return firstVertex[leaf] + static_cast<std::uint32_t>(cellVertexCount(leaf) + 2 * std::popcount(below) + slot);
+  }
   std::uint32_t vertexCount(std::size_t leaf) const noexcept { return firstVertex[leaf + 1] - firstVertex[leaf]; }
   std::uint32_t totalVertices() const noexcept { return firstVertex.back(); }
 };
 
 /// @brief Groups the leaves with configurations `configs` (one per leaf of `tree`).
-/// @param manifoldFix apply Wenger's fix (false only in tests).
+/// @param manifoldFix apply Wenger's fix, or split doubled faces with `topology` Voxels (false only in tests).
 LeafGroups groupLeaves(const octree::MetaCellSamples& samples, const octree::LinearOctree& tree,
-                       std::vector<std::uint8_t> configs, float iso, bool manifoldFix);
+                       std::vector<std::uint8_t> configs, float iso, bool manifoldFix,
+                       RegularTopology topology = RegularTopology::Mdmc);
 
 /// @brief The dual vertex of every group (QEF of its edges; the mass point of
 ///        its crossings in a cell with several groups; the cell centre if it has
-///        no usable crossing), numbered by LeafGroups::firstVertex.
+///        no usable crossing), of every tube sector and split face (the mass
+///        point of their crossings), numbered by LeafGroups::firstVertex.
 ///        Parallel with TBB; deterministic. Global voxel index coordinates.
 std::vector<mesh::Vec3f> placeGroupVertices(const octree::MetaCellSamples& samples, const octree::LinearOctree& tree,
                                             const LeafGroups& groups, const DualVertexOptions& options);

@@ -13,6 +13,7 @@
 #include "isovdb/contour/dmc_table.h"
 #include "isovdb/contour/dual_vertex.h"
 #include "isovdb/contour/leaf_groups.h"
+#include "isovdb/contour/voxel_dmc.h"
 #include "isovdb/errors.h"
 #include "isovdb/octree/criteria.h"
 #include "isovdb/octree/morton.h"
@@ -42,11 +43,25 @@ double triangleQuality(const mesh::Vec3f& a, const mesh::Vec3f& b, const mesh::V
   return sum > 0.0 ? 2.0 * std::sqrt(3.0) * area2 / sum : 0.0;
 }
 
-/// Triangles of each leaf's owned edges (up to 3 quads).
-struct LeafTriangles {
-  std::array<mesh::Triangle, 6> triangles{};
-  std::uint8_t count = 0;
-};
+/// Leaf i's vertices as a cell around a bipolar edge (both topologies; split vertices in voxel mode).
+VoxelEdgeCell voxelEdgeCell(const LeafGroups& groups, const std::vector<mesh::Vec3f>& positions, std::size_t i) {
+  VoxelEdgeCell cell;
+  cell.config = groups.configs[i];
+  cell.vertices.fill(kNoVertex);
+  cell.splitVertices.fill(kNoVertex);
+  const int count = groups.cellVertexCount(i);
+  for (int g = 0; g < count; ++g) {
+    cell.vertices[static_cast<std::size_t>(g)] = groups.firstVertex[i] + static_cast<std::uint32_t>(g);
+    cell.positions[static_cast<std::size_t>(g)] = positions[cell.vertices[static_cast<std::size_t>(g)]];
+  }
+  if (!groups.voxels) return cell;
+  cell.splitFaces = groups.splitFaces[i];
+  for (int axis = 0; axis < 3; ++axis)
+    if ((cell.splitFaces >> axis) & 1)
+      for (int slot = 0; slot < 2; ++slot)
+        cell.splitVertices[static_cast<std::size_t>(splitVertexSlot(axis, slot))] = groups.splitVertex(i, axis, slot);
+  return cell;
+}
 
 }  // namespace
 
@@ -93,7 +108,7 @@ MetaCellMesh contourRegularMetaCell(const MetaCellSamples& samples, const Linear
 
   // 2. Grouping with Wenger's manifold fix, and 3. one vertex per group (leaves in stored
   // order, groups in table order).
-  const LeafGroups groups = groupLeaves(samples, regularTree, std::move(configs), options.iso, options.manifoldFix);
+  const LeafGroups groups = groupLeaves(samples, regularTree, std::move(configs), options.iso, options.manifoldFix, options.topology);
   const std::vector<std::uint8_t>& config = groups.configs;
   const std::vector<char>& alternative = groups.alternative;
   const std::vector<std::uint32_t>& vertexBase = groups.firstVertex;
@@ -105,50 +120,61 @@ MetaCellMesh contourRegularMetaCell(const MetaCellSamples& samples, const Linear
       samples, regularTree, groups,
       DualVertexOptions{.iso = options.iso, .singularValueThreshold = options.singularValueThreshold});
 
-  // 4. Quads: each interior bipolar edge by its owner leaf (the edge is the owner's local edge 4 * axis,
-  // the owner in quadrant 3); edges on the meta-cell boundary are left to stitching.
-  std::vector<LeafTriangles> leafTriangles(n);
+  // 4. Quads (voxel topology: polygons): each interior bipolar edge by its owner leaf (the edge is
+  // the owner's local edge 4 * axis, the owner in quadrant 3); edges on the meta-cell boundary are
+  // left to stitching. Chunks of leaves in order keep the output independent of the threads.
+  const std::size_t chunks = (n + kGrain - 1) / kGrain;
+  std::vector<std::vector<mesh::Triangle>> chunkTriangles(chunks);
   std::vector<std::int32_t> leafBoundaryEdges(n, 0);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, kGrain), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t i = r.begin(); i != r.end(); ++i) {
-      const std::uint16_t bipolar = octree::bipolarEdgeMask(config[i]);
-      if (bipolar == 0) continue;
-      const OctreeLeaf& leaf = leaves[i];
-      LeafTriangles& lt = leafTriangles[i];
-      for (int axis = 0; axis < 3; ++axis) {
-        if (((bipolar >> (4 * axis)) & 1) == 0) continue;
-        const auto around = regularTree.leavesAroundEdge(leaf.origin, axis);
-        assert(around[3] == static_cast<std::int64_t>(i));
-        if (std::find(around.begin(), around.end(), LinearOctree::kNone) != around.end()) {
-          ++leafBoundaryEdges[i];
-          continue;
-        }
-        std::array<std::uint32_t, 4> v{};
-        std::array<mesh::Vec3f, 4> p{};
-        bool ok = true;
-        for (int q = 0; q < 4; ++q) {
-          const auto j = static_cast<std::size_t>(around[static_cast<std::size_t>(q)]);
-          const int g = dmcVertexOfEdge(config[j], alternative[j] != 0, axis, q);
-          if (g < 0 || leaves[j].size != leaf.size) {
-            ok = false;  // not a regular octree around this edge (violates the precondition)
-            break;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t c = r.begin(); c != r.end(); ++c) {
+      std::vector<mesh::Triangle>& triangles = chunkTriangles[c];
+      for (std::size_t i = c * kGrain; i < std::min(n, (c + 1) * kGrain); ++i) {
+        const std::uint16_t bipolar = octree::bipolarEdgeMask(config[i]);
+        if (bipolar == 0) continue;
+        const OctreeLeaf& leaf = leaves[i];
+        for (int axis = 0; axis < 3; ++axis) {
+          if (((bipolar >> (4 * axis)) & 1) == 0) continue;
+          const auto around = regularTree.leavesAroundEdge(leaf.origin, axis);
+          assert(around[3] == static_cast<std::int64_t>(i));
+          if (std::find(around.begin(), around.end(), LinearOctree::kNone) != around.end()) {
+            ++leafBoundaryEdges[i];
+            continue;
           }
-          v[static_cast<std::size_t>(q)] = vertexBase[j] + static_cast<std::uint32_t>(g);
-          p[static_cast<std::size_t>(q)] = out.positions[v[static_cast<std::size_t>(q)]];
+          bool regular = true;  // the four leaves have the same size (the precondition)
+          for (const std::int64_t j : around) regular = regular && leaves[static_cast<std::size_t>(j)].size == leaf.size;
+          assert(regular);
+          if (!regular) continue;
+          if (groups.voxels) {
+            std::array<VoxelEdgeCell, 4> cells;
+            for (int q = 0; q < 4; ++q)
+              cells[static_cast<std::size_t>(q)] = voxelEdgeCell(groups, out.positions, static_cast<std::size_t>(around[static_cast<std::size_t>(q)]));
+            voxelEdgeTriangles(cells, axis, triangles);
+            continue;
+          }
+          std::array<std::uint32_t, 4> v{};
+          std::array<mesh::Vec3f, 4> p{};
+          for (int q = 0; q < 4; ++q) {
+            const auto j = static_cast<std::size_t>(around[static_cast<std::size_t>(q)]);
+            const int g = dmcVertexOfEdge(config[j], alternative[j] != 0, axis, q);
+            assert(g >= 0);
+            v[static_cast<std::size_t>(q)] = vertexBase[j] + static_cast<std::uint32_t>(g);
+            p[static_cast<std::size_t>(q)] = out.positions[v[static_cast<std::size_t>(q)]];
+          }
+          const auto tris = regularEdgeQuad(v, p, axis, (config[i] & 1) != 0);
+          triangles.insert(triangles.end(), tris.begin(), tris.end());
         }
-        assert(ok);
-        if (!ok) continue;
-        const auto tris = regularEdgeQuad(v, p, axis, (config[i] & 1) != 0);
-        lt.triangles[lt.count++] = tris[0];
-        lt.triangles[lt.count++] = tris[1];
       }
     }
   });
 
   std::size_t triangleCount = 0;
-  for (const LeafTriangles& lt : leafTriangles) triangleCount += lt.count;
+  for (const auto& t : chunkTriangles) triangleCount += t.size();
   out.triangles.reserve(triangleCount);
-  for (const LeafTriangles& lt : leafTriangles) out.triangles.insert(out.triangles.end(), lt.triangles.begin(), lt.triangles.begin() + lt.count);
+  for (auto& t : chunkTriangles) {
+    out.triangles.insert(out.triangles.end(), t.begin(), t.end());
+    std::vector<mesh::Triangle>().swap(t);
+  }
 
   // 5. Seam: leaves with dual vertices on the meta-cell boundary, in key (Z) order.
   for (std::size_t i = 0; i < n; ++i) {
@@ -161,10 +187,11 @@ MetaCellMesh contourRegularMetaCell(const MetaCellSamples& samples, const Linear
     cell.size = leaf.size;
     cell.cornerSigns = config[i];
     cell.alternative = alternative[i] != 0;
-    for (std::size_t g = 0; g < entry.vertexCount; ++g) {
-      cell.vertices[g] = vertexBase[i] + static_cast<std::uint32_t>(g);
-      cell.positions[g] = out.positions[cell.vertices[g]];
-    }
+    const VoxelEdgeCell vertices = voxelEdgeCell(groups, out.positions, i);
+    cell.vertices = vertices.vertices;
+    cell.positions = vertices.positions;
+    cell.splitFaces = vertices.splitFaces;
+    cell.splitVertices = vertices.splitVertices;
     result.seam.cells.push_back(cell);
   }
 
@@ -178,6 +205,8 @@ MetaCellMesh contourRegularMetaCell(const MetaCellSamples& samples, const Linear
     s.fixesBeyondApron = groups.fixesBeyondApron;
     s.vertices = static_cast<std::int64_t>(vertexCount);
     s.quads = static_cast<std::int64_t>(triangleCount / 2);
+    if (groups.voxels)
+      for (std::size_t i = 0; i < n; ++i) s.tubeCells += isTubeConfig(config[i]) ? 1 : 0;
     s.seamCells = static_cast<std::int64_t>(result.seam.cells.size());
     *stats = s;
   }

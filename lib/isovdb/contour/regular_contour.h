@@ -35,6 +35,7 @@
 #include <cstdint>
 
 #include "isovdb/contour/seam_cell.h"
+#include "isovdb/contour/voxel_dmc.h"
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/octree/linear_octree.h"
 #include "isovdb/octree/meta_cell_samples.h"
@@ -44,7 +45,10 @@ namespace isovdb::contour {
 /// Options of contourRegular.
 struct RegularContourOptions {
   float iso = 0.0f;                     ///< isovalue; inside iff value <= iso. Must be the one the octree was built with
-  bool manifoldFix = true;              ///< Wenger's MDMC correction; false only in tests (then the output can be non-manifold)
+  /// Reading of ambiguous cells: the voxel object's (26, 6) topology (voxel_dmc.h) or Wenger's MDMC.
+  RegularTopology topology = RegularTopology::Voxels;
+  bool manifoldFix = true;              ///< Wenger's MDMC correction (voxels: split doubled faces); false only in
+                                        ///< tests (then the output can be non-manifold)
   float singularValueThreshold = 0.1f;  ///< QEF truncation, relative to the largest singular value (see QefOptions);
                                         ///< higher = smoother vertices, lower = sharper but less stable
 };
@@ -54,7 +58,8 @@ struct RegularContourStats {
   std::int64_t cells = 0;          ///< surface leaves that received dual vertices
   std::int64_t vertices = 0;       ///< dual vertices (= mesh positions)
   std::int64_t quads = 0;          ///< interior bipolar edges contoured (two triangles each)
-  std::int64_t manifoldFixes = 0;  ///< cells that used Wenger's alternative grouping
+  std::int64_t manifoldFixes = 0;  ///< cells that used Wenger's alternative grouping (voxels: split faces)
+  std::int64_t tubeCells = 0;      ///< voxels: cells joining two body-diagonal inside corners by a tube
   std::int64_t seamCells = 0;      ///< leaves kept for stitching (touch the boundary, have dual vertices)
   std::int64_t boundaryEdges = 0;  ///< bipolar edges left to stitching (on the meta-cell boundary)
   std::int64_t fixesBeyondApron = 0;  ///< doubled faces on the boundary whose neighbour lies beyond the

@@ -49,6 +49,10 @@ struct SeamCell {
   /// Positions of the (up to 4) dual vertices: regular mode chooses quad
   /// diagonals with them, adaptive mode's envelopes use them (strictly inside the cell).
   std::array<mesh::Vec3f, 4> positions{};
+  /// Regular mode, voxel topology (voxel_dmc.h): bit a = the cell's max face along
+  /// axis a is split, and the ids of those faces' split vertices (by splitVertexSlot).
+  std::uint8_t splitFaces = 0;
+  std::array<std::uint32_t, 6> splitVertices{kNoVertex, kNoVertex, kNoVertex, kNoVertex, kNoVertex, kNoVertex};
   /// Adaptive: crossing of each bipolar cell edge as a fraction of the edge (NaN for the others),
   /// for the edge points of Ju–Udeshi fans.
   std::array<float, 12> edgeCrossing{};

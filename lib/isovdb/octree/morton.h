@@ -178,6 +178,16 @@ constexpr std::uint16_t cellFaceEdgeMask(int face) noexcept {
   return mask;
 }
 
+/// @brief Bit mask of the (two) edges of face f that end at `corner` (a corner of f).
+constexpr std::uint16_t cellFaceEdgesAtCorner(int face, int corner) noexcept {
+  std::uint16_t mask = 0;
+  const std::uint16_t onFace = cellFaceEdgeMask(face);
+  for (int e = 0; e < 12; ++e)
+    if (((onFace >> e) & 1) && (cellEdgeCorner(e, 0) == corner || cellEdgeCorner(e, 1) == corner))
+      mask = static_cast<std::uint16_t>(mask | (1u << e));
+  return mask;
+}
+
 /// @brief Edges whose end corners have different inside/outside signs
 ///        (bit e set), from an 8-bit corner sign configuration (bit c = corner c inside).
 constexpr std::uint16_t bipolarEdgeMask(std::uint8_t cornerSigns) noexcept {

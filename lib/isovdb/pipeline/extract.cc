@@ -22,6 +22,18 @@ std::optional<ContourMethod> parseContourMethod(std::string_view name) {
   return std::nullopt;
 }
 
+std::optional<contour::RegularTopology> parseRegularTopology(std::string_view name) {
+  if (name == "voxels") return contour::RegularTopology::Voxels;
+  if (name == "mdmc") return contour::RegularTopology::Mdmc;
+  return std::nullopt;
+}
+
+contour::RegularTopology regularTopologyFor(const std::optional<contour::RegularTopology>& chosen,
+                                            volume::VolumeKind kind) {
+  if (chosen) return *chosen;
+  return kind == volume::VolumeKind::Mask ? contour::RegularTopology::Voxels : contour::RegularTopology::Mdmc;
+}
+
 std::string_view contourMethodName(ContourMethod method) {
   switch (method) {
     case ContourMethod::Vdb: return "vdb";
@@ -101,6 +113,7 @@ void extractInto(const volume::Volume& volume, const ExtractOptions& options, me
     OctreeContourOptions octree = options.octree;
     octree.method = options.method == ContourMethod::Regular ? OctreeMethod::Regular : OctreeMethod::Adaptive;
     octree.iso = static_cast<float>(options.iso);
+    octree.regularTopology = regularTopologyFor(options.regularTopology, volume.kind());
     contourWithOctree(field, octree, capped, interrupter, stats);
   }
   std::int64_t dropped = 0;

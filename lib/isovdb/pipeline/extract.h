@@ -28,6 +28,13 @@ enum class ContourMethod {
 std::optional<ContourMethod> parseContourMethod(std::string_view name);
 std::string_view contourMethodName(ContourMethod method);
 
+/// Regular mode's reading of ambiguous cells by name: "voxels" or "mdmc".
+std::optional<contour::RegularTopology> parseRegularTopology(std::string_view name);
+
+/// The reading ExtractOptions::regularTopology gives for an input of `kind`.
+contour::RegularTopology regularTopologyFor(const std::optional<contour::RegularTopology>& chosen,
+                                            volume::VolumeKind kind);
+
 struct ExtractOptions {
   ContourMethod method = ContourMethod::Vdb;
   /// Isovalue: in voxels on a distance field (0 = the mask boundary, >0 grows the
@@ -39,6 +46,11 @@ struct ExtractOptions {
   volume::DistanceFieldOptions distance;
   /// `regular` and `adaptive` methods (iso and method are taken from above).
   OctreeContourOptions octree;
+  /// `regular` method: reading of ambiguous cells; unset = Voxels when the input is a
+  /// binary mask (the mesh then has the mask's topology), Mdmc on fields (distance
+  /// fields, scalars, reconstructions), where no voxel object defines one. Overrides
+  /// octree.regularTopology.
+  std::optional<contour::RegularTopology> regularTopology;
   /// Worker threads for the whole job (TBB); 0 = every core. The output does not depend on it.
   int threads = 0;
   /// Surfaces reaching the sampled data's boundary: capped there (closed mesh) or

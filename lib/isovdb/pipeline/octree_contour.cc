@@ -48,7 +48,7 @@ octree::OctreeOptions treeOptionsFor(const OctreeContourOptions& options, int si
 struct MetaCellTotals {
   double readSeconds = 0, octreeSeconds = 0, contourSeconds = 0;
   std::int64_t leaves = 0, complexCells = 0, unresolvedComplexLeaves = 0, geometricSplits = 0;
-  std::int64_t manifoldFixes = 0, fixesBeyondApron = 0, boundaryEdges = 0, seamCells = 0;
+  std::int64_t manifoldFixes = 0, tubeCells = 0, fixesBeyondApron = 0, boundaryEdges = 0, seamCells = 0;
   std::int64_t minimalEdges = 0, fannedEdges = 0, trianglesAddedByFans = 0;
   std::int64_t multiSheetSplits = 0, hiddenComponentSplits = 0, multiVertexCells = 0;
 
@@ -61,6 +61,7 @@ struct MetaCellTotals {
     unresolvedComplexLeaves += o.unresolvedComplexLeaves;
     geometricSplits += o.geometricSplits;
     manifoldFixes += o.manifoldFixes;
+    tubeCells += o.tubeCells;
     fixesBeyondApron += o.fixesBeyondApron;
     boundaryEdges += o.boundaryEdges;
     seamCells += o.seamCells;
@@ -95,7 +96,9 @@ contour::MetaCellMesh contourBlock(const octree::MetaCellSamples& samples, const
   contour::MetaCellMesh result;
   if (options.method == OctreeMethod::Regular) {
     contour::RegularContourStats s;
-    result = contour::contourRegularMetaCell(samples, tree, {.iso = iso, .manifoldFix = options.manifoldFix}, &s);
+    result = contour::contourRegularMetaCell(
+        samples, tree, {.iso = iso, .topology = options.regularTopology, .manifoldFix = options.manifoldFix}, &s);
+    totals.tubeCells += s.tubeCells;
     totals.manifoldFixes += s.manifoldFixes;
     totals.fixesBeyondApron += s.fixesBeyondApron;
     totals.boundaryEdges += s.boundaryEdges;
@@ -134,7 +137,9 @@ void recordTotals(const MetaCellTotals& totals, const OctreeContourOptions& opti
   section["edges_left_to_stitching"] = totals.boundaryEdges;
   section["manifold_fixes"] = totals.manifoldFixes;
   if (options.method == OctreeMethod::Regular) {
+    section["topology"] = options.regularTopology == contour::RegularTopology::Voxels ? "voxels" : "mdmc";
     section["manifold_fixes_beyond_apron"] = totals.fixesBeyondApron;
+    if (options.regularTopology == contour::RegularTopology::Voxels) section["tube_cells"] = totals.tubeCells;
   } else {
     section["geometric_splits"] = totals.geometricSplits;
     section["multi_sheet_splits"] = totals.multiSheetSplits;
@@ -281,7 +286,8 @@ void contourMetaCells(const volume::Volume& field, const OctreeContourOptions& o
                         {.method = options.method == OctreeMethod::Regular ? stitch::StitchMethod::Regular
                                                                            : stitch::StitchMethod::Adaptive,
                          .metaCellSize = s,
-                         .intersectionFree = options.intersectionFree},
+                         .intersectionFree = options.intersectionFree,
+                         .regularTopology = options.regularTopology},
                         static_cast<std::uint32_t>(sink.vertexCount()), tail, &stitchStats, interrupter);
     sink.addVertices(tail.positions);
     sink.addTriangles(tail.triangles);

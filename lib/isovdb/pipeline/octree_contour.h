@@ -16,6 +16,7 @@
 /// whole band, no seams (a dense block of the band's size; for comparison).
 #pragma once
 
+#include "isovdb/contour/voxel_dmc.h"
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/mesh/mesh_sink.h"
 #include "isovdb/octree/build.h"
@@ -43,7 +44,12 @@ struct OctreeContourOptions {
   float qefTolerance = 0.25f;  ///< adaptive: split leaves whose QEF residual (RMS voxels) exceeds it; <0 off.
                                ///< 0.25 gives 5.5x fewer triangles than regular at 0.12 voxel mean error
                                ///< (salt body, 64^3); 0.5: 10x fewer, 0.19 voxel
-  bool manifoldFix = true;  ///< Wenger's fix, both methods (tests switch it off to show it matters)
+  /// Regular: how ambiguous cells are read. Voxels (default) keeps the voxel object's topology
+  /// (26-connected inside, 6-connected outside: chi(mesh) = 2 chi(object) on masks); Mdmc is
+  /// Wenger's Manifold DMC (inside corners of ambiguous faces separated; adaptive mode's reading).
+  contour::RegularTopology regularTopology = contour::RegularTopology::Voxels;
+  bool manifoldFix = true;  ///< Wenger's fix, both methods (regular voxels: split doubled faces); tests
+                            ///< switch it off to show it matters
   bool intersectionFree = true;  ///< adaptive: Ju–Udeshi fans (false: plain DC, for comparison)
   bool sharpFeatures = false;    ///< adaptive, exact distance fields: keep sharp edges and corners (crossings
                                  ///< near a crease from their own face, leaves refined until their vertex is

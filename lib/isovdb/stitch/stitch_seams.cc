@@ -6,6 +6,7 @@
 #include "isovdb/contour/adaptive_edges.h"
 #include "isovdb/contour/dmc_table.h"
 #include "isovdb/contour/regular_contour.h"
+#include "isovdb/contour/voxel_dmc.h"
 #include "isovdb/octree/morton.h"
 
 namespace isovdb::stitch {
@@ -15,8 +16,20 @@ namespace {
 using contour::SeamCell;
 using octree::LinearOctree;
 
-/// Regular mode: the quad of every bipolar edge the seam owns, by its owner (the leaf in quadrant 3).
-void stitchRegular(const Seam& seam, const EdgeOctree& edgeTree, int s, mesh::Mesh& out, StitchStats& stats) {
+/// A kept cell as voxel_dmc.h reads it.
+contour::VoxelEdgeCell voxelEdgeCell(const SeamCell& cell) {
+  contour::VoxelEdgeCell out;
+  out.config = cell.cornerSigns;
+  out.splitFaces = cell.splitFaces;
+  out.vertices = cell.vertices;
+  out.positions = cell.positions;
+  out.splitVertices = cell.splitVertices;
+  return out;
+}
+
+/// Regular mode: the quad (voxel topology: polygon) of every bipolar edge the seam owns, by its owner (the leaf in quadrant 3).
+void stitchRegular(const Seam& seam, const EdgeOctree& edgeTree, int s, bool voxels, mesh::Mesh& out,
+                   StitchStats& stats) {
   const LinearOctree& tree = edgeTree.tree;
   for (std::size_t i = 0; i < tree.leafCount(); ++i) {
     const octree::OctreeLeaf& leaf = tree.leaf(i);
@@ -24,6 +37,22 @@ void stitchRegular(const Seam& seam, const EdgeOctree& edgeTree, int s, mesh::Me
     for (int axis = 0; axis < 3; ++axis) {
       if (((bipolar >> (4 * axis)) & 1) == 0 || !seam.ownsEdge(leaf.origin, axis, s)) continue;
       const auto around = tree.leavesAroundEdge(leaf.origin, axis);
+      if (voxels) {
+        std::array<contour::VoxelEdgeCell, 4> cells;
+        bool complete = true;
+        for (int q = 0; q < 4 && complete; ++q) {
+          const std::int64_t j = around[static_cast<std::size_t>(q)];
+          complete = j != LinearOctree::kNone && edgeTree.cells[static_cast<std::size_t>(j)]->size == leaf.size;
+          if (complete) cells[static_cast<std::size_t>(q)] = voxelEdgeCell(*edgeTree.cells[static_cast<std::size_t>(j)]);
+        }
+        if (!complete) {
+          ++stats.missingCells;
+          continue;
+        }
+        contour::voxelEdgeTriangles(cells, axis, out.triangles);
+        ++stats.edges;
+        continue;
+      }
       std::array<std::uint32_t, 4> v{};
       std::array<mesh::Vec3f, 4> p{};
       bool complete = true;
@@ -138,7 +167,8 @@ void stitchSeams(SeamStore& store, const StitchOptions& options, std::uint32_t v
       around.push_back(&m->cells);
     }
     const EdgeOctree edgeTree = buildEdgeOctree(seam, around, s);
-    if (options.method == StitchMethod::Regular) stitchRegular(seam, edgeTree, s, out, local);
+    if (options.method == StitchMethod::Regular)
+      stitchRegular(seam, edgeTree, s, options.regularTopology == contour::RegularTopology::Voxels, out, local);
     else stitchAdaptive(seam, edgeTree, s, options.intersectionFree, addVertex, faceVertices, out, local);
     ++(seam.kind == Seam::Kind::Face ? local.metaFaces : local.metaEdges);
   };

@@ -22,6 +22,7 @@
 #include <map>
 
 #include "isovdb/contour/seam_cell.h"
+#include "isovdb/contour/voxel_dmc.h"
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/progress.h"
 #include "isovdb/stitch/edge_octree.h"
@@ -52,6 +53,7 @@ struct StitchOptions {
   StitchMethod method = StitchMethod::Regular;
   int metaCellSize = 128;         ///< S of the partition
   bool intersectionFree = true;   ///< adaptive: Ju–Udeshi fans (as the meta-cells)
+  contour::RegularTopology regularTopology = contour::RegularTopology::Voxels;  ///< regular: as the meta-cells
 };
 
 struct StitchStats {

@@ -1,0 +1,91 @@
+/// @file voxel_dmc.h
+/// @brief Regular mode's reading of ambiguous cells that keeps the topology of
+///        the voxel object: 26-connected inside, 6-connected outside (the
+///        reading of volume/digital_topology.h), so a mesh of a binary mask has
+///        Euler characteristic 2 chi(object).
+///
+/// Three changes to Manifold DMC (dmc_table.h, regular_contour.h):
+/// - Ambiguous faces join their two inside corners (face-diagonal voxels are
+///   26-adjacent): the DMC table of `detail::buildDmcEntry(config, 0x3f)`.
+/// - Doubled faces are split, not regrouped. Where both cells across an
+///   ambiguous face have one group passing twice through it (the inside
+///   diagonal is a bridge and the outside goes round it on both sides), their
+///   two vertices would share four quads. Wenger's fix separates the bridge,
+///   which changes the topology; here each of the face's two surface curves
+///   gets its own vertex on the face (the mass point of its two crossings),
+///   inserted between the two cells' vertices in the polygons of the face's
+///   four edges, so the two cells meet along two distinct mesh edges: the
+///   tube around the bridge.
+/// - Vertex contacts become tubes. A cell whose only inside corners are the two
+///   ends of a body diagonal (26-adjacent voxels) holds an annulus, not two
+///   disks. It gets three vertices, one per sector: sector k covers the
+///   segment on the k-th face at one inside corner and on the (k+1)-th face at
+///   the other, so every bipolar edge separates two sectors and contributes
+///   both to its polygon; the three sectors close the tube.
+///
+/// A bipolar edge's polygon lists, counter-clockwise, each cell's vertices on
+/// the faces it shares with its two neighbours around the edge, and a split
+/// vertex between two cells whose shared face is split: 4 to 8 corners. Four
+/// are a quad (regularEdgeQuad, the better diagonal); more are fanned from a
+/// split vertex if there is one, else from the first corner, which never
+/// creates an edge that already exists (two cells sharing a face are joined
+/// only through their shared curves).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "isovdb/contour/dmc_table.h"
+#include "isovdb/mesh/mesh.h"
+
+namespace isovdb::contour {
+
+/// How regular mode reads ambiguous configurations.
+enum class RegularTopology {
+  Voxels,  ///< the voxel object's (26, 6) topology: joined faces, split doubled faces, tubes (this file)
+  Mdmc,    ///< Wenger's Manifold DMC: faces separate the inside corners, doubled faces regrouped
+};
+
+/// @brief The DMC entry of `config` with ambiguous faces joining the inside
+///        corners; `doubleFace` as in dmc_table.h.
+const DmcEntry& voxelDmcEntry(std::uint8_t config) noexcept;
+
+/// @brief True for the four configurations whose only inside corners are the two ends of a body diagonal.
+bool isTubeConfig(std::uint8_t config) noexcept;
+
+/// Sectors of a tube cell.
+struct TubeSectors {
+  std::array<std::uint16_t, 3> edges{};      ///< bipolar edges of sector k (its two faces' edges)
+  std::array<std::int8_t, 6> sectorOfFace{}; ///< the sector holding face f's segment
+};
+
+/// @brief Sectors of a tube configuration (meaningful only if isTubeConfig).
+const TubeSectors& tubeSectors(std::uint8_t config) noexcept;
+
+/// @brief Vertices of a cell in voxel mode, without split vertices: the groups, or 3 for a tube.
+int voxelCellVertexCount(std::uint8_t config) noexcept;
+
+/// @brief The bipolar edges of each of the two split vertices of face f of a
+///        cell with `config` (the two face edges at each outside corner, lower corner first).
+std::array<std::uint16_t, 2> splitVertexEdges(std::uint8_t config, int face) noexcept;
+
+/// @brief Index (0..5) of a split vertex among a cell's: 2 * axis + slot, for its max face along `axis`.
+inline int splitVertexSlot(int axis, int slot) noexcept { return 2 * axis + slot; }
+
+/// One of the four cells around a bipolar edge, as voxelEdgeTriangles reads it.
+struct VoxelEdgeCell {
+  std::uint8_t config = 0;
+  std::uint8_t splitFaces = 0;                  ///< bit a: its max face along axis a is split (this cell owns the vertices)
+  std::array<std::uint32_t, 4> vertices{};      ///< vertex ids of its groups (tube: sectors)
+  std::array<mesh::Vec3f, 4> positions{};       ///< their positions (quads choose their diagonal with them)
+  std::array<std::uint32_t, 6> splitVertices{}; ///< ids of its split vertices, by splitVertexSlot
+};
+
+/// @brief Appends the triangles (outward) of the polygon of the bipolar edge
+///        along `axis` that the four cells surround (cells[q]: bit 0 of q = +u
+///        side, bit 1 = +v; the edge is cell q's local edge 4 * axis + 3 - q).
+/// @return the number of triangles appended (2 for a quad).
+int voxelEdgeTriangles(const std::array<VoxelEdgeCell, 4>& cells, int axis, std::vector<mesh::Triangle>& out);
+
+}  // namespace isovdb::contour
