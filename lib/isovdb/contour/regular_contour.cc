@@ -125,6 +125,7 @@ MetaCellMesh contourRegularMetaCell(const MetaCellSamples& samples, const Linear
   // left to stitching. Chunks of leaves in order keep the output independent of the threads.
   const std::size_t chunks = (n + kGrain - 1) / kGrain;
   std::vector<std::vector<mesh::Triangle>> chunkTriangles(chunks);
+  std::vector<std::int64_t> chunkEdges(chunks, 0);
   std::vector<std::int32_t> leafBoundaryEdges(n, 0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t c = r.begin(); c != r.end(); ++c) {
@@ -145,6 +146,7 @@ MetaCellMesh contourRegularMetaCell(const MetaCellSamples& samples, const Linear
           for (const std::int64_t j : around) regular = regular && leaves[static_cast<std::size_t>(j)].size == leaf.size;
           assert(regular);
           if (!regular) continue;
+          ++chunkEdges[c];
           if (groups.voxels) {
             std::array<VoxelEdgeCell, 4> cells;
             for (int q = 0; q < 4; ++q)
@@ -204,7 +206,7 @@ MetaCellMesh contourRegularMetaCell(const MetaCellSamples& samples, const Linear
     s.manifoldFixes = groups.manifoldFixes;
     s.fixesBeyondApron = groups.fixesBeyondApron;
     s.vertices = static_cast<std::int64_t>(vertexCount);
-    s.quads = static_cast<std::int64_t>(triangleCount / 2);
+    for (const std::int64_t edges : chunkEdges) s.quads += edges;
     if (groups.voxels)
       for (std::size_t i = 0; i < n; ++i) s.tubeCells += isTubeConfig(config[i]) ? 1 : 0;
     s.seamCells = static_cast<std::int64_t>(result.seam.cells.size());

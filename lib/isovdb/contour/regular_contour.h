@@ -57,7 +57,7 @@ struct RegularContourOptions {
 struct RegularContourStats {
   std::int64_t cells = 0;          ///< surface leaves that received dual vertices
   std::int64_t vertices = 0;       ///< dual vertices (= mesh positions)
-  std::int64_t quads = 0;          ///< interior bipolar edges contoured (two triangles each)
+  std::int64_t quads = 0;          ///< interior bipolar edges contoured (two triangles each; voxels: 2-6)
   std::int64_t manifoldFixes = 0;  ///< cells that used Wenger's alternative grouping (voxels: split faces)
   std::int64_t tubeCells = 0;      ///< voxels: cells joining two body-diagonal inside corners by a tube
   std::int64_t seamCells = 0;      ///< leaves kept for stitching (touch the boundary, have dual vertices)
