@@ -113,7 +113,7 @@ std::vector<mesh::Vec3f> placeGroupVertices(const octree::MetaCellSamples& sampl
             for (const std::uint16_t edges : splitVertexEdges(config, 2 * axis + 1)) vertexEdges[static_cast<std::size_t>(count++)] = edges;
       for (int k = 0; k < count; ++k) {
         DualVertexOptions vertexOptions = groupOptions;
-        vertexOptions.massPointOnly = groupOptions.massPointOnly || tube || k >= groupVertices;
+        vertexOptions.massPointOnly = groupOptions.massPointOnly || k >= groupVertices;  // a tube has 2 groups
         const DualVertex v = computeDualVertex(samples, leaf.origin, leaf.size,
                                                vertexEdges[static_cast<std::size_t>(k)], vertexOptions);
         mesh::Vec3f p = v.position;

@@ -3,12 +3,13 @@
 namespace isovdb::contour {
 
 void rebaseSeam(MetaCellSeam& seam, std::uint32_t base) noexcept {
-  for (SeamCell& cell : seam.cells)
-  {
-    for (std::uint32_t& v : cell.vertices)
+  const auto rebase = [base](auto& ids) {
+    for (std::uint32_t& v : ids)
       if (v != kNoVertex) v += base;
-    for (std::uint32_t& v : cell.splitVertices)
-      if (v != kNoVertex) v += base;
+  };
+  for (SeamCell& cell : seam.cells) {
+    rebase(cell.vertices);
+    rebase(cell.splitVertices);
   }
   for (SeamFace& face : seam.faces) face.vertex += base;
 }
