@@ -30,6 +30,9 @@ import zlib
 from pathlib import Path
 
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from ply_vertices import read_ply_vertices  # noqa: E402
 import pyopenvdb as vdb
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -87,23 +90,6 @@ def read_png(path):
         out[y] = cur
         prev = cur
     return out > 127
-
-
-def read_ply_vertices(path):
-    data = Path(path).read_bytes()
-    end = data.index(b"end_header\n") + len(b"end_header\n")
-    header = data[:end].decode()
-    count, props, in_vertex = 0, [], False
-    for line in header.splitlines():
-        words = line.split()
-        if words[:2] == ["element", "vertex"]:
-            count, in_vertex = int(words[2]), True
-        elif words[:1] == ["element"]:
-            in_vertex = False
-        elif words[:1] == ["property"] and in_vertex:
-            props.append(words[1])
-    assert all(p == "float" for p in props)
-    return np.frombuffer(data[end:end + 4 * len(props) * count], "<f4").reshape(count, len(props))[:, :3]
 
 
 def write_raw(path, mask):

@@ -69,13 +69,16 @@ def morph_slices(slices: PathLike | Volume, *, heights: PathLike | None = None, 
                  progress: Progress = None) -> Volume: ...
 def extract_reservoir(grid: PathLike | list[PathLike], *, property: str, iso: float, tessellate: int = 0) -> Mesh: ...
 def euler_characteristic(volume: Volume, adjacency: Literal[26, 6] = 26, progress: Progress = None) -> int: ...
-def distance_field(volume: Volume, half_width: int = 3, closing: int = 0, chunk_size: int = 128,
+def distance_field(volume: Volume, half_width: int = 3, closing: int = 0, chunk_size: int = 64,
                    progress: Progress = None, *, output: PathLike | None = None,
-                   grid_name: str = "sdf") -> Volume | dict[str, Any]: ...
+                   grid_name: str = "sdf",
+                   distance: Literal["interface", "tracker"] = "interface") -> Volume | dict[str, Any]: ...
 def extract(volume: Volume, *, method: Literal["adaptive", "regular", "vdb"] = "adaptive", iso: float = 0.0,
             min_level: int = -1, max_level: int = -1, finest_size: int = 1, max_cell_size: int = 16,
-            meta_cell: int = 128, qef_tolerance: float = 0.25, intersection_free: bool = True,
-            sharp_features: bool = False, adaptivity: float = 0.0, half_width: int = 3, closing: int = 0, sdf_chunk: int = 128,
+            meta_cell: int = 128, qef_tolerance: float = 0.15, intersection_free: bool = True,
+            sharp_features: bool = False, adaptivity: float = 0.0,
+            distance: Literal["interface", "tracker"] = "interface", half_width: int = 3, closing: int = 0,
+            sdf_chunk: int = 64,
             boundary: Literal["cap", "open"] = "cap", topology: Literal["auto", "voxels", "mdmc"] = "auto",
             threads: int | None = None, progress: Progress = None,
             output: PathLike | None = None) -> Mesh | dict[str, Any]: ...

@@ -15,6 +15,7 @@ void addExtractCommand(CLI::App& app, Context& context) {
   struct State {
     std::string input, output, statsPath, method = "vdb", boundary = "cap", topology = "auto";
     InputFlags flags;
+    DistanceFlags distanceFlags;
     pipeline::ExtractOptions options;
     bool check = false;
     bool noSelfIntersections = false;
@@ -36,14 +37,7 @@ void addExtractCommand(CLI::App& app, Context& context) {
       ->capture_default_str();
   command->add_option("--adaptivity", state->options.adaptivity, "vdb method: OpenVDB adaptivity in [0,1]")
       ->capture_default_str();
-  command->add_option("--half-width", state->options.distance.halfWidth, "Distance-field band half-width (voxels)")
-      ->capture_default_str();
-  command->add_option("--sdf-chunk", state->options.distance.chunkSize,
-                      "Distance field computed in cubes of this many voxels (multiple of 8; 0 = all at once)")
-      ->capture_default_str();
-  command->add_option("--closing", state->options.distance.closingSteps,
-                      "Morphological closing steps before the distance field (changes topology)")
-      ->capture_default_str();
+  state->distanceFlags.add(*command, state->options.distance, /*streamed=*/false);
   command->add_option("--meta-cell", state->options.octree.metaCellSize,
                       "regular/adaptive: meta-cell size in voxels (power of two, 16..512; 0 = one block around "
                       "the whole volume, no stitching)")
@@ -87,6 +81,7 @@ void addExtractCommand(CLI::App& app, Context& context) {
     const auto method = pipeline::parseContourMethod(state->method);
     if (!method) throw InputError("--method: unknown method '" + state->method + "', expected vdb, regular or adaptive");
     state->options.method = *method;
+    state->distanceFlags.apply(state->options.distance);
     if (state->topology != "auto") {
       state->options.regularTopology = pipeline::parseRegularTopology(state->topology);
       if (!state->options.regularTopology)

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "isovdb/pipeline/load_volume.h"
+#include "isovdb/volume/distance_field.h"
 #include "seismic_flags.h"
 
 namespace isovdb::cli {
@@ -32,6 +33,17 @@ struct InputFlags {
   /// Builds the options; `path` is used in error messages.
   /// @throw InputError for an unknown --type or malformed values.
   pipeline::InputOptions toOptions(const std::string& path) const;
+};
+
+/// The distance-field flags of `sdf` and `extract`: --distance, --half-width,
+/// --sdf-chunk and --closing, filling `options` (--distance once parsed by apply()).
+struct DistanceFlags {
+  std::string method;
+
+  /// `streamed`: the command writes the band to a file chunk by chunk (`sdf`).
+  void add(CLI::App& command, volume::DistanceFieldOptions& options, bool streamed);
+  /// Sets options.method from --distance. @throw InputError naming the flag for an unknown method.
+  void apply(volume::DistanceFieldOptions& options) const;
 };
 
 }  // namespace isovdb::cli

@@ -11,24 +11,19 @@ void addSdfCommand(CLI::App& app, Context& context) {
   struct State {
     std::string input, output, statsPath, gridName = "sdf";
     InputFlags flags;
+    DistanceFlags distanceFlags;
     volume::DistanceFieldOptions distance;
   };
   auto state = std::make_shared<State>();
   CLI::App* command = app.add_subcommand("sdf", "Binary volume -> narrow-band signed distance field (.vdb level set)");
   command->add_option("IN", state->input, "Volume file")->required();
   command->add_option("-o,--output", state->output, "Output .vdb file")->required();
-  command->add_option("--half-width", state->distance.halfWidth, "Narrow-band half-width in voxels")
-      ->capture_default_str();
-  command->add_option("--sdf-chunk", state->distance.chunkSize,
-                      "Distance field computed in cubes of this many voxels (multiple of 8) and written to the file as they finish; 0 = the whole band at once, in memory")
-      ->capture_default_str();
-  command->add_option("--closing", state->distance.closingSteps,
-                      "Morphological closing steps before the transform (changes topology)")
-      ->capture_default_str();
+  state->distanceFlags.add(*command, state->distance, /*streamed=*/true);
   command->add_option("--name", state->gridName, "Grid name in the output file")->capture_default_str();
   command->add_option("--stats", state->statsPath, "Also write the figures as JSON");
   state->flags.add(*command);
   command->callback([state, &context] {
+    state->distanceFlags.apply(state->distance);
     io::AtomicFile::checkWritable(state->output);
     if (!state->statsPath.empty()) io::AtomicFile::checkWritable(state->statsPath);
     pipeline::Statistics stats;

@@ -1,14 +1,16 @@
 /// @file sample_main.cc
 /// @brief `isovdb-sample`: writes a synthetic binary volume of known topology.
 ///
-///   isovdb-sample SHAPE [--size N] [--label V] -o OUT.{nrrd,raw}
+///   isovdb-sample SHAPE [--size N] [--label V] [--seed S] -o OUT.{nrrd,raw}
 ///   isovdb-sample --list
 ///
 /// Slices are generated and written one at a time (memory O(slice), so
 /// --size 1024 and beyond are fine) through an AtomicFile: a failed run leaves
 /// no partial output. NRRD files carry an attached header (uint8, raw
 /// encoding, unit spacings); .raw files are the bare uint8 samples, x fastest.
-/// The tool prints the shape's known Euler characteristic.
+/// The tool prints the number of inside voxels it wrote and the shape's known
+/// Euler characteristic (blobs: a random union, whose chi is not known).
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <exception>
@@ -36,12 +38,19 @@ OutputFormat formatOf(const std::filesystem::path& path) {
   throw isovdb::InputError("-o '" + path.string() + "': expected a .nrrd or .raw file name");
 }
 
+bool chiKnown(ShapeKind kind) { return kind != ShapeKind::Blobs; }
+
+std::string chiText(ShapeKind kind) {
+  return chiKnown(kind) ? std::to_string(isovdb::samples::knownEulerCharacteristic(kind)) : "?";
+}
+
 std::string nrrdHeader(ShapeKind kind, const ShapeOptions& options,
                        const std::array<std::int64_t, 3>& dims) {
   std::string header = "NRRD0004\n";
   header += "# isovdb-sample " + std::string(isovdb::samples::shapeName(kind)) + " --size " +
-            std::to_string(options.size) + ": Euler characteristic " +
-            std::to_string(isovdb::samples::knownEulerCharacteristic(kind)) + "\n";
+            std::to_string(options.size) +
+            (kind == ShapeKind::Blobs ? " --seed " + std::to_string(options.seed) : std::string()) +
+            ": Euler characteristic " + chiText(kind) + "\n";
   header += "type: uint8\n";
   header += "dimension: 3\n";
   header += "sizes: " + std::to_string(dims[0]) + " " + std::to_string(dims[1]) + " " +
@@ -54,23 +63,25 @@ std::string nrrdHeader(ShapeKind kind, const ShapeOptions& options,
 
 void listShapes(std::FILE* out) {
   for (ShapeKind kind : isovdb::samples::allShapes())
-    std::fprintf(out, "%-12s chi=%3d  %s\n", std::string(isovdb::samples::shapeName(kind)).c_str(),
-                isovdb::samples::knownEulerCharacteristic(kind),
-                std::string(isovdb::samples::shapeDescription(kind)).c_str());
+    std::fprintf(out, "%-12s chi=%3s  %s\n", std::string(isovdb::samples::shapeName(kind)).c_str(),
+                 chiText(kind).c_str(), std::string(isovdb::samples::shapeDescription(kind)).c_str());
 }
 
-/// Streams the volume slice by slice into `path`.
-void writeSample(ShapeKind kind, const ShapeOptions& options, const std::filesystem::path& path) {
+/// Streams the volume slice by slice into `path`; returns the number of inside voxels.
+std::int64_t writeSample(ShapeKind kind, const ShapeOptions& options, const std::filesystem::path& path) {
   const OutputFormat format = formatOf(path);
   const auto dims = isovdb::samples::shapeDims(kind, options);
   isovdb::io::AtomicFile file(path);
   if (format == OutputFormat::Nrrd) file.write(nrrdHeader(kind, options, dims));
   std::vector<std::uint8_t> slice(static_cast<std::size_t>(dims[0] * dims[1]));
+  std::int64_t inside = 0;
   for (std::int64_t z = 0; z < dims[2]; ++z) {
     isovdb::samples::generateSlice(kind, options, z, slice.data());
+    inside += static_cast<std::int64_t>(slice.size()) - std::count(slice.begin(), slice.end(), std::uint8_t{0});
     file.write(slice.data(), slice.size());
   }
   file.commit();
+  return inside;
 }
 
 }  // namespace
@@ -89,6 +100,7 @@ int main(int argc, char** argv) {
   app.add_option("--label", label, "Value of inside voxels (1..255)")
       ->capture_default_str()
       ->check(CLI::Range(1, 255));
+  app.add_option("--seed", options.seed, "Seed of the random bodies (blobs)")->capture_default_str();
   app.add_option("-o,--output", output, "Output file (.nrrd or .raw)");
   CLI11_PARSE(app, argc, argv);
 
@@ -109,12 +121,12 @@ int main(int argc, char** argv) {
       return 2;
     }
     options.label = static_cast<std::uint8_t>(label);
-    writeSample(*kind, options, output);
+    const std::int64_t inside = writeSample(*kind, options, output);
     const auto dims = isovdb::samples::shapeDims(*kind, options);
-    std::printf("%s: %s %lldx%lldx%lld uint8, Euler characteristic %d\n", output.c_str(),
-                std::string(isovdb::samples::shapeName(*kind)).c_str(),
-                static_cast<long long>(dims[0]), static_cast<long long>(dims[1]),
-                static_cast<long long>(dims[2]), isovdb::samples::knownEulerCharacteristic(*kind));
+    std::printf("%s: %s %lldx%lldx%lld uint8, %lld voxels inside, Euler characteristic %s\n", output.c_str(),
+                std::string(isovdb::samples::shapeName(*kind)).c_str(), static_cast<long long>(dims[0]),
+                static_cast<long long>(dims[1]), static_cast<long long>(dims[2]), static_cast<long long>(inside),
+                chiText(*kind).c_str());
     return 0;
   } catch (const isovdb::InputError& error) {
     std::fprintf(stderr, "isovdb-sample: %s\n", error.what());

@@ -1,7 +1,8 @@
 /// @file shapes.h
 /// @brief Analytic solids sampled at voxel centres: synthetic binary volumes of
 ///        known topology for tests and benchmarks (sphere, torus, genus-2,
-///        gyroid slab, salt-dome-like body).
+///        gyroid slab, salt-dome-like body), and a surface-heavy benchmark
+///        volume of random ellipsoids (blobs) whose voxel count is counted.
 ///
 /// Coordinates: voxel index space, voxel (i, j, k) sampled at its centre, the
 /// integer point (i, j, k), as in OpenVDB. Every shape is defined once in
@@ -33,6 +34,7 @@ enum class ShapeKind {
   Genus2,      ///< two solid tori fused side by side (chi = -1)
   GyroidSlab,  ///< one labyrinth of a gyroid clipped to a flat box (chi = -6, numerical)
   SaltDome,    ///< mushroom-shaped salt body with a tunnel plus two detached pods (chi = 2)
+  Blobs,       ///< thousands of random overlapping ellipsoids from a seed (chi not known in closed form)
 };
 
 /// Options shared by every shape.
@@ -44,10 +46,14 @@ struct ShapeOptions {
   /// Sample value of inside voxels in generated slices (outside is 0); 1..255,
   /// e.g. 255 for viewers that expect full-intensity masks.
   std::uint8_t label = 1;
+  /// Seed of the random bodies of ShapeKind::Blobs (other shapes ignore it).
+  std::uint64_t seed = 1;
 };
 
 /// All shapes, in declaration order.
 std::span<const ShapeKind> allShapes();
+/// The shapes whose Euler characteristic is known (all but Blobs): the topology tests' inputs.
+std::span<const ShapeKind> shapesOfKnownTopology();
 /// Canonical lower-case name: "sphere", "torus", "genus2", "gyroid-slab", "salt-dome".
 std::string_view shapeName(ShapeKind kind);
 /// One-line description of the construction (for `isovdb-sample --list`).
@@ -55,6 +61,7 @@ std::string_view shapeDescription(ShapeKind kind);
 /// Parses a canonical name (also accepts '_' for '-'); std::nullopt when unknown.
 std::optional<ShapeKind> parseShape(std::string_view name);
 /// Euler characteristic of the continuous solid (components - handles + cavities).
+/// @throw InputError for Blobs (a random union: count it with volume::eulerCharacteristic).
 int knownEulerCharacteristic(ShapeKind kind);
 
 /// Samples along x, y, z of the volume of `kind` at `options.size`.

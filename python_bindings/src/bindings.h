@@ -8,8 +8,11 @@
 
 #include <pybind11/pybind11.h>
 
+#include <string>
+
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/pipeline/statistics.h"
+#include "isovdb/volume/distance_field.h"
 #include "isovdb/volume/volume.h"
 
 namespace isovdb::python {
@@ -40,6 +43,9 @@ py::tuple toTuple(const std::array<T, 3>& v) {
 
 /// A float, or a sequence of three, as three floats (`name` is used in messages).
 std::array<double, 3> threeDoubles(const py::object& value, const char* name);
+
+/// The `distance=` keyword's method. @throw InputError naming the keyword for another name.
+volume::DistanceMethod distanceMethod(const std::string& name);
 
 void bindVolume(py::module_& m);   // volume_bindings.cc: Volume, from_numpy, read_volume, distance_field
 void bindSeismic(py::module_& m);  // seismic_bindings.cc: read_segy

@@ -2,6 +2,8 @@
 
 #include <pybind11/stl.h>
 
+#include "isovdb/errors.h"
+
 namespace isovdb::python {
 
 py::object toPython(const Json& json) {
@@ -38,6 +40,11 @@ std::array<double, 3> threeDoubles(const py::object& value, const char* name) {
   }
   throw py::value_error(std::string(name) + ": expected a number or a sequence of three numbers, got " +
                         py::repr(value).cast<std::string>());
+}
+
+volume::DistanceMethod distanceMethod(const std::string& name) {
+  if (const auto method = volume::parseDistanceMethod(name)) return *method;
+  throw InputError("distance: unknown method '" + name + "', expected interface or tracker");
 }
 
 }  // namespace isovdb::python

@@ -166,9 +166,11 @@ void write(const PyVolume& self, const std::filesystem::path& path, const std::s
 }
 
 py::object distanceField(const PyVolume& source, int halfWidth, int closing, int chunkSize, const py::object& progress,
-                         const std::optional<std::filesystem::path>& output, const std::string& gridName) {
+                         const std::optional<std::filesystem::path>& output, const std::string& gridName,
+                         const std::string& distance) {
   CallbackProgress callback(progress);
-  const volume::DistanceFieldOptions options{.halfWidth = halfWidth, .closingSteps = closing, .chunkSize = chunkSize};
+  const volume::DistanceFieldOptions options{
+      .method = distanceMethod(distance), .halfWidth = halfWidth, .closingSteps = closing, .chunkSize = chunkSize};
   if (output) {  // `isovdb sdf`: streamed to the file, never held whole
     if (source.volume.kind() != volume::VolumeKind::Mask)
       throw InputError("'" + source.volume.name() + "': a distance field is made from a mask");
@@ -182,7 +184,8 @@ py::object distanceField(const PyVolume& source, int halfWidth, int closing, int
   PyVolume result;
   callback.run([&] { result.volume = volume::distanceField(source.volume, options, &callback); });
   result.input = source.input;
-  result.input["distance_field"] = {{"half_width", halfWidth}, {"closing", closing}};
+  result.input["distance_field"] = {
+      {"method", volume::distanceMethodName(options.method)}, {"half_width", halfWidth}, {"closing", closing}};
   return py::cast(std::move(result));
 }
 
@@ -330,15 +333,22 @@ only; the reading regular contouring follows, except that each pair of cells reg
 Wenger's manifold fix changes the mesh's value by 2).
 Raises ValueError for a scalar field or another adjacency.)doc");
 
-  m.def("distance_field", &distanceField, py::arg("volume"), py::arg("half_width") = 3, py::arg("closing") = 0,
-        py::arg("chunk_size") = 128, py::arg("progress") = py::none(), py::kw_only(),
-        py::arg("output") = py::none(), py::arg("grid_name") = "sdf", R"doc(
+  const volume::DistanceFieldOptions defaults;
+  m.def("distance_field", &distanceField, py::arg("volume"), py::arg("half_width") = defaults.halfWidth,
+        py::arg("closing") = defaults.closingSteps, py::arg("chunk_size") = defaults.chunkSize,
+        py::arg("progress") = py::none(), py::kw_only(), py::arg("output") = py::none(), py::arg("grid_name") = "sdf",
+        py::arg("distance") = std::string(volume::distanceMethodName(defaults.method)), R"doc(
 Narrow-band signed distance field of a mask (kind "sdf"): distances in voxels, NEGATIVE
-inside, the surface half-way between inside and outside voxel centres.
+inside, the surface between inside and outside voxel centres, the sign of every voxel
+the mask's.
 
+distance: "interface" (sub-voxel distances at the mask's interface from a small Gaussian
+  blur, the band along the nearest interface voxel's tangent plane; fast) or "tracker"
+  (OpenVDB's topologyToLevelSet + sdfToSdf; for comparison).
 half_width: band half-width in voxels (>= 2 for contouring); voxels farther away read +/-half_width.
 closing: morphological closing steps before the transform (0 keeps the mask's topology).
-chunk_size: the band is computed in cubes of this many voxels (multiple of 8; 0: at once).
+chunk_size: the band is computed in cubes of this many voxels (multiple of 8; 0: tracker at
+  once); the interface band is the same for every chunk size.
 progress: callable(stage, percent); raising cancels and propagates.
 output: a .vdb path: the band is written there chunk by chunk as `isovdb sdf` does (never
   held whole; the grid `grid_name`, a level set in world units) and the statistics are

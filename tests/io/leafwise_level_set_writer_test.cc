@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <mutex>
+
 #include <openvdb/io/File.h>
 #include <openvdb/tools/Prune.h>
 #include <openvdb/tools/SignedFloodFill.h>
@@ -57,10 +59,11 @@ void expectSameTree(const openvdb::FloatGrid& expected, const openvdb::FloatGrid
 
 /// The band of `mask` written both ways: the in-memory chunked distance field
 /// through writeVdb, and the chunks streamed through LeafwiseLevelSetWriter.
-void expectStreamedEqualsInMemory(const Volume& mask, int chunk, const std::string& what) {
-  SCOPED_TRACE(what);
+void expectStreamedEqualsInMemory(const Volume& mask, int chunk, const std::string& what,
+                                  volume::DistanceMethod method = volume::DistanceMethod::Interface) {
+  SCOPED_TRACE(what + " (" + volume::distanceMethodName(method) + ")");
   test::TempDir dir;
-  const volume::DistanceFieldOptions options{.halfWidth = 3, .chunkSize = chunk};
+  const volume::DistanceFieldOptions options{.method = method, .halfWidth = 3, .chunkSize = chunk};
   writeVdb(dir / "memory.vdb", volume::distanceField(mask, options), {.gridName = "band"});
 
   LeafwiseLevelSetWriter writer(dir / "streamed.vdb", 3.f, mask.geometry(), {.gridName = "band", .source = "t"});
@@ -99,6 +102,8 @@ Volume boxMask(const openvdb::CoordBBox& box, volume::Geometry geometry = {}) {
 TEST(LeafwiseLevelSetWriter, WritesTheTreeTheInMemoryPathBuilds) {
   for (samples::ShapeKind kind : samples::allShapes())
     expectStreamedEqualsInMemory(shapeMask(kind, 64), 32, std::string(samples::shapeName(kind)));
+  expectStreamedEqualsInMemory(shapeMask(samples::ShapeKind::SaltDome, 64), 32, "salt-dome",
+                               volume::DistanceMethod::Tracker);
   // Touching index 0: leaves at negative origins, so the root has two children in x.
   expectStreamedEqualsInMemory(boxMask({{0, 5, 5}, {40, 30, 30}}), 32, "box at the origin");
   // Large enough that whole 128^3 nodes are inside: inside tiles in the upper node.
@@ -121,7 +126,9 @@ TEST(LeafwiseLevelSetWriter, LeavesWithoutActiveVoxelsBecomeTilesOfTheirSign) {
   const volume::DistanceFieldOptions options{.halfWidth = 3, .chunkSize = 32};
   auto makeLeaves = [&] {
     std::vector<std::unique_ptr<FieldLeaf>> leaves;
-    volume::computeBandInChunks(volume::maskGrid(mask), options, [&leaves](auto&& batch) {
+    std::mutex adding;  // chunks hand their leaves out from several threads
+    volume::computeBandInChunks(volume::maskGrid(mask), options, [&leaves, &adding](auto&& batch) {
+      const std::lock_guard<std::mutex> lock(adding);
       for (auto& leaf : batch) leaves.push_back(std::move(leaf));
     }, nullptr);
     leaves.push_back(std::make_unique<FieldLeaf>(openvdb::Coord(24, 24, 24), -3.f, false));

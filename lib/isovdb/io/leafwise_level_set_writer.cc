@@ -338,10 +338,16 @@ LeafwiseLevelSetWriter::~LeafwiseLevelSetWriter() {
 }
 
 void LeafwiseLevelSetWriter::add(std::vector<std::unique_ptr<volume::FieldLeaf>>&& leaves) {
+  // Everything per leaf (statistics, units, serialisation, the archive's sizes)
+  // happens before the lock, so threads adding chunks at once only queue for
+  // the spill file's append.
   std::ostringstream block;
   openvdb::io::setDataCompression(block, compression_);
   openvdb::io::setGridBackgroundValuePtr(block, &background_);
-  const std::lock_guard<std::mutex> lock(mutex_);
+  std::vector<LeafRecord> records;
+  records.reserve(leaves.size());
+  std::string bytes;
+  LevelSetFileSummary batch;
   for (std::unique_ptr<volume::FieldLeaf>& leaf : leaves) {
     LeafRecord record;
     record.origin = leaf->origin();
@@ -349,21 +355,21 @@ void LeafwiseLevelSetWriter::add(std::vector<std::unique_ptr<volume::FieldLeaf>>
     if (!record.valueMask.isOff()) {
       openvdb::CoordBBox box;
       leaf->evalActiveBoundingBox(box);
-      if (summary_.activeVoxels == 0) {
-        summary_.bboxMin = {box.min().x(), box.min().y(), box.min().z()};
-        summary_.bboxMax = {box.max().x(), box.max().y(), box.max().z()};
-        summary_.minValue = summary_.maxValue = *leaf->cbeginValueOn();
+      if (batch.activeVoxels == 0) {
+        batch.bboxMin = {box.min().x(), box.min().y(), box.min().z()};
+        batch.bboxMax = {box.max().x(), box.max().y(), box.max().z()};
+        batch.minValue = batch.maxValue = *leaf->cbeginValueOn();
       }
       for (int a = 0; a < 3; ++a) {
-        summary_.bboxMin[a] = std::min(summary_.bboxMin[a], box.min()[a]);
-        summary_.bboxMax[a] = std::max(summary_.bboxMax[a], box.max()[a]);
+        batch.bboxMin[a] = std::min(batch.bboxMin[a], box.min()[a]);
+        batch.bboxMax[a] = std::max(batch.bboxMax[a], box.max()[a]);
       }
       for (auto v = leaf->cbeginValueOn(); v; ++v) {
-        summary_.minValue = std::min(summary_.minValue, *v);
-        summary_.maxValue = std::max(summary_.maxValue, *v);
+        batch.minValue = std::min(batch.minValue, *v);
+        batch.maxValue = std::max(batch.maxValue, *v);
       }
-      summary_.activeVoxels += static_cast<std::int64_t>(record.valueMask.countOn());
-      ++summary_.leafCount;
+      batch.activeVoxels += static_cast<std::int64_t>(record.valueMask.countOn());
+      ++batch.leafCount;
     }
     // World units, as writeVdb's scaleLevelSet + changeLevelSetBackground give them.
     if (scale_ != 1.f)
@@ -374,7 +380,7 @@ void LeafwiseLevelSetWriter::add(std::vector<std::unique_ptr<volume::FieldLeaf>>
     if (!record.valueMask.isOff()) {
       block.str({});
       leaf->writeBuffers(block, /*toHalf=*/false);
-      const std::string bytes = block.str();
+      const std::string leafBytes = block.str();
       const openvdb::io::MaskCompress<float, openvdb::util::NodeMask<3>> maskCompress(
           record.valueMask, openvdb::util::NodeMask<3>(), leaf->buffer().data(), background_);
       record.maskCompression = maskCompress.metadata;
@@ -382,14 +388,37 @@ void LeafwiseLevelSetWriter::add(std::vector<std::unique_ptr<volume::FieldLeaf>>
                                    leaf->buffer().data(), volume::FieldLeaf::SIZE, record.valueMask,
                                    maskCompress.metadata, false, compression_)) +
                                static_cast<std::int64_t>(sizeof(std::int64_t));  // as Archive counts it
-      record.offset = spillOffset_;
-      record.bytes = static_cast<std::uint32_t>(bytes.size());
-      spill_.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-      if (!spill_) throw IoError("cannot write " + quoted(path_) + ": writing the spill file " + quoted(spillPath_) + " failed (disk full?)");
-      spillOffset_ += bytes.size();
+      record.offset = bytes.size();  // within this batch until the append below
+      record.bytes = static_cast<std::uint32_t>(leafBytes.size());
+      bytes += leafBytes;
     }
-    records_.push_back(record);
+    records.push_back(record);
     leaf.reset();
+  }
+
+  const std::lock_guard<std::mutex> lock(mutex_);
+  spill_.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  if (!spill_) throw IoError("cannot write " + quoted(path_) + ": writing the spill file " + quoted(spillPath_) + " failed (disk full?)");
+  for (LeafRecord& record : records) {
+    if (record.bytes) record.offset += spillOffset_;
+    records_.push_back(record);
+  }
+  spillOffset_ += bytes.size();
+  if (batch.activeVoxels > 0) {
+    if (summary_.activeVoxels == 0) {
+      summary_.bboxMin = batch.bboxMin;
+      summary_.bboxMax = batch.bboxMax;
+      summary_.minValue = batch.minValue;
+      summary_.maxValue = batch.maxValue;
+    }
+    for (int a = 0; a < 3; ++a) {
+      summary_.bboxMin[a] = std::min(summary_.bboxMin[a], batch.bboxMin[a]);
+      summary_.bboxMax[a] = std::max(summary_.bboxMax[a], batch.bboxMax[a]);
+    }
+    summary_.minValue = std::min(summary_.minValue, batch.minValue);
+    summary_.maxValue = std::max(summary_.maxValue, batch.maxValue);
+    summary_.activeVoxels += batch.activeVoxels;
+    summary_.leafCount += batch.leafCount;
   }
 }
 

@@ -3,27 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "isovdb/split_mix.h"
+
 namespace isovdb::morph {
 
 namespace {
-
-
-/// splitmix64: tiny, seedable, identical on every platform.
-class Random {
- public:
-  explicit Random(std::uint64_t seed) : state_(seed) {}
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  /// Uniform in [0, 1).
-  double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-
- private:
-  std::uint64_t state_;
-};
 
 bool inDomain(const Field2& f, double x, double y) {
   return x >= 0 && y >= 0 && x <= f.width - 1 && y <= f.height - 1;
@@ -43,7 +27,7 @@ Vec2 normalAt(const Field2& f, double x, double y) {
 }  // namespace
 
 ParticleLevelSet::ParticleLevelSet(const Field2& phi0, const ParticleOptions& options) : band_(options.band) {
-  Random random(options.seed);
+  SplitMix64 random(options.seed);
   const double vMin = 0.1, vMax = 3.0, rMin = 0.1, rMax = 0.5;
   for (int y = 0; y + 1 < phi0.height; ++y)
     for (int x = 0; x + 1 < phi0.width; ++x) {

@@ -12,7 +12,8 @@ void writeDistanceFieldVdb(const volume::Volume& volume, const volume::DistanceF
                            const std::filesystem::path& output, const std::string& gridName,
                            Interrupter* interrupter, Statistics* stats) {
   volume::checkDistanceFieldOptions(options);
-  if (volume.kind() != volume::VolumeKind::Mask || options.chunkSize == 0) {
+  const bool wholeInMemory = options.chunkSize == 0 && options.method == volume::DistanceMethod::Tracker;
+  if (volume.kind() != volume::VolumeKind::Mask || wholeInMemory) {
     const volume::Volume sdf = toContourable(volume, options, interrupter, stats);
     Statistics::StageTimer timer(stats, "write");
     io::writeVdb(output, sdf, {.gridName = gridName});
@@ -33,6 +34,7 @@ void writeDistanceFieldVdb(const volume::Volume& volume, const volume::DistanceF
   }
   if (!stats) return;
   Statistics::Json section = Statistics::Json::object();
+  section["method"] = volume::distanceMethodName(options.method);
   section["half_width_voxels"] = options.halfWidth;
   section["closing_steps"] = options.closingSteps;
   section["kind"] = std::string(volume::volumeKindName(volume::VolumeKind::DistanceField));

@@ -16,8 +16,8 @@
 namespace isovdb::pipeline {
 
 /// Writes the distance field of `volume` to `output` as one level-set grid named
-/// `gridName`. A mask with options.chunkSize > 0 is streamed; a mask with
-/// chunkSize 0 is computed whole first; other volumes are written as they are.
+/// `gridName`. A mask is streamed chunk by chunk (Tracker with chunkSize 0: computed
+/// whole first); other volumes are written as they are.
 /// Figures go to stats ("distance_field", "output", stage timings) when given.
 /// @throw InputError for options out of range; IoError when
 ///        the output cannot be written (nothing is left at `output` then).

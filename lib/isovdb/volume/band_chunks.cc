@@ -1,6 +1,8 @@
 #include "isovdb/volume/band_chunks.h"
 
 #include <openvdb/tools/FastSweeping.h>
+#include <openvdb/tools/Morphology.h>
+#include <openvdb/tools/Prune.h>
 #include <openvdb/tools/SignedFloodFill.h>
 #include <openvdb/tools/TopologyToLevelSet.h>
 
@@ -8,6 +10,8 @@
 #include <tbb/parallel_for.h>
 
 #include <mutex>
+
+#include "isovdb/volume/interface_band.h"
 
 namespace isovdb::volume {
 
@@ -57,8 +61,29 @@ FieldGrid::Ptr bandOf(const MaskGrid& mask, const DistanceFieldOptions& options,
   return sdf;
 }
 
+namespace {
+
+/// The interface band of the mask, after the morphological closing asked for
+/// (OpenVDB's face-neighbour dilation then erosion, as topologyToLevelSet does).
+std::size_t interfaceBandInChunks(const MaskGrid& mask, const DistanceFieldOptions& options,
+                                  const BandLeafSink& sink, Interrupter* interrupter) {
+  constexpr int kDefaultChunk = 64;
+  const int chunk = options.chunkSize > 0 ? options.chunkSize : kDefaultChunk;
+  if (options.closingSteps == 0) return computeInterfaceBand(mask, options.halfWidth, chunk, sink, interrupter);
+  MaskGrid::Ptr closed = mask.deepCopy();
+  openvdb::tools::dilateActiveValues(closed->tree(), options.closingSteps, openvdb::tools::NN_FACE,
+                                     openvdb::tools::PRESERVE_TILES);
+  openvdb::tools::erodeActiveValues(closed->tree(), options.closingSteps, openvdb::tools::NN_FACE,
+                                    openvdb::tools::PRESERVE_TILES);
+  openvdb::tools::pruneInactive(closed->tree());
+  return computeInterfaceBand(*closed, options.halfWidth, chunk, sink, interrupter);
+}
+
+}  // namespace
+
 std::size_t computeBandInChunks(const MaskGrid& mask, const DistanceFieldOptions& options, const BandLeafSink& sink,
                                 Interrupter* interrupter) {
+  if (options.method == DistanceMethod::Interface) return interfaceBandInChunks(mask, options, sink, interrupter);
   ProgressStage progress(interrupter, "distance field");
   openvdb::CoordBBox bbox;
   if (!mask.tree().evalActiveVoxelBoundingBox(bbox)) return 0;
@@ -98,8 +123,8 @@ std::size_t computeBandInChunks(const MaskGrid& mask, const DistanceFieldOptions
           fillLeaf(*leaves.back());
         }
       }
-      const std::lock_guard<std::mutex> lock(handOut);
       if (!leaves.empty()) sink(std::move(leaves));
+      const std::lock_guard<std::mutex> lock(handOut);
       progress.update(static_cast<double>(++done), static_cast<double>(chunks.size()));
     }
   }, tbb::simple_partitioner());

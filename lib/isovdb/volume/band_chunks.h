@@ -14,16 +14,18 @@
 
 namespace isovdb::volume {
 
-/// Receives the leaves of one chunk; it owns them from then on. Called under a
-/// lock, one chunk at a time, in an order that depends on thread timing.
+/// Receives the leaves of one chunk; it owns them from then on. Called from
+/// several threads at once (one chunk each), in an order that depends on thread
+/// timing: a sink must be thread-safe (io::LeafwiseLevelSetWriter::add is; one
+/// that adds to a tree takes a lock).
 using BandLeafSink = std::function<void(std::vector<std::unique_ptr<FieldLeaf>>&&)>;
 
 /// The band of the whole mask with OpenVDB's tools at once: topologyToLevelSet,
 /// then (options.redistance) one fast-sweeping pass.
 FieldGrid::Ptr bandOf(const MaskGrid& mask, const DistanceFieldOptions& options, Interrupter* interrupter);
 
-/// The band in cubes of options.chunkSize voxels (> 0), each from the mask around
-/// it plus a halo, chunks in parallel. Every leaf of the band goes to `sink` exactly
+/// The band in cubes of options.chunkSize voxels (> 0; Interface: 0 too), each from
+/// the mask around it plus a halo, chunks in parallel, by options.method. Every leaf of the band goes to `sink` exactly
 /// once, with its inactive values already flood-filled to ±halfWidth (OpenVDB's
 /// signedFloodFill leaf rule, which depends on the leaf alone). Leaves without
 /// active voxels are handed out too: whether they become tiles is the caller's

@@ -4,9 +4,21 @@
 #include <openvdb/tools/Prune.h>
 #include <openvdb/tools/SignedFloodFill.h>
 
+#include <mutex>
+
 #include "isovdb/volume/band_chunks.h"
 
 namespace isovdb::volume {
+
+const char* distanceMethodName(DistanceMethod method) {
+  return method == DistanceMethod::Interface ? "interface" : "tracker";
+}
+
+std::optional<DistanceMethod> parseDistanceMethod(std::string_view name) {
+  if (name == "interface") return DistanceMethod::Interface;
+  if (name == "tracker") return DistanceMethod::Tracker;
+  return std::nullopt;
+}
 
 void checkDistanceFieldOptions(const DistanceFieldOptions& options) {
   if (options.halfWidth < 1 || options.halfWidth > 64)
@@ -22,13 +34,15 @@ Volume distanceField(const Volume& mask, const DistanceFieldOptions& options, In
   const MaskGrid& grid = maskGrid(mask);
   checkDistanceFieldOptions(options);
   FieldGrid::Ptr sdf;
-  if (options.chunkSize == 0) {
+  if (options.chunkSize == 0 && options.method == DistanceMethod::Tracker) {
     ProgressStage progress(interrupter, "distance field");
     sdf = bandOf(grid, options, interrupter);
     progress.update(1, 1);
   } else {
     sdf = FieldGrid::create(static_cast<float>(options.halfWidth));
-    computeBandInChunks(grid, options, [&sdf](std::vector<std::unique_ptr<FieldLeaf>>&& leaves) {
+    std::mutex adding;
+    computeBandInChunks(grid, options, [&sdf, &adding](std::vector<std::unique_ptr<FieldLeaf>>&& leaves) {
+      const std::lock_guard<std::mutex> lock(adding);
       for (auto& leaf : leaves) sdf->tree().addLeaf(leaf.release());
     }, interrupter);
     // Inactive space between chunks' bands: negative inside, positive outside.

@@ -7,27 +7,50 @@
 /// applied by default, so the topology of the mask is kept.
 #pragma once
 
+#include <optional>
+#include <string_view>
+
 #include "isovdb/progress.h"
 #include "isovdb/volume/volume.h"
 
 namespace isovdb::volume {
 
+/// How the band of a mask is computed.
+enum class DistanceMethod {
+  /// From the mask's interface (volume/interface_band.h): sub-voxel distances at the
+  /// interface voxels from the mask blurred by a small Gaussian, extended to the band
+  /// along the nearest interface voxel's tangent plane. Signs are exactly the mask's.
+  Interface,
+  /// OpenVDB's topologyToLevelSet (PDE renormalisation by LevelSetTracker), then
+  /// (redistance) one fast-sweeping pass, tools::sdfToSdf. 5-10x slower; kept for comparison.
+  Tracker,
+};
+
+/// "interface" | "tracker".
+const char* distanceMethodName(DistanceMethod method);
+/// The method named `name` ("interface", "tracker"); std::nullopt for another name.
+std::optional<DistanceMethod> parseDistanceMethod(std::string_view name);
+
 struct DistanceFieldOptions {
+  DistanceMethod method = DistanceMethod::Interface;
   /// Half-width of the narrow band, in voxels. Contouring needs at least 2;
   /// larger bands cost memory proportional to the width.
   int halfWidth = 3;
   /// Morphological closing steps before the distance transform. 0 keeps the
   /// mask's topology; >0 fills gaps of that many voxels (changes topology).
   int closingSteps = 0;
-  /// Re-solve the Eikonal equation in the band by fast sweeping (tools::sdfToSdf)
-  /// after OpenVDB's topologyToLevelSet: distances within 0.4 voxel of exact
-  /// instead of 1.3 on a sphere, for about twice the time.
+  /// Tracker only: re-solve the Eikonal equation in the band by fast sweeping
+  /// (tools::sdfToSdf) after OpenVDB's topologyToLevelSet: distances within 0.4
+  /// voxel of exact instead of 1.3 on a sphere, for about twice the time.
   bool redistance = true;
   /// The band is computed chunk by chunk (cubes of this many voxels, a multiple
-  /// of 8, each from the mask around it plus a halo), so the transient memory of
-  /// OpenVDB's tools is that of one chunk, not of the whole band. 0: the whole
-  /// grid at once (faster on small volumes, 3-5x the band's memory at peak).
-  int chunkSize = 128;
+  /// of 8, each from the mask around it plus a halo), so the transient memory is
+  /// that of one chunk per thread, not of the whole band: Interface, about 22
+  /// bytes per voxel of (chunk + 16)^3 (11 MiB at 64); Tracker, about 40 MiB at
+  /// 128 (OpenVDB's tools). 0: Tracker on the whole grid at once (faster on small
+  /// volumes, 3-5x the band's memory at peak); Interface at 64. The Interface
+  /// band does not depend on the chunk size, bit for bit.
+  int chunkSize = 64;
 };
 
 /// @throw InputError naming the option that is out of range.
