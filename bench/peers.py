@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""Peer benchmark: isovdb's four contouring methods against VTK and scikit-image,
-end to end (read -> mesh file), in the same session and on the same inputs, every
-output mesh validated by `isovdb check`. Prints one table; "time ratio" is a row's
+"""Peer benchmark: isovdb's four contouring methods against OpenVDB's own path, VTK and
+scikit-image, end to end (read -> mesh file), in the same session and on the same inputs,
+every output mesh validated by `isovdb check`. Prints one table; "time ratio" is a row's
 wall time over isovdb --method regular's on the same input.
 
 Run on demand, never in CI:
@@ -10,17 +10,23 @@ It builds nothing: run scripts/build.sh first (BUILD/isovdb, BUILD/data/isovdb-s
 Peers are Debian's python3-vtk9 and python3-skimage; a missing package or a crash
 prints a row with the error instead of stopping the run.
 
-Inputs: salt-dome at each --sizes, gyroid-slab at 256 (generated into --work when
-missing) and the frog skeleton (data/frog/frogtissue.mhd, label 13).
+Inputs: salt-dome at each --sizes, blobs (2000 random ellipsoids: a surface-heavy body)
+at each --blob-sizes, gyroid-slab at 256 (generated into --work when missing) and the frog
+skeleton (data/frog/frogtissue.mhd, label 13).
 
 Protocol:
   isovdb  `isovdb -q extract IN -o OUT.ply --method M --stats S.json`; time = wall time
           around the process, peak RSS = memory.peak_rss_bytes of the stats.
+  openvdb BUILD/bench/isovdb-openvdb-path: the mask read as isovdb reads it, then
+          tools::topologyToLevelSet on the whole mask and tools::volumeToMesh (adaptivity 0
+          and 0.5), written as PLY; its "field s" is topologyToLevelSet's seconds.
   peers   a child /usr/bin/python3 per run reads the file with numpy (zlib for the
           frog's .zraw), runs the filter, writes a binary PLY and reports its
           getrusage peak RSS; time = wall time around the child (interpreter start and
           imports included, as for isovdb's process). "work s" is the child's own
           read -> write time (isovdb: the sum of its stats timings).
+  rounds  --repeat N runs every row N times, the rows interleaved round by round (A B C A
+          B C ...); times are medians over the rounds; the last round's meshes are checked.
           When the object touches the volume border (the frog) the peers get one
           voxel of background padding (inside the timed child), as isovdb's narrow
           band closes the surface there; --no-pad leaves their meshes open.
@@ -152,6 +158,12 @@ print(json.dumps({"seconds": seconds, "peak_rss_bytes": resource.getrusage(resou
                   "triangles": triangles, "padded": padded, "algorithm": algorithm, "version": version}))
 '''
 
+# OpenVDB's own path (bench/openvdb_path.cc): topologyToLevelSet on the whole mask + volumeToMesh.
+OPENVDB_ROWS = [
+    ("openvdb path", ["--adaptivity", "0"]),
+    ("openvdb path a=0.5", ["--adaptivity", "0.5"]),
+]
+
 PEERS = [
     ("vtk discrete", "vtk-discrete"),  # vtkDiscreteFlyingEdges3D (or vtkDiscreteMarchingCubes) on the labels
     ("vtk flying edges", "vtk-fe"),    # vtkFlyingEdges3D on the 0/1 volume at 0.5
@@ -246,6 +258,7 @@ def sample_input(sample, shape, size, work):
     return {
         "name": f"{shape}-{size}",
         "isovdb_in": [raw, "--dims", ",".join(map(str, dims)), "--type", "uint8"],
+        "openvdb_in": [raw, "--dims", ",".join(map(str, dims)), "--type", "uint8"],
         "peer": {"path": raw, "dims": dims, "spacing": [1.0, 1.0, 1.0], "compressed": False, "label": None},
         "desc": f"{'x'.join(map(str, dims))} uint8, inside = value > 0",
     }
@@ -257,6 +270,7 @@ def frog_input(path, labels):
     return {
         "name": f"frog-{label}",
         "isovdb_in": [path, "--labels", str(label)],
+        "openvdb_in": [path, "--labels", str(label)],
         "peer": dict(meta, label=label),
         "desc": f"{'x'.join(map(str, meta['dims']))} uint8 MetaImage{' (zlib)' if meta['compressed'] else ''}, "
                 f"spacing {'x'.join(f'{s:g}' for s in meta['spacing'])}, inside = label {label}",
@@ -300,7 +314,20 @@ def run_isovdb(isovdb, inp, label, flags, out, stats, timeout):
     # The contouring stages alone (everything after the distance field but the write).
     contour = sum(v for k, v in t.items() if k not in ("read", "distance_field", "write"))
     return {"time": wall, "work": sum(t.values()), "peak": s["memory"]["peak_rss_bytes"], "contouring": contour,
-            "note": f"contouring {contour:.2f} s"}
+            "field": t.get("distance_field")}
+
+
+def run_openvdb(tool, inp, flags, out, timeout):
+    cmd = [tool, *inp["openvdb_in"], *flags, "-o", out]
+    start = time.monotonic()
+    proc = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
+    wall = time.monotonic() - start
+    if proc.returncode != 0:
+        raise RuntimeError(f"exit {proc.returncode}: {last_line(proc.stderr) or last_line(proc.stdout)}")
+    rep = json.loads(last_line(proc.stdout))
+    work = sum(rep[k] for k in ("read", "distance_field", "sweep", "contour", "write"))
+    return {"time": wall, "work": work, "peak": rep["peak_rss_bytes"], "contouring": rep["contour"],
+            "field": rep["distance_field"]}
 
 
 def run_peer(method, inp, out, pad, timeout):
@@ -315,6 +342,24 @@ def run_peer(method, inp, out, pad, timeout):
     return {"time": wall, "work": rep["seconds"], "peak": rep["peak_rss_bytes"], "note": note}
 
 
+def median_row(runs):
+    """One row from the runs of one method: median times, the largest peak, the last run's note."""
+    row = dict(runs[-1])
+    row["times"] = [r["time"] for r in runs]
+    for key in ("time", "work", "contouring", "field"):
+        values = [r[key] for r in runs if r.get(key) is not None]
+        if values:
+            row[key] = statistics.median(values)
+    row["peak"] = max(r["peak"] for r in runs)
+    notes = [row["note"]] if row.get("note") else []
+    if row.get("contouring") is not None:
+        notes.append(f"contouring {row['contouring']:.2f} s")
+    if len(runs) > 1:
+        notes.append(f"median of {len(runs)} runs")
+    row["note"] = "; ".join(notes)
+    return row
+
+
 def yes_no(value):
     return "yes" if value else "no"
 
@@ -322,6 +367,8 @@ def yes_no(value):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--sizes", default="256,512", help="salt-dome edges, comma-separated (default 256,512; 1024 works)")
+    parser.add_argument("--blob-sizes", default="512",
+                        help="blobs edges, comma-separated ('' to skip; default 512; 1024 works)")
     parser.add_argument("--gyroid-size", type=int, default=256, help="gyroid-slab size (0: skip; default 256)")
     parser.add_argument("--frog", default=os.path.join(ROOT, "data", "frog", "frogtissue.mhd"),
                         help="frog MetaImage ('' to skip)")
@@ -335,14 +382,15 @@ def main():
     parser.add_argument("--keep-meshes", action="store_true", help="keep the output meshes in --work")
     parser.add_argument("--json", help="also write the rows to this JSON file")
     parser.add_argument("--repeat", type=int, default=1,
-                        help="runs of each isovdb method per input, interleaved method by method; the row shows "
-                             "the median time (default 1)")
+                        help="runs of every row per input, interleaved round by round; the row shows the median "
+                             "times (default 1)")
     args = parser.parse_args()
 
     build = args.build if os.path.isabs(args.build) else os.path.join(ROOT, args.build)
     isovdb = os.path.join(build, "isovdb")
     sample = os.path.join(build, "data", "isovdb-sample")
-    for tool in (isovdb, sample):
+    openvdb_path = os.path.join(build, "bench", "isovdb-openvdb-path")
+    for tool in (isovdb, sample, openvdb_path):
         if not os.path.exists(tool):
             sys.exit(f"{tool} is missing: run scripts/build.sh first (or pass --build)")
     os.makedirs(args.work, exist_ok=True)
@@ -351,6 +399,8 @@ def main():
     vers = versions()
     wanted = [(f"salt-dome-{s.strip()}", sample_input, (sample, "salt-dome", int(s), args.work))
               for s in args.sizes.split(",") if s.strip()]
+    wanted += [(f"blobs-{s.strip()}", sample_input, (sample, "blobs", int(s), args.work))
+               for s in args.blob_sizes.split(",") if s.strip()]
     if args.gyroid_size:
         wanted.append((f"gyroid-slab-{args.gyroid_size}", sample_input,
                        (sample, "gyroid-slab", args.gyroid_size, args.work)))
@@ -365,48 +415,43 @@ def main():
         except Exception as e:  # noqa: BLE001 - an input that cannot be prepared gets an error row
             rows.append({"input": name, "method": "(input)", "error": f"{type(e).__name__}: {e}"})
     for inp in inputs:
-        # Extra rounds of the isovdb methods (times only); the last round below is checked.
-        earlier = {label: [] for label, _ in ISOVDB_METHODS}
-        for round_index in range(max(0, args.repeat - 1)):
-            for label, flags in ISOVDB_METHODS:
+        runs = [(label, "isovdb", flags) for label, flags in ISOVDB_METHODS] + \
+               [(label, "openvdb", flags) for label, flags in OPENVDB_ROWS] + \
+               [(label, "peer", method) for label, method in PEERS]
+        results = {label: [] for label, _, _ in runs}
+        errors = {}
+        rounds = max(1, args.repeat)
+        for round_index in range(rounds):
+            checked = round_index == rounds - 1  # the last round's meshes are validated
+            for label, kind, spec in runs:
+                if label in errors:
+                    continue
                 tag = f"{inp['name']}-{label.replace(' ', '-').replace('=', '')}"
                 out = os.path.join(args.work, f"peers-{tag}.ply")
-                print(f"{inp['name']}: {label} (round {round_index + 1}) ...", file=sys.stderr, flush=True)
+                print(f"{inp['name']}: {label} (round {round_index + 1} of {rounds}) ...", file=sys.stderr, flush=True)
                 try:
-                    earlier[label].append(run_isovdb(isovdb, inp, label, flags, out,
-                                                     os.path.join(args.work, f"peers-{tag}.json"), args.timeout))
-                except Exception:  # noqa: BLE001 - the checked round reports the error
-                    pass
+                    if kind == "isovdb":
+                        run = run_isovdb(isovdb, inp, label, spec, out, os.path.join(args.work, f"peers-{tag}.json"),
+                                         args.timeout)
+                    elif kind == "openvdb":
+                        run = run_openvdb(openvdb_path, inp, spec, out, args.timeout)
+                    else:
+                        run = run_peer(spec, inp, out, not args.no_pad, args.timeout)
+                    if checked:
+                        run["mesh"] = check(isovdb, out, os.path.join(args.work, f"peers-{tag}-check.json"),
+                                            args.self_intersection_limit, args.timeout)
+                    results[label].append(run)
+                except Exception as e:  # noqa: BLE001 - one failing run must not stop the others
+                    errors[label] = f"{type(e).__name__}: {e}"
                 finally:
-                    if os.path.exists(out):
+                    if not args.keep_meshes and os.path.exists(out):
                         os.remove(out)
-        runs = [(label, "isovdb", flags) for label, flags in ISOVDB_METHODS] + \
-               [(label, "peer", method) for label, method in PEERS]
-        for label, kind, spec in runs:
-            tag = f"{inp['name']}-{label.replace(' ', '-').replace('=', '')}"
-            out = os.path.join(args.work, f"peers-{tag}.ply")
+        for label, _, _ in runs:
             row = {"input": inp["name"], "method": label}
-            print(f"{inp['name']}: {label} ...", file=sys.stderr, flush=True)
-            try:
-                if kind == "isovdb":
-                    row.update(run_isovdb(isovdb, inp, label, spec, out, os.path.join(args.work, f"peers-{tag}.json"),
-                                          args.timeout))
-                    if earlier[label]:
-                        runs_of_label = earlier[label] + [dict(row)]
-                        row["times"] = [r["time"] for r in runs_of_label]
-                        row["time"] = statistics.median(row["times"])
-                        row["work"] = statistics.median(r["work"] for r in runs_of_label)
-                        row["contouring"] = statistics.median(r["contouring"] for r in runs_of_label)
-                        row["note"] = f"contouring {row['contouring']:.2f} s; median of {len(runs_of_label)} runs"
-                else:
-                    row.update(run_peer(spec, inp, out, not args.no_pad, args.timeout))
-                row["mesh"] = check(isovdb, out, os.path.join(args.work, f"peers-{tag}-check.json"),
-                                    args.self_intersection_limit, args.timeout)
-            except Exception as e:  # noqa: BLE001 - one failing run must not stop the others
-                row["error"] = f"{type(e).__name__}: {e}"
-            finally:
-                if not args.keep_meshes and os.path.exists(out):
-                    os.remove(out)
+            if results[label]:
+                row.update(median_row(results[label]))
+            if label in errors:
+                row["error"] = errors[label]
             rows.append(row)
 
     total = time.monotonic() - session_start
@@ -418,18 +463,19 @@ def main():
     for inp in inputs:
         print(f"input {inp['name']}: {inp['desc']}")
     print()
-    head = (f"{'input':<16}{'method':<18}{'time s':>8}{'work s':>8}{'ratio':>7}{'RSS MiB':>9}{'triangles':>11}"
+    head = (f"{'input':<16}{'method':<20}{'time s':>8}{'work s':>8}{'field s':>8}{'ratio':>7}{'RSS MiB':>9}{'triangles':>11}"
             f"{'closed':>12}{'nm e/v':>12}{'self-x':>8}{'comps':>7}{'chi':>7}")
     print(head)
     print("-" * len(head))
     base = {r["input"]: r["time"] for r in rows if r["method"] == BASELINE and "error" not in r}
     for r in rows:
-        start = f"{r['input']:<16}{r['method']:<18}"
+        start = f"{r['input']:<16}{r['method']:<20}"
         if "time" not in r:
             print(f"{start}ERROR {r['error']}")
             continue
         ratio = f"{r['time'] / base[r['input']]:.2f}" if r["input"] in base else "n/a"
-        cells = f"{start}{r['time']:>8.2f}{r['work']:>8.2f}{ratio:>7}{r['peak'] / MIB:>9.0f}"
+        field = f"{r['field']:.2f}" if r.get("field") is not None else "-"
+        cells = f"{start}{r['time']:>8.2f}{r['work']:>8.2f}{field:>8}{ratio:>7}{r['peak'] / MIB:>9.0f}"
         m = r.get("mesh")
         if m is None:
             print(f"{cells}  ERROR {r['error']}")
@@ -441,8 +487,9 @@ def main():
               + (f"  ({r['note']})" if r.get("note") else ""))
     print()
     print("time s: wall time around the process (end to end: read -> mesh file; with --repeat, the median); "
-          "work s: the process's own read -> write time (median too); contouring: isovdb's stages after the distance field "
-          "(partition, meta-cells, stitching; or volumeToMesh); ratio: time / isovdb regular's time on the same input; RSS: peak RSS of the "
+          "work s: the process's own read -> write time (median too); field s: the distance field stage (isovdb: "
+          "the interface band; openvdb path: topologyToLevelSet on the whole mask); contouring: the stages after "
+          "the distance field (partition, meta-cells, stitching; or volumeToMesh); ratio: time / isovdb regular's time on the same input; RSS: peak RSS of the "
           "process; closed: no:N = N boundary edges; nm e/v: non-manifold edges/vertices; self-x: "
           "self-intersecting triangle pairs; chi: Euler characteristic.")
     print(f"whole run {total:.0f} s")

@@ -4,9 +4,11 @@
 
 #include "commands.h"
 #include "isovdb/errors.h"
+#include "isovdb/pipeline/memory.h"
 
 int main(int argc, char** argv) {
   using namespace isovdb;
+  pipeline::keepFreedHeapMemory();
   CLI::App app{"isovdb: turns large sparse volumes into clean triangle meshes"};
   app.require_subcommand(1);
   app.fallthrough();

@@ -3,10 +3,12 @@
 
 #include "bindings.h"
 #include "isovdb/errors.h"
+#include "isovdb/pipeline/memory.h"
 
 namespace py = pybind11;
 
 PYBIND11_MODULE(isovdb, m) {
+  isovdb::pipeline::keepFreedHeapMemory();
   m.doc() =
       "isovdb: sparse volumes to clean triangle meshes.\n\n"
       "Volumes (binary masks, scalar fields, signed distance fields) come from files\n"

@@ -99,6 +99,15 @@ class Builder {
       ev.split = true;
       return ev;
     }
+    if (options_.construction == OctreeConstruction::Regular && c.depth < depths_.maxDepth &&
+        options_.detectInteriorComponents) {
+      // The regular construction refines every cell the surface crosses down to the
+      // maximum depth, complex or not, so above it the criteria have nothing to
+      // decide: one pass over the cell's sample bits says whether it is crossed.
+      ev.leaf.cornerSigns = cellCornerSigns(phases_, ev.leaf.origin, size);
+      ev.leaf.surface = ev.split = phases_.boxPhase(ev.leaf.origin, size + 1) < 0;
+      return ev;
+    }
     ev.classified = true;
     const CellTopology topo = classifyCell(phases_, ev.leaf.origin, size, classify_, labeller);
     ev.leaf.cornerSigns = topo.cornerSigns;
@@ -292,14 +301,24 @@ class Builder {
     }
   }
 
+  /// The leaves in Z order (a pre-order walk down the internal nodes, children in
+  /// octant order), so LinearOctree need not sort them.
   LinearOctree finish(OctreeBuildStats* stats) {
     std::vector<OctreeLeaf> leaves;
     leaves.reserve(records_.size());
-    for (std::size_t i = 0; i < records_.size(); ++i)
-      if (alive_[i]) {
-        leaves.push_back(records_[i].leaf);
-        stats_.unresolvedComplexLeaves += records_[i].leaf.complex;
+    std::vector<MortonKey> stack{kRootKey};
+    while (!stack.empty()) {
+      const MortonKey key = stack.back();
+      stack.pop_back();
+      const std::int32_t* v = map_.find(key);
+      if (*v == kInternal) {
+        for (int o = 7; o >= 0; --o) stack.push_back(childKey(key, o));
+        continue;
       }
+      const OctreeLeaf& leaf = records_[static_cast<std::size_t>(*v)].leaf;
+      leaves.push_back(leaf);
+      stats_.unresolvedComplexLeaves += leaf.complex;
+    }
     if (stats) *stats = stats_;
     return LinearOctree(samples_.size, samples_.origin, std::move(leaves));
   }

@@ -14,11 +14,14 @@ LinearOctree::LinearOctree(int metaCellSize, std::array<int, 3> metaCellOrigin, 
       origin_(metaCellOrigin),
       leaves_(std::move(leaves)) {
   const int fd = finestDepth_;
-  std::sort(leaves_.begin(), leaves_.end(), [fd](const OctreeLeaf& a, const OctreeLeaf& b) {
-    return zOrderCode(a.key, fd) < zOrderCode(b.key, fd);
-  });
   codes_.resize(leaves_.size());
   for (std::size_t i = 0; i < leaves_.size(); ++i) codes_[i] = zOrderCode(leaves_[i].key, fd);
+  if (!std::is_sorted(codes_.begin(), codes_.end())) {  // the octree builder hands them in order already
+    std::sort(leaves_.begin(), leaves_.end(), [fd](const OctreeLeaf& a, const OctreeLeaf& b) {
+      return zOrderCode(a.key, fd) < zOrderCode(b.key, fd);
+    });
+    for (std::size_t i = 0; i < leaves_.size(); ++i) codes_[i] = zOrderCode(leaves_[i].key, fd);
+  }
 #ifndef NDEBUG
   std::uint64_t volume = 0;
   for (const auto& l : leaves_) volume += std::uint64_t{1} << (3 * (fd - l.depth));

@@ -1,5 +1,7 @@
 #include "isovdb/pipeline/memory.h"
 
+#include <malloc.h>
+
 #include <fstream>
 #include <string>
 
@@ -21,5 +23,10 @@ std::int64_t statusField(const char* key) {
 
 std::int64_t peakRssBytes() { return statusField("VmHWM"); }
 std::int64_t currentRssBytes() { return statusField("VmRSS"); }
+
+void keepFreedHeapMemory() {
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, 256 << 20);
+}
 
 }  // namespace isovdb::pipeline
