@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -180,7 +181,7 @@ struct Scratch {
   // Per site slot: the mask around it and its blur, window of 8 + 2 * kSiteStencil.
   static constexpr int kW = kLeaf + 2 * kSiteStencil;  // 14
   static constexpr int kS = kLeaf + 2;                 // 10: blurred values at the slot +-1
-  std::array<float, kW * kW * kW> window{};
+  std::array<std::uint32_t, kW * kW> rows{};
   std::array<float, kW * kW * kS> blurZ{};
   std::array<float, kW * kS * kS> blurYZ{};
   std::array<float, kS * kS * kS> blurred{};
@@ -220,7 +221,18 @@ std::uint64_t faceBits(const MaskLeaf& leaf, int axis, int side) {
 /// the three passes of the nearest-site transform on those rows, and the leaves.
 class ChunkBand {
  public:
-  ChunkBand(const MaskGrid& mask, const Layout& layout) : mask_(mask), layout_(layout), weights_(blurWeights()) {}
+  ChunkBand(const MaskGrid& mask, const Layout& layout) : mask_(mask), layout_(layout) {
+    // The blur along z of every pattern of 2R + 1 mask bits (bit t: the voxel at
+    // offset t - R; -1 inside, +1 outside), so the first pass reads one table entry.
+    const std::array<float, 2 * kBlurRadius + 1> weights = blurWeights();
+    for (std::uint32_t pattern = 0; pattern < rowBlur_.size(); ++pattern) {
+      float sum = 0.f;
+      for (int t = 0; t <= 2 * kBlurRadius; ++t)
+        sum += weights[static_cast<std::size_t>(t)] * (((pattern >> t) & 1u) ? -1.f : 1.f);
+      rowBlur_[pattern] = sum;
+    }
+    weights_ = weights;
+  }
 
   /// The band's leaves of the chunk whose cube starts at `chunkOrigin`.
   void compute(const Coord& chunkOrigin, Scratch& s, std::vector<std::unique_ptr<FieldLeaf>>& out) const {
@@ -338,52 +350,56 @@ class ChunkBand {
     constexpr int W = Scratch::kW, S = Scratch::kS, St = kSiteStencil;
     const int n = layout_.n;
     const int bx = sx * kLeaf - St, by = sy * kLeaf - St, bz = sz * kLeaf - St;
-    // The mask around the slot as -1 inside, +1 outside (outside the region: never used).
+    // The mask around the slot as one 14-bit row along z per (x, y): bit k is window
+    // voxel k, 1 inside (outside the region: 0, never used for a site).
     const bool interior = bx >= 0 && by >= 0 && bz >= 0 && bx + W <= n && by + W <= n && bz + W <= n;
     for (int i = 0; i < W; ++i)
       for (int j = 0; j < W; ++j) {
         const int x = bx + i, y = by + j;
-        float* row = &s.window[(i * W + j) * W];
+        std::uint32_t bits = 0;
         if (interior) {
           const std::uint8_t* bytes = &s.mask[layout_.voxel(x, y, bz)];
-          for (int k = 0; k < W; ++k) row[k] = 1.f - 2.f * static_cast<float>(bytes[k]);
-          continue;
+          for (int k = 0; k < W; ++k) bits |= static_cast<std::uint32_t>(bytes[k]) << k;
+        } else if (x >= 0 && y >= 0 && x < n && y < n) {
+          for (int k = 0; k < W; ++k) {
+            const int z = bz + k;
+            if (z >= 0 && z < n && s.mask[layout_.voxel(x, y, z)]) bits |= 1u << k;
+          }
         }
-        if (x < 0 || y < 0 || x >= n || y >= n) {
-          std::fill_n(row, W, 1.f);
-          continue;
-        }
-        for (int k = 0; k < W; ++k) {
-          const int z = bz + k;
-          row[k] = z >= 0 && z < n && s.mask[layout_.voxel(x, y, z)] ? -1.f : 1.f;
-        }
+        s.rows[static_cast<std::size_t>(i * W + j)] = bits;
       }
-    auto maskAt = [&s](int i, int j, int k) { return s.window[((i + St) * W + j + St) * W + k + St] < 0.f; };
-    // The slot's interface voxels within r of the chunk.
+    auto rowAt = [&s](int i, int j) { return s.rows[static_cast<std::size_t>((i + St) * W + j + St)]; };
+    // The slot's interface voxels within r of the chunk: a voxel whose row, or the row
+    // beside it in x or y, differs at its bit or a z neighbour's.
     Slot& at = slot(s, sx, sy, sz);
     const int lo = layout_.apron - layout_.reach, hi = layout_.apron + layout_.chunk + layout_.reach;
     at.siteBits = {};
     at.siteLo = {kLeaf, kLeaf, kLeaf};
     at.siteHi = {-1, -1, -1};
     for (int i = 0; i < kLeaf; ++i)
-      for (int j = 0; j < kLeaf; ++j)
+      for (int j = 0; j < kLeaf; ++j) {
+        const int x = sx * kLeaf + i, y = sy * kLeaf + j;
+        std::uint8_t* site = &s.site[layout_.voxel(x, y, sz * kLeaf)];
+        std::fill_n(site, kLeaf, std::uint8_t{0});
+        if (x < lo || y < lo || x >= hi || y >= hi) continue;
+        const std::uint32_t c = rowAt(i, j);
+        const std::uint32_t differs = (c ^ (c << 1)) | (c ^ (c >> 1)) | (c ^ rowAt(i - 1, j)) | (c ^ rowAt(i + 1, j)) |
+                                      (c ^ rowAt(i, j - 1)) | (c ^ rowAt(i, j + 1));
+        std::uint32_t inner = (differs >> St) & 0xffu;  // bit k: slot voxel k
         for (int k = 0; k < kLeaf; ++k) {
-          const int x = sx * kLeaf + i, y = sy * kLeaf + j, z = sz * kLeaf + k;
-          std::uint8_t& isSite = s.site[layout_.voxel(x, y, z)];
-          isSite = 0;
-          if (x < lo || y < lo || z < lo || x >= hi || y >= hi || z >= hi) continue;
-          const bool inside = maskAt(i, j, k);
-          if (maskAt(i - 1, j, k) == inside && maskAt(i + 1, j, k) == inside && maskAt(i, j - 1, k) == inside &&
-              maskAt(i, j + 1, k) == inside && maskAt(i, j, k - 1) == inside && maskAt(i, j, k + 1) == inside)
-            continue;
-          isSite = 1;
-          at.siteBits[static_cast<std::size_t>(i)] |= std::uint64_t{1} << (8 * j + k);
-          const std::array<int, 3> local{i, j, k};
-          for (int a = 0; a < 3; ++a) {
-            at.siteLo[a] = static_cast<std::int8_t>(std::min<int>(at.siteLo[a], local[a]));
-            at.siteHi[a] = static_cast<std::int8_t>(std::max<int>(at.siteHi[a], local[a]));
-          }
+          const int z = sz * kLeaf + k;
+          if (z < lo || z >= hi) inner &= ~(1u << k);
         }
+        if (!inner) continue;
+        at.siteBits[static_cast<std::size_t>(i)] |= static_cast<std::uint64_t>(inner) << (8 * j);
+        for (int k = 0; k < kLeaf; ++k) site[k] = static_cast<std::uint8_t>((inner >> k) & 1u);
+        at.siteLo[0] = static_cast<std::int8_t>(std::min<int>(at.siteLo[0], i));
+        at.siteHi[0] = static_cast<std::int8_t>(std::max<int>(at.siteHi[0], i));
+        at.siteLo[1] = static_cast<std::int8_t>(std::min<int>(at.siteLo[1], j));
+        at.siteHi[1] = static_cast<std::int8_t>(std::max<int>(at.siteHi[1], j));
+        at.siteLo[2] = static_cast<std::int8_t>(std::min<int>(at.siteLo[2], std::countr_zero(inner)));
+        at.siteHi[2] = static_cast<std::int8_t>(std::max<int>(at.siteHi[2], 31 - std::countl_zero(inner)));
+      }
     if (at.siteHi[0] < 0) {
       at.flags &= static_cast<std::uint8_t>(~kSites);
       return false;
@@ -396,12 +412,11 @@ class ChunkBand {
     const int wLo[3] = {bLo[0] + off - R, bLo[1] + off - R, bLo[2] + off - R};
     const int wHi[3] = {bHi[0] + off + R, bHi[1] + off + R, bHi[2] + off + R};
     for (int i = wLo[0]; i < wHi[0]; ++i)
-      for (int j = wLo[1]; j < wHi[1]; ++j)
-        for (int k = bLo[2]; k < bHi[2]; ++k) {
-          float sum = 0.f;
-          for (int t = -R; t <= R; ++t) sum += weights_[t + R] * s.window[(i * W + j) * W + k + off + t];
-          s.blurZ[(i * W + j) * S + k] = sum;
-        }
+      for (int j = wLo[1]; j < wHi[1]; ++j) {
+        const std::uint32_t row = s.rows[static_cast<std::size_t>(i * W + j)];
+        for (int k = bLo[2]; k < bHi[2]; ++k)  // window voxels k + off - R .. k + off + R
+          s.blurZ[(i * W + j) * S + k] = rowBlur_[(row >> (k + off - R)) & ((1u << (2 * R + 1)) - 1)];
+      }
     for (int i = wLo[0]; i < wHi[0]; ++i)
       for (int j = bLo[1]; j < bHi[1]; ++j)
         for (int k = bLo[2]; k < bHi[2]; ++k) {
@@ -417,6 +432,7 @@ class ChunkBand {
           s.blurred[(i * S + j) * S + k] = sum;
         }
     auto blurredAt = [&s](int i, int j, int k) { return s.blurred[((i + 1) * S + j + 1) * S + k + 1]; };
+    auto maskAt = [&rowAt](int i, int j, int k) { return ((rowAt(i, j) >> (k + St)) & 1u) != 0; };
     for (int i = at.siteLo[0]; i <= at.siteHi[0]; ++i)
       for (int j = at.siteLo[1]; j <= at.siteHi[1]; ++j)
         for (int k = at.siteLo[2]; k <= at.siteHi[2]; ++k) {
@@ -664,6 +680,7 @@ class ChunkBand {
   const MaskGrid& mask_;
   const Layout& layout_;
   std::array<float, 2 * kBlurRadius + 1> weights_;
+  std::array<float, 1u << (2 * kBlurRadius + 1)> rowBlur_{};
 };
 
 /// Chunks whose region may hold an interface: near a mask leaf, or near the
