@@ -96,15 +96,17 @@ void addExtractCommand(CLI::App& app, Context& context) {
     if (!state->statsPath.empty()) io::AtomicFile::checkWritable(state->statsPath);
 
     pipeline::Statistics stats;
-    const volume::Volume input =
+    volume::Volume input =
         pipeline::loadVolume(state->input, state->flags.toOptions(state->input), context.interrupter(), &stats);
     // Without --check the octree methods stream a .ply meta-cell by meta-cell (the mesh
-    // is never held whole); --check needs the mesh in memory.
+    // is never held whole); --check needs the mesh in memory. The input is moved in so
+    // that a mask is freed once its distance field exists.
     std::uint64_t triangles = 0;
     if (!state->check) {
-      triangles = pipeline::extractToFile(input, state->options, state->output, context.interrupter(), &stats);
+      triangles =
+          pipeline::extractToFile(std::move(input), state->options, state->output, context.interrupter(), &stats);
     } else {
-      mesh = pipeline::extractMesh(input, state->options, context.interrupter(), &stats);
+      mesh = pipeline::extractMesh(std::move(input), state->options, context.interrupter(), &stats);
       triangles = mesh.triangles.size();
       pipeline::Statistics::StageTimer timer(&stats, "write");
       io::writeMesh(state->output, mesh);

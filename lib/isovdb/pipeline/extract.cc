@@ -84,7 +84,7 @@ void indexToWorld(mesh::Mesh& mesh, const volume::Geometry& geometry) {
   });
 }
 
-void extractInto(const volume::Volume& volume, const ExtractOptions& options, mesh::MeshSink& sink,
+void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::MeshSink& sink,
                  Interrupter* interrupter, Statistics* stats) {
   if (options.threads < 0) throw InputError("--threads: expected 0 (every core) or more, got " + std::to_string(options.threads));
   std::optional<tbb::global_control> threads;
@@ -97,10 +97,13 @@ void extractInto(const volume::Volume& volume, const ExtractOptions& options, me
             << deadBand << " (--clip): choose |iso| >= clip or a smaller --clip";
     throw InputError(message.str());
   }
+  const volume::VolumeKind kind = volume.kind();
+  const std::optional<volume::IndexBox> box = volume::sampledBox(volume);
   const volume::Volume field = toContourable(volume, options.distance, interrupter, stats);
+  // The contouring reads only the field: a mask is freed here unless the caller keeps it.
+  volume = volume::Volume();
   // Caps are flattened piece by piece (the mesh still streams); dropping them
   // (Open) needs the whole mesh, so it is collected first.
-  const std::optional<volume::IndexBox> box = volume::sampledBox(volume);
   const bool open = box && options.boundary == BoundaryMode::Open;
   mesh::MeshCollector whole;
   CappingSink capped(open ? static_cast<mesh::MeshSink&>(whole) : sink, box);
@@ -114,7 +117,7 @@ void extractInto(const volume::Volume& volume, const ExtractOptions& options, me
     OctreeContourOptions octree = options.octree;
     octree.method = options.method == ContourMethod::Regular ? OctreeMethod::Regular : OctreeMethod::Adaptive;
     octree.iso = static_cast<float>(options.iso);
-    octree.regularTopology = regularTopologyFor(options.regularTopology, volume.kind());
+    octree.regularTopology = regularTopologyFor(options.regularTopology, kind);
     contourWithOctree(field, octree, capped, interrupter, stats);
   }
   std::int64_t dropped = 0;
@@ -137,11 +140,12 @@ void extractInto(const volume::Volume& volume, const ExtractOptions& options, me
   }
 }
 
-mesh::Mesh extractMesh(const volume::Volume& volume, const ExtractOptions& options, Interrupter* interrupter,
+mesh::Mesh extractMesh(volume::Volume volume, const ExtractOptions& options, Interrupter* interrupter,
                        Statistics* stats) {
   mesh::MeshCollector collector;
-  extractInto(volume, options, collector, interrupter, stats);
-  indexToWorld(collector.mesh, volume.geometry());
+  const volume::Geometry geometry = volume.geometry();
+  extractInto(std::move(volume), options, collector, interrupter, stats);
+  indexToWorld(collector.mesh, geometry);
   return std::move(collector.mesh);
 }
 

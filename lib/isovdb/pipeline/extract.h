@@ -65,15 +65,17 @@ volume::Volume toContourable(const volume::Volume& volume, const volume::Distanc
 /// Contours `volume` (any kind) and returns the mesh in world space
 /// (Volume::geometry() applied), outward-oriented, with `options.boundary` applied
 /// on the volume's sampled box. Records timings and counts in `stats`.
+/// `volume` is taken by value (a copy shares the grid): a caller that moves its
+/// mask in lets the pipeline free the mask once the distance field is made.
 /// @throw InputError for invalid options, or an iso inside a scalar's dead band
 ///        (|iso| < clip: the surface would follow clipped samples); Interrupted on cancellation.
-mesh::Mesh extractMesh(const volume::Volume& volume, const ExtractOptions& options,
-                       Interrupter* interrupter = nullptr, Statistics* stats = nullptr);
+mesh::Mesh extractMesh(volume::Volume volume, const ExtractOptions& options, Interrupter* interrupter = nullptr,
+                       Statistics* stats = nullptr);
 
 /// The same, streamed into `sink` in voxel INDEX space (the octree methods hand
 /// it one meta-cell at a time; apply volume.geometry() in the sink, e.g.
 /// io::PlyStreamWriter's transform).
-void extractInto(const volume::Volume& volume, const ExtractOptions& options, mesh::MeshSink& sink,
+void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::MeshSink& sink,
                  Interrupter* interrupter = nullptr, Statistics* stats = nullptr);
 
 /// world = origin + spacing * index, applied in place (flips nothing: spacings are positive).

@@ -8,22 +8,22 @@
 
 namespace isovdb::pipeline {
 
-std::uint64_t extractToFile(const volume::Volume& volume, const ExtractOptions& options,
+std::uint64_t extractToFile(volume::Volume volume, const ExtractOptions& options,
                             const std::filesystem::path& path, Interrupter* interrupter, Statistics* stats) {
   if (!io::isMeshPath(path))
     throw InputError("'" + path.string() + "': unknown mesh format, expected .ply or .obj");
   io::AtomicFile::checkWritable(path);
   const bool stream = options.method != ContourMethod::Vdb && io::lowerExtension(path) == ".ply";
   if (stream) {
-    const volume::Geometry& g = volume.geometry();
+    const volume::Geometry g = volume.geometry();
     io::PlyStreamWriter writer(path, g.spacing, g.origin);
-    extractInto(volume, options, writer, interrupter, stats);
+    extractInto(std::move(volume), options, writer, interrupter, stats);
     Statistics::StageTimer timer(stats, "write");
     writer.commit();
     if (stats) (*stats)["output"]["streamed"] = true;
     return writer.triangleCount();
   }
-  const mesh::Mesh mesh = extractMesh(volume, options, interrupter, stats);
+  const mesh::Mesh mesh = extractMesh(std::move(volume), options, interrupter, stats);
   Statistics::StageTimer timer(stats, "write");
   io::writeMesh(path, mesh);
   return mesh.triangles.size();

@@ -14,10 +14,11 @@ namespace isovdb::pipeline {
 /// stream a .ply meta-cell by meta-cell (the mesh is never held whole; the header
 /// keeps room for the final counts); otherwise the mesh is built and written whole.
 /// Written through a temporary file. Records "output.streamed" and a "write" timing.
+/// `volume` by value, as extractMesh takes it (move a mask in to have it freed early).
 /// @return the number of triangles written
 /// @throw InputError for another extension or invalid options; IoError when the path
 ///        is not writable (checked before the work starts); Interrupted on cancellation.
-std::uint64_t extractToFile(const volume::Volume& volume, const ExtractOptions& options,
+std::uint64_t extractToFile(volume::Volume volume, const ExtractOptions& options,
                             const std::filesystem::path& path, Interrupter* interrupter = nullptr,
                             Statistics* stats = nullptr);
 

@@ -149,7 +149,7 @@ struct Slot {
   std::uint8_t flags = 0;
   const MaskLeaf* leaf = nullptr;       ///< kMixed: the mask leaf
   VoxelBits siteBits{};                 ///< its sites
-  VoxelBits nearBits{};                 ///< voxels within r (per axis) of a site: pass 3
+  VoxelBits nearBits{};                 ///< band voxels within r (per axis) of a site: pass 3
   std::array<std::int8_t, 3> siteLo{};  ///< kSites: bounding box of the sites (slot voxels)
   std::array<std::int8_t, 3> siteHi{};
   RowBits rows2 = 0, rows1 = 0;  ///< rows of pass 2 (near dilated along x) and pass 1 (then along y)
@@ -168,6 +168,9 @@ struct Scratch {
     const std::size_t slotCount = static_cast<std::size_t>(layout.ringSlots) * layout.ringSlots * layout.ringSlots;
     slots.resize(slotCount);
     voxelBits.resize(slotCount);
+    grownInside.resize(slotCount);
+    grownOutside.resize(slotCount);
+    grown.resize(slotCount);
     rowBits.resize(slotCount);
   }
   std::vector<std::uint8_t> mask;            ///< 1 inside
@@ -177,6 +180,7 @@ struct Scratch {
   std::vector<PlaneNearest> nearYZ;          ///< nearest site in the yz-plane
   std::vector<Slot> slots;
   std::vector<VoxelBits> voxelBits;          ///< dilation buffer
+  std::vector<VoxelBits> grownInside, grownOutside, grown;  ///< the face band's dilations
   std::vector<RowBits> rowBits;              ///< dilation buffer
   // Per site slot: the mask around it and its blur, window of 8 + 2 * kSiteStencil.
   static constexpr int kW = kLeaf + 2 * kSiteStencil;  // 14
@@ -520,13 +524,57 @@ class ChunkBand {
     }
   }
 
-  /// kBand on the inner slots with a voxel within r (per axis) of a site; the
-  /// rows each pass computes: pass 3 the band's near rows, pass 2 those within r
-  /// along x of them, pass 1 those within r along y of pass 2's.
+  /// A slot's inside voxels as bits.
+  static VoxelBits insideBits(const Slot& at) {
+    VoxelBits bits{};
+    if (at.state == kFull) bits.fill(~std::uint64_t{0});
+    if (at.leaf)
+      for (std::size_t w = 0; w < kLeaf; ++w)
+        bits[w] = at.leaf->getValueMask().getWord<std::uint64_t>(static_cast<openvdb::Index>(w));
+    return bits;
+  }
+
+  /// grownInside / grownOutside: the inside and the outside voxels grown by halfWidth
+  /// face-neighbour steps (what tools::dilateActiveValues with NN_FACE does).
+  void growFaceSteps(Scratch& s) const {
+    const int m = layout_.slots;
+    auto bitsAt = [&](const std::vector<VoxelBits>& from, int x, int y, int z) -> VoxelBits {
+      if (x < 0 || y < 0 || z < 0 || x >= m || y >= m || z >= m) return {};
+      return from[layout_.slot(x, y, z)];
+    };
+    for (int sx = 0; sx < m; ++sx)
+      for (int sy = 0; sy < m; ++sy)
+        for (int sz = 0; sz < m; ++sz) {
+          const std::size_t at = layout_.slot(sx, sy, sz);
+          s.grownInside[at] = insideBits(s.slots[at]);
+          for (std::size_t w = 0; w < kLeaf; ++w) s.grownOutside[at][w] = ~s.grownInside[at][w];
+        }
+    for (std::vector<VoxelBits>* grown : {&s.grownInside, &s.grownOutside})
+      for (int step = 0; step < layout_.halfWidth; ++step) {
+        for (int sx = 0; sx < m; ++sx)
+          for (int sy = 0; sy < m; ++sy)
+            for (int sz = 0; sz < m; ++sz) {
+              const VoxelBits& here = (*grown)[layout_.slot(sx, sy, sz)];
+              VoxelBits out = dilateVoxels(here, bitsAt(*grown, sx - 1, sy, sz), bitsAt(*grown, sx + 1, sy, sz), 0);
+              const VoxelBits alongY =
+                  dilateVoxels(here, bitsAt(*grown, sx, sy - 1, sz), bitsAt(*grown, sx, sy + 1, sz), 1);
+              const VoxelBits alongZ =
+                  dilateVoxels(here, bitsAt(*grown, sx, sy, sz - 1), bitsAt(*grown, sx, sy, sz + 1), 2);
+              for (std::size_t w = 0; w < kLeaf; ++w) out[w] |= alongY[w] | alongZ[w];
+              s.grown[layout_.slot(sx, sy, sz)] = out;
+            }
+        std::swap(*grown, s.grown);
+      }
+  }
+
+  /// kBand on the inner slots with a band voxel within r (per axis) of a site;
+  /// the rows each pass computes: pass 3 those band voxels' rows, pass 2 those
+  /// within r along x of them, pass 1 those within r along y of pass 2's.
   bool markBand(Scratch& s) const {
     dilateVoxelBits(s, &Slot::siteBits, &Slot::nearBits, 2);
     dilateVoxelBits(s, &Slot::nearBits, &Slot::nearBits, 1);
     dilateVoxelBits(s, &Slot::nearBits, &Slot::nearBits, 0);
+    growFaceSteps(s);
     const int m = layout_.slots, begin = layout_.firstInnerSlot(), end = layout_.endInnerSlot();
     bool any = false;
     for (int sx = 0; sx < m; ++sx)
@@ -536,6 +584,12 @@ class ChunkBand {
           const bool inner = sx >= begin && sy >= begin && sz >= begin && sx < end && sy < end && sz < end;
           at.rows2 = 0;
           if (!inner) continue;
+          // The band: the voxels within halfWidth face steps of the other side (the
+          // topology topologyToLevelSet gives a band).
+          const std::size_t index = layout_.slot(sx, sy, sz);
+          const VoxelBits inside = insideBits(at);
+          for (std::size_t w = 0; w < kLeaf; ++w)
+            at.nearBits[w] &= (s.grownInside[index][w] & ~inside[w]) | (s.grownOutside[index][w] & inside[w]);
           at.rows2 = rowsOf(at.nearBits);
           if (!at.rows2) continue;
           at.flags |= kBand;
@@ -640,7 +694,7 @@ class ChunkBand {
     bool anyActive = false;
     for (int i = 0; i < kLeaf; ++i)
       for (int j = 0; j < kLeaf; ++j) {
-        const bool near = (at.nearBits[static_cast<std::size_t>(i)] >> (8 * j)) & 0xffu;
+        const unsigned near = static_cast<unsigned>(at.nearBits[static_cast<std::size_t>(i)] >> (8 * j)) & 0xffu;
         const int x = sx * kLeaf + i, y = sy * kLeaf + j;
         const int down = std::min(r, x), up = std::min(r, n - 1 - x);
         for (int k = 0; k < kLeaf; ++k) {
@@ -648,7 +702,7 @@ class ChunkBand {
           const bool inside = s.mask[here] != 0;
           const int index = (i << 6) | (j << 3) | k;
           values[index] = inside ? -h : h;
-          if (!near) continue;
+          if (!((near >> k) & 1u)) continue;
           int best = r * r, ox = 0, oy = 0, oz = 0;  // a farther site: at least halfWidth from the surface
           auto consider = [&](int dx) {
             const PlaneNearest& e = s.nearYZ[static_cast<std::size_t>(static_cast<std::ptrdiff_t>(here) + dx * stride)];
