@@ -115,13 +115,19 @@ void addExtractCommand(CLI::App& app, Context& context) {
       std::fprintf(stderr, "isovdb: warning: '%s': no surface at iso %g (empty mesh)\n", state->input.c_str(),
                    state->options.iso);
     stats["output"]["path"] = state->output;
+    bool passed = true;
     if (state->check) {
       pipeline::Statistics::StageTimer timer(&stats, "check");
-      stats["check"] = pipeline::meshReportJson(mesh, {.selfIntersections = !state->noSelfIntersections});
+      const mesh::MeshReport report = mesh::validateMesh(mesh, {.selfIntersections = !state->noSelfIntersections});
+      stats["check"] = pipeline::toJson(report);
+      passed = pipeline::passesGuarantees(report);
+      stats["check"]["passed"] = passed;
     }
     stats.recordMemory();
     if (!state->statsPath.empty()) stats.write(state->statsPath);
     printStatistics(stats);
+    // Like `isovdb check`: a mesh that fails the check is written, and the run exits 1.
+    context.exitCode = passed ? 0 : 1;
   });
 }
 

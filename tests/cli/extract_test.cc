@@ -144,6 +144,32 @@ TEST(CliCheck, FailsOnATopologyMismatch) {
   EXPECT_NE(output.find("topology.matches: false"), std::string::npos) << output;
 }
 
+// --check fails the run like `isovdb check` does: plain dual contouring (no
+// Ju-Udeshi fans) self-intersects on the salt dome; the mesh is still written.
+TEST(CliExtract, CheckExitsOneWhenTheMeshFailsIt) {
+  TempDir dir;
+  const auto salt = writeShape(dir, samples::ShapeKind::SaltDome, 64);
+  const auto mesh = dir / "salt.ply";
+  const auto stats = dir / "salt.json";
+  std::string output;
+  EXPECT_EQ(runCommand(cliPath().string() + " -q extract " + salt.string() + " -o " + mesh.string() +
+                           " --method adaptive --no-intersection-free --check --stats " + stats.string(),
+                       &output),
+            1)
+      << output;
+  const nlohmann::json json = readJson(stats);
+  EXPECT_GT(json["check"]["self_intersecting_pairs"].get<int>(), 0);
+  EXPECT_FALSE(json["check"]["passed"].get<bool>());
+  EXPECT_TRUE(std::filesystem::exists(mesh));
+  // With the fans the same run passes.
+  EXPECT_EQ(runCommand(cliPath().string() + " -q extract " + salt.string() + " -o " + mesh.string() +
+                           " --method adaptive --check --stats " + stats.string(),
+                       &output),
+            0)
+      << output;
+  EXPECT_TRUE(readJson(stats)["check"]["passed"].get<bool>());
+}
+
 TEST(CliSdf, WritesALevelSetThatOpenVdbReads) {
   TempDir dir;
   const auto input = writeShape(dir, samples::ShapeKind::Sphere, 48);
