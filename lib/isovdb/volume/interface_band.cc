@@ -153,6 +153,7 @@ struct Slot {
   std::array<std::int8_t, 3> siteLo{};  ///< kSites: bounding box of the sites (slot voxels)
   std::array<std::int8_t, 3> siteHi{};
   RowBits rows2 = 0, rows1 = 0;  ///< rows of pass 2 (near dilated along x) and pass 1 (then along y)
+  std::uint32_t planes = 0;      ///< kSites: its block of 512 site planes in Scratch::planes
 };
 
 /// One thread's buffers, reused from chunk to chunk. Region arrays are written
@@ -162,7 +163,7 @@ struct Scratch {
     const std::size_t voxels = static_cast<std::size_t>(layout.n) * layout.n * layout.n;
     mask.resize(voxels);
     site.resize(voxels);
-    plane.resize(voxels);
+    planes.reserve(64 * static_cast<std::size_t>(kLeaf * kLeaf * kLeaf));
     nearZ.resize(voxels);
     nearYZ.resize(voxels);
     const std::size_t slotCount = static_cast<std::size_t>(layout.ringSlots) * layout.ringSlots * layout.ringSlots;
@@ -175,7 +176,9 @@ struct Scratch {
   }
   std::vector<std::uint8_t> mask;            ///< 1 inside
   std::vector<std::uint8_t> site;            ///< 1 at an interface voxel within r of the chunk
-  std::vector<SitePlane> plane;              ///< sites' tangent plane
+  /// Sites' tangent planes, one block of 512 per site slot (in a leaf's voxel order):
+  /// only slots with an interface take this memory.
+  std::vector<SitePlane> planes;
   std::vector<std::int8_t> nearZ;            ///< offset along z to the nearest site (kNoSite)
   std::vector<PlaneNearest> nearYZ;          ///< nearest site in the yz-plane
   std::vector<Slot> slots;
@@ -242,6 +245,7 @@ class ChunkBand {
   void compute(const Coord& chunkOrigin, Scratch& s, std::vector<std::unique_ptr<FieldLeaf>>& out) const {
     const Coord regionMin = chunkOrigin.offsetBy(-layout_.apron);
     readSlotStates(regionMin, s);
+    s.planes.clear();
     if (!markSiteSlots(s)) return;
     bool anySite = false;
     forEachSlot(s, kSites, [&](int sx, int sy, int sz) { anySite = computeSites(sx, sy, sz, s) || anySite; });
@@ -408,6 +412,9 @@ class ChunkBand {
       at.flags &= static_cast<std::uint8_t>(~kSites);
       return false;
     }
+    at.planes = static_cast<std::uint32_t>(s.planes.size());
+    s.planes.resize(s.planes.size() + kLeaf * kLeaf * kLeaf);
+    SitePlane* planes = &s.planes[at.planes];
     // Separable blur over the sites' bounding box and one voxel around it
     // (blurred index b <-> slot voxel b - 1 <-> window index b + off).
     constexpr int R = kBlurRadius, off = St - 1;
@@ -469,7 +476,8 @@ class ChunkBand {
           }
           const float d = weights > 1e-6f ? (inside ? -1.f : 1.f) * sum / weights : (inside ? -0.5f : 0.5f);
           // The mask decides the side; the surface is within one voxel of an interface voxel.
-          s.plane[v] = {inside ? std::clamp(d, -1.f, -kSiteFloor) : std::clamp(d, kSiteFloor, 1.f), normal};
+          planes[(i << 6) | (j << 3) | k] = {inside ? std::clamp(d, -1.f, -kSiteFloor) : std::clamp(d, kSiteFloor, 1.f),
+                                              normal};
         }
     return true;
   }
@@ -715,8 +723,10 @@ class ChunkBand {
             if (step > 0 && step <= up) consider(step);
           }
           if (best >= r * r) continue;
-          const std::size_t site = layout_.voxel(x + ox, y + oy, sz * kLeaf + k + oz);
-          const SitePlane& plane = s.plane[site];
+          const int px = x + ox, py = y + oy, pz = sz * kLeaf + k + oz;
+          const Slot& siteSlot = slot(s, px / kLeaf, py / kLeaf, pz / kLeaf);
+          const SitePlane& plane =
+              s.planes[siteSlot.planes + static_cast<std::uint32_t>(((px & 7) << 6) | ((py & 7) << 3) | (pz & 7))];
           const std::array<float, 3>& normal = plane.normal;
           float d = plane.distance - (normal[0] * static_cast<float>(ox) + normal[1] * static_cast<float>(oy) +
                                     normal[2] * static_cast<float>(oz));
