@@ -118,7 +118,9 @@ TEST(BuildOctree, ThinSheetForcesTheMaximumDepth) {
     EXPECT_EQ(touching, 2u * 32 * 32);
     // The adaptive construction reaches the sheet through its complex edges; the
     // regular one refines every crossed cell and reads no criterion above the finest depth.
-    if (construction == OctreeConstruction::Adaptive) EXPECT_GT(stats.complexEdges, 0u);
+    if (construction == OctreeConstruction::Adaptive) {
+      EXPECT_GT(stats.complexEdges, 0u);
+    }
   }
   // With the maximum depth capped at 4-voxel cells, the leaves holding the
   // sheet stay complex and are reported.
