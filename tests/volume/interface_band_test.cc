@@ -75,7 +75,14 @@ TEST(InterfaceBand, SignsAreTheMasksWhereABlurWouldLoseThem) {
     const bool block = x >= 10 && x < 30 && y >= 8 && y < 16 && z >= 8 && z < 16;
     return block && !(x == 20 && y == 12 && z == 12);                     // a block with a hole
   });
-  expectSignsOfTheMask(thin, interfaceField(thin), -4, 44, "thin features");
+  const Volume thinField = interfaceField(thin);
+  expectSignsOfTheMask(thin, thinField, -4, 44, "thin features");
+  // A feature one voxel thick keeps its thickness: its surfaces half a voxel away,
+  // not wherever a blur of it would put them.
+  auto acc = fieldGrid(thinField).getConstAccessor();
+  EXPECT_LE(acc.getValue({20, 20, 20}), -0.5f);  // the sheet
+  EXPECT_LE(acc.getValue({20, 30, 30}), -0.5f);  // the line
+  EXPECT_GE(acc.getValue({20, 12, 12}), 0.5f);   // the hole in the block
   // Random voxels at four densities: ambiguous faces, diagonal contacts, specks.
   for (const double density : {0.05, 0.3, 0.5, 0.8}) {
     std::mt19937 random(static_cast<unsigned>(density * 1000));

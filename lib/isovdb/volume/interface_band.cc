@@ -30,9 +30,11 @@ constexpr int kBlurRadius = 2;
 /// An interface voxel's distance needs the blurred mask at its six neighbours.
 constexpr int kSiteStencil = kBlurRadius + 1;
 /// The smallest |value| at an interface voxel. A voxel centre can lie on the
-/// surface, but a zero would put vertices exactly on samples, and a one-voxel
-/// sheet whose blurred value has the wrong sign would get no thickness at all.
-constexpr float kSiteFloor = 0.05f;
+/// surface, but a zero would put vertices exactly on samples, and a feature
+/// whose blurred value has the wrong sign would get no thickness at all (0.1:
+/// the frog skeleton's regular mesh folds less than with 0.05, and analytic
+/// solids lose nothing; 0.2 costs them accuracy).
+constexpr float kSiteFloor = 0.1f;
 /// The smallest |value| at a voxel whose six neighbours are all on its side: a
 /// plane crossing none of the six unit segments around a point is at least
 /// 1/sqrt(3) from it.
@@ -474,7 +476,15 @@ class ChunkBand {
             sum += w * t * std::abs(normal[static_cast<std::size_t>(a)]);
             weights += w;
           }
-          const float d = weights > 1e-6f ? (inside ? -1.f : 1.f) * sum / weights : (inside ? -0.5f : 0.5f);
+          float d = weights > 1e-6f ? (inside ? -1.f : 1.f) * sum / weights : (inside ? -0.5f : 0.5f);
+          // A voxel with the other side on both faces along an axis is a feature one voxel
+          // thick: its blur cannot place either surface, and the mask puts them half a
+          // voxel away.
+          for (int a = 0; a < 3; ++a) {
+            const int di = a == 0, dj = a == 1, dk = a == 2;
+            if (maskAt(i - di, j - dj, k - dk) != inside && maskAt(i + di, j + dj, k + dk) != inside)
+              d = inside ? std::min(d, -0.5f) : std::max(d, 0.5f);
+          }
           // The mask decides the side; the surface is within one voxel of an interface voxel.
           planes[(i << 6) | (j << 3) | k] = {inside ? std::clamp(d, -1.f, -kSiteFloor) : std::clamp(d, kSiteFloor, 1.f),
                                               normal};
