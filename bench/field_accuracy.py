@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MPL-2.0
+# Copyright Contributors to the isovdb project.
 """Accuracy of the mask -> distance field -> mesh path on voxelised analytic solids.
 
 Spheres and tori of several radii, each centred at a random sub-voxel offset

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MPL-2.0
+# Copyright Contributors to the isovdb project.
 """Memory benchmark: stream a salt-like uint8 volume from disk into the mask and
 the narrow-band SDF written to a .vdb (`isovdb sdf`: the band goes to the file
 chunk by chunk and is never held whole), and compare peak RSS of the whole run

@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: MPL-2.0
+# Copyright Contributors to the isovdb project.
 """Evaluation of `isovdb morph` (issue #8, paper 002), on demand.
 
 1. Ground truth: an analytic torus tilted 30 degrees and a twisted rounded box,

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file openvdb_path.cc
 /// @brief `isovdb-openvdb-path`: OpenVDB's own mask -> mesh path, the peer row of
 ///        bench/peers.py: the mask read as isovdb reads it (the same ingest, so only

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MPL-2.0
+# Copyright Contributors to the isovdb project.
 """Peer benchmark: isovdb's four contouring methods against OpenVDB's own path, VTK and
 scikit-image, end to end (read -> mesh file), in the same session and on the same inputs,
 every output mesh validated by `isovdb check`. Prints one table; "time ratio" is a row's

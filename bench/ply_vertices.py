@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: MPL-2.0
+# Copyright Contributors to the isovdb project.
 """The vertex positions of a binary little-endian PLY file (float x, y, z first), for the
 benchmarks that measure meshes against analytic or reference surfaces."""
 from pathlib import Path

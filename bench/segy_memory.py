@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MPL-2.0
+# Copyright Contributors to the isovdb project.
 """Memory benchmark for SEG-Y ingest: a synthetic float SEG-Y cube (default
 1000 x 1000 x 500, about 90 % of the samples in the dead band |a| < 1000) is
 streamed trace by trace into the sparse amplitude grid; the peak RSS of the

@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: MPL-2.0
+# Copyright Contributors to the isovdb project.
 # Use ccache when it is installed: OpenVDB headers are heavy and the machine has
 # two cores. base_dir makes the cache key independent of where the checkout lives,
 # so a fresh clone (as CI makes) reuses what any other checkout compiled.

@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: MPL-2.0
+# Copyright Contributors to the isovdb project.
 """Type stub of the isovdb extension module (python_bindings/src); docstrings live in the module."""
 import os
 from typing import Any, Callable, Literal, Sequence

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MPL-2.0
+# Copyright Contributors to the isovdb project.
 # Installs the Debian 12 packages isovdb needs (build, tests, bindings, benchmarks).
 # Runs apt-get only when something is missing, so repeated runs are fast.
 set -euo pipefail

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: MPL-2.0
+# Copyright Contributors to the isovdb project.
 # The main job on the bundled real sample: the skeleton (label 13) of the
 # segmented frog volume -> closed triangle mesh out/frog_skeleton.ply, with its
 # statistics printed and written to out/frog_skeleton.json.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // `isovdb check MESH [--against VOLUME]`: the mesh validator, and the topology of
 // the mesh compared with the voxel object it claims to represent.
 #include "commands.h"
@@ -15,17 +17,19 @@ void addCheckCommand(CLI::App& app, Context& context) {
     int adjacency = 26;
   };
   auto state = std::make_shared<State>();
-  CLI::App* command = app.add_subcommand(
-      "check", "Validate a mesh: closed, manifold, self-intersections, Euler characteristic and genus. "
-               "Exit status 1 when a guarantee fails.");
+  CLI::App* command =
+      app.add_subcommand("check",
+                         "Validate a mesh: closed, manifold, self-intersections, Euler characteristic and genus. "
+                         "Exit status 1 when a guarantee fails.");
   command->add_option("MESH", state->mesh, "Mesh file (.ply)")->required();
   command->add_option("--against", state->against,
                       "Volume the mesh represents: compare chi(mesh) with 2*chi(solid) "
                       "(see --adjacency); the input flags below say how to read it");
-  command->add_option("--adjacency", state->adjacency,
-                      "With --against: 26 (inside voxels touching at an edge or a corner are connected) or 6 "
-                      "(faces only, background through faces and edges: the reading regular mode follows "
-                      "apart from Wenger's fixes)")
+  command
+      ->add_option("--adjacency", state->adjacency,
+                   "With --against: 26 (inside voxels touching at an edge or a corner are connected) or 6 "
+                   "(faces only, background through faces and edges: the reading regular mode follows "
+                   "apart from Wenger's fixes)")
       ->check(CLI::IsMember({6, 26}))
       ->capture_default_str();
   command->add_flag("--no-self-intersections", state->noSelfIntersections, "Skip the self-intersection test");

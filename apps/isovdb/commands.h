@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file commands.h
 /// @brief The subcommands of `isovdb`. Each file registers one; none holds an algorithm.
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // `isovdb convert IN -o OUT`: a volume to another format — SEG-Y or any input to a
 // sparse .vdb grid (transform and survey metadata kept), or a .vdb to dense float32
 // (.raw with a .nhdr header beside it, or .nrrd) for interchange.
@@ -19,10 +21,12 @@ void addConvertCommand(CLI::App& app, Context& context) {
   auto state = std::make_shared<State>();
   CLI::App* command = app.add_subcommand(
       "convert", "Volume -> sparse .vdb grid (SEG-Y keeps its survey metadata), or -> dense float32 .raw/.nrrd");
-  command->add_option("IN", state->input, "Volume file (.sgy, .segy, .vdb, .raw, .nrrd, .nhdr, .mhd, .mha)")->required();
-  command->add_option("-o,--output", state->output,
-                      "Output: .vdb (sparse grid), .nrrd (dense float32) or .raw (dense float32, little-endian, "
-                      "x fastest, with an NRRD header OUT.nhdr beside it)")
+  command->add_option("IN", state->input, "Volume file (.sgy, .segy, .vdb, .raw, .nrrd, .nhdr, .mhd, .mha)")
+      ->required();
+  command
+      ->add_option("-o,--output", state->output,
+                   "Output: .vdb (sparse grid), .nrrd (dense float32) or .raw (dense float32, little-endian, "
+                   "x fastest, with an NRRD header OUT.nhdr beside it)")
       ->required();
   command->add_option("--name", state->gridName, ".vdb output: grid name (default: field, mask or sdf by kind)");
   command->add_option("--stats", state->statsPath, "Also write the figures as JSON");

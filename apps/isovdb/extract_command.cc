@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // `isovdb extract IN -o OUT.ply`: the main job, volume -> closed triangle mesh.
 #include "commands.h"
 #include "input_flags.h"
@@ -22,43 +24,54 @@ void addExtractCommand(CLI::App& app, Context& context) {
   };
   auto state = std::make_shared<State>();
   CLI::App* command = app.add_subcommand("extract", "Volume -> triangle mesh (.ply or .obj)");
-  command->add_option("IN", state->input, "Volume file (.raw, .nrrd, .nhdr, .mhd, .mha, .sgy, .segy, .vdb)")->required();
+  command->add_option("IN", state->input, "Volume file (.raw, .nrrd, .nhdr, .mhd, .mha, .sgy, .segy, .vdb)")
+      ->required();
   command->add_option("-o,--output", state->output, "Output mesh (.ply binary, or .obj)")->required();
-  command->add_option("--method", state->method, "Contouring method: vdb (OpenVDB volumeToMesh), regular (manifold DMC), adaptive (DC + Ju-Udeshi)")
+  command
+      ->add_option("--method", state->method,
+                   "Contouring method: vdb (OpenVDB volumeToMesh), regular (manifold DMC), adaptive (DC + Ju-Udeshi)")
       ->capture_default_str();
-  command->add_option("--topology", state->topology,
-                      "regular: reading of ambiguous cells. voxels: the voxel object's topology (26-connected "
-                      "inside, 6-connected outside; Euler characteristic 2x the mask's), mdmc: Wenger's manifold "
-                      "DMC (inside corners of ambiguous faces separated, doubled faces regrouped), auto: voxels "
-                      "for masks, mdmc for fields")
+  command
+      ->add_option("--topology", state->topology,
+                   "regular: reading of ambiguous cells. voxels: the voxel object's topology (26-connected "
+                   "inside, 6-connected outside; Euler characteristic 2x the mask's), mdmc: Wenger's manifold "
+                   "DMC (inside corners of ambiguous faces separated, doubled faces regrouped), auto: voxels "
+                   "for masks, mdmc for fields")
       ->capture_default_str();
-  command->add_option("--iso", state->options.iso,
-                      "Isovalue: voxels on distance fields (0 = mask boundary), field units on scalars")
+  command
+      ->add_option("--iso", state->options.iso,
+                   "Isovalue: voxels on distance fields (0 = mask boundary), field units on scalars")
       ->capture_default_str();
   command->add_option("--adaptivity", state->options.adaptivity, "vdb method: OpenVDB adaptivity in [0,1]")
       ->capture_default_str();
   state->distanceFlags.add(*command, state->options.distance, /*streamed=*/false);
-  command->add_option("--meta-cell", state->options.octree.metaCellSize,
-                      "regular/adaptive: meta-cell size in voxels (power of two, 16..512; 0 = one block around "
-                      "the whole volume, no stitching)")
+  command
+      ->add_option("--meta-cell", state->options.octree.metaCellSize,
+                   "regular/adaptive: meta-cell size in voxels (power of two, 16..512; 0 = one block around "
+                   "the whole volume, no stitching)")
       ->capture_default_str();
   command->add_option("--threads", state->options.threads, "Worker threads (0 = every core); the output is the same")
       ->capture_default_str();
-  command->add_option("--min-level", state->options.octree.minLevel,
-                      "regular/adaptive: uniform subdivision down to this depth under the meta-cell "
-                      "(-1: --max-cell-size decides)")
+  command
+      ->add_option("--min-level", state->options.octree.minLevel,
+                   "regular/adaptive: uniform subdivision down to this depth under the meta-cell "
+                   "(-1: --max-cell-size decides)")
       ->capture_default_str();
-  command->add_option("--max-cell-size", state->options.octree.maxCellSize,
-                      "regular/adaptive: largest cell in voxels when --min-level is -1")
+  command
+      ->add_option("--max-cell-size", state->options.octree.maxCellSize,
+                   "regular/adaptive: largest cell in voxels when --min-level is -1")
       ->capture_default_str();
-  command->add_option("--max-level", state->options.octree.maxLevel,
-                      "regular/adaptive: deepest level under the meta-cell (-1: --finest-size decides)")
+  command
+      ->add_option("--max-level", state->options.octree.maxLevel,
+                   "regular/adaptive: deepest level under the meta-cell (-1: --finest-size decides)")
       ->capture_default_str();
-  command->add_option("--finest-size", state->options.octree.finestCellSize,
-                      "regular/adaptive: smallest cell in voxels (1, 2, 4, ...)")
+  command
+      ->add_option("--finest-size", state->options.octree.finestCellSize,
+                   "regular/adaptive: smallest cell in voxels (1, 2, 4, ...)")
       ->capture_default_str();
-  command->add_option("--qef-tolerance", state->options.octree.qefTolerance,
-                      "adaptive: split cells whose QEF residual (RMS, voxels) exceeds this; <0 off")
+  command
+      ->add_option("--qef-tolerance", state->options.octree.qefTolerance,
+                   "adaptive: split cells whose QEF residual (RMS, voxels) exceeds this; <0 off")
       ->capture_default_str();
   command->add_flag("!--no-intersection-free", state->options.octree.intersectionFree,
                     "adaptive: plain dual contouring without Ju-Udeshi fans (for comparison)");
@@ -67,9 +80,10 @@ void addExtractCommand(CLI::App& app, Context& context) {
                     "(e.g. a CAD level set .vdb). "
                     "Off by default: a field made from a voxel mask has a crease at every staircase step, and "
                     "following them costs 35-50% more triangles");
-  command->add_option("--boundary", state->boundary,
-                      "Surfaces reaching the data boundary (survey edge): cap (closed mesh, caps on the boundary) "
-                      "or open (caps dropped, the mesh ends on the boundary)")
+  command
+      ->add_option("--boundary", state->boundary,
+                   "Surfaces reaching the data boundary (survey edge): cap (closed mesh, caps on the boundary) "
+                   "or open (caps dropped, the mesh ends on the boundary)")
       ->capture_default_str();
   command->add_flag("--check", state->check, "Validate the mesh (closed, manifold, self-intersections, Euler)");
   command->add_flag("--no-self-intersections", state->noSelfIntersections,
@@ -79,7 +93,8 @@ void addExtractCommand(CLI::App& app, Context& context) {
   command->callback([state, &context] {
     mesh::Mesh mesh;
     const auto method = pipeline::parseContourMethod(state->method);
-    if (!method) throw InputError("--method: unknown method '" + state->method + "', expected vdb, regular or adaptive");
+    if (!method)
+      throw InputError("--method: unknown method '" + state->method + "', expected vdb, regular or adaptive");
     state->options.method = *method;
     state->distanceFlags.apply(state->options.distance);
     if (state->topology != "auto") {
@@ -121,9 +136,8 @@ void addExtractCommand(CLI::App& app, Context& context) {
       const mesh::MeshReport report = mesh::validateMesh(mesh, {.selfIntersections = !state->noSelfIntersections});
       stats["check"] = pipeline::toJson(report);
       // --boundary open asks for a mesh that ends on the data boundary: not closed by design.
-      passed = pipeline::passesGuarantees(report) ||
-               (state->options.boundary == pipeline::BoundaryMode::Open && report.manifold &&
-                report.selfIntersectingPairs <= 0);
+      passed = pipeline::passesGuarantees(report) || (state->options.boundary == pipeline::BoundaryMode::Open &&
+                                                      report.manifold && report.selfIntersectingPairs <= 0);
       stats["passed"] = passed;
     }
     stats.recordMemory();

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // `isovdb info IN`: what a volume file holds and what its sparse grid costs.
 #include "commands.h"
 #include "input_flags.h"
@@ -13,9 +15,12 @@ void addInfoCommand(CLI::App& app, Context& context) {
     std::string statsPath;
   };
   auto state = std::make_shared<State>();
-  CLI::App* command = app.add_subcommand("info", "Describe a volume: header (SEG-Y geometry), value range and percentiles, fraction active for --clip, "
+  CLI::App* command = app.add_subcommand(
+      "info",
+      "Describe a volume: header (SEG-Y geometry), value range and percentiles, fraction active for --clip, "
       "active voxels, leaves, tiles, memory");
-  command->add_option("IN", state->input, "Volume file (.raw, .nrrd, .nhdr, .mhd, .mha, .sgy, .segy, .vdb)")->required();
+  command->add_option("IN", state->input, "Volume file (.raw, .nrrd, .nhdr, .mhd, .mha, .sgy, .segy, .vdb)")
+      ->required();
   command->add_option("--stats", state->statsPath, "Also write the figures as JSON");
   state->flags.add(*command);
   command->callback([state, &context] {

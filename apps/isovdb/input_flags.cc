@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "input_flags.h"
 
 #include "isovdb/errors.h"
@@ -5,12 +7,15 @@
 namespace isovdb::cli {
 
 void InputFlags::add(CLI::App& command, bool rawSpacing) {
-  command.add_option("--dims", dims, "Raw volumes: samples along x,y,z (e.g. 256,256,128)")->delimiter(',')->expected(3);
+  command.add_option("--dims", dims, "Raw volumes: samples along x,y,z (e.g. 256,256,128)")
+      ->delimiter(',')
+      ->expected(3);
   command.add_option("--type", type, "Raw volumes: sample type (uint8, uint16, float32, int16, ...)");
   command.add_flag("--big-endian", bigEndian, "Raw volumes: samples are big-endian");
   if (rawSpacing)
     command.add_option("--spacing", spacing, "Raw volumes: voxel size x,y,z in world units (default 1,1,1)")
-        ->delimiter(',')->expected(3);
+        ->delimiter(',')
+        ->expected(3);
   command.add_option("--header-bytes", headerBytes, "Raw volumes: bytes to skip before the samples");
   command.add_option("--threshold", threshold, "Mask: inside = value > THRESHOLD (default 0)");
   command.add_option("--labels", labels, "Mask: inside = value is one of these labels (e.g. 13 or 3,4)")
@@ -47,20 +52,23 @@ pipeline::InputOptions InputFlags::toOptions(const std::string& path) const {
 
 void DistanceFlags::add(CLI::App& command, volume::DistanceFieldOptions& options, bool streamed) {
   method = volume::distanceMethodName(options.method);
-  command.add_option("--distance", method,
-                     "Distance field of a mask. interface: sub-voxel distances at the mask's interface from a small "
-                     "Gaussian blur, the band along the nearest interface voxel's tangent plane (fast; every sign "
-                     "the mask's). tracker: OpenVDB's topologyToLevelSet + sdfToSdf (slow; for comparison)")
+  command
+      .add_option("--distance", method,
+                  "Distance field of a mask. interface: sub-voxel distances at the mask's interface from a small "
+                  "Gaussian blur, the band along the nearest interface voxel's tangent plane (fast; every sign "
+                  "the mask's). tracker: OpenVDB's topologyToLevelSet + sdfToSdf (slow; for comparison)")
       ->capture_default_str();
   command.add_option("--half-width", options.halfWidth, "Distance-field band half-width (voxels)")
       ->capture_default_str();
-  command.add_option("--sdf-chunk", options.chunkSize,
-                     std::string("Distance field computed in cubes of this many voxels (multiple of 8") +
-                         (streamed ? ") and written to the file as they finish" : ")") +
-                         "; 0 = tracker: the whole band at once, in memory")
+  command
+      .add_option("--sdf-chunk", options.chunkSize,
+                  std::string("Distance field computed in cubes of this many voxels (multiple of 8") +
+                      (streamed ? ") and written to the file as they finish" : ")") +
+                      "; 0 = tracker: the whole band at once, in memory")
       ->capture_default_str();
-  command.add_option("--closing", options.closingSteps,
-                     "Morphological closing steps before the distance field (changes topology)")
+  command
+      .add_option("--closing", options.closingSteps,
+                  "Morphological closing steps before the distance field (changes topology)")
       ->capture_default_str();
 }
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file input_flags.h
 /// @brief The flags that say how to read an input volume, shared by every subcommand
 ///        (they map one to one onto pipeline::InputOptions).

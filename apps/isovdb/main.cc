@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // isovdb: sparse volumes to clean triangle meshes. Parses arguments and runs one
 // subcommand; all the work is in the library (pipeline/).
 #include <cstdio>

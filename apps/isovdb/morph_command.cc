@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // `isovdb morph SLICES -o OUT.ply`: a sparse stack of planar slices (a folder of
 // PNG/BMP images, or a binary volume with only some z-slices labelled) → level-set
 // metamorphosis fills the gaps → the completed stack is contoured like any volume.
@@ -34,9 +36,10 @@ void addMorphCommand(CLI::App& app, Context& context) {
     InputFlags flags;
   };
   auto state = std::make_shared<State>();
-  CLI::App* command = app.add_subcommand(
-      "morph", "Sparse planar slices (folder of PNG/BMP, or a volume with some z-slices labelled) -> "
-               "level-set metamorphosis between them -> mesh");
+  CLI::App* command =
+      app.add_subcommand("morph",
+                         "Sparse planar slices (folder of PNG/BMP, or a volume with some z-slices labelled) -> "
+                         "level-set metamorphosis between them -> mesh");
   command->add_option("SLICES", state->input, "Folder of slice images (.png/.bmp), or a binary volume file")
       ->required();
   command->add_option("-o,--output", state->output, "Output mesh (.ply or .obj)")->required();
@@ -47,30 +50,35 @@ void addMorphCommand(CLI::App& app, Context& context) {
   command->add_option("--z-step", state->zStep,
                       "Distance between the planes of the completed stack (default: the pixel size; "
                       "volume input: its z spacing)");
-  command->add_option("--slice-step", state->volumeSlices.step,
-                      "Volume input: labelled slices are every K-th z-slice (0 = every non-empty z-slice)")
+  command
+      ->add_option("--slice-step", state->volumeSlices.step,
+                   "Volume input: labelled slices are every K-th z-slice (0 = every non-empty z-slice)")
       ->capture_default_str();
   command->add_option("--slice-offset", state->volumeSlices.offset, "Volume input: first labelled z-slice")
       ->capture_default_str();
   command->add_option("--method", state->method, "Contouring: vdb, regular or adaptive")->capture_default_str();
-  command->add_flag("--pls", state->pls, "Particle level set correction (Enright et al.; paper 002 Alg. 3.2-3.3; much slower)");
+  command->add_flag("--pls", state->pls,
+                    "Particle level set correction (Enright et al.; paper 002 Alg. 3.2-3.3; much slower)");
   command->add_flag("!--no-centring", state->options.pair.centre,
                     "Never centre: by default both contours are centred on their convex-hull centroids when "
                     "that makes them overlap more (one moving object), else morphed where they lie");
   command->add_flag("!--no-area-match", state->options.pair.matchArea,
                     "Keep each morphed slice's own area instead of setting it to the linear blend of the two "
                     "originals' areas (one offset of its distance)");
-  command->add_option("--interpolate", state->interpolation,
-                      "levelset (metamorphosis), nearest (copy the nearer slice) or linear (shape-based: "
-                      "blend of the two signed distances)")
+  command
+      ->add_option("--interpolate", state->interpolation,
+                   "levelset (metamorphosis), nearest (copy the nearer slice) or linear (shape-based: "
+                   "blend of the two signed distances)")
       ->capture_default_str();
-  command->add_option("--progress", state->progress,
-                      "Which iterate each intermediate slice shows (uniform progress): exponential (time of "
-                      "arrival from the exponential approach, one time warp), arrival (measured per pixel) or "
-                      "iterations (evenly spaced iterations, paper 002; bunches near the target)")
+  command
+      ->add_option("--progress", state->progress,
+                   "Which iterate each intermediate slice shows (uniform progress): exponential (time of "
+                   "arrival from the exponential approach, one time warp), arrival (measured per pixel) or "
+                   "iterations (evenly spaced iterations, paper 002; bunches near the target)")
       ->capture_default_str();
-  command->add_option("--tolerance", state->options.pair.evolution.tolerance,
-                      "Convergence (paper 002 eq. 3.13, Frobenius norm scaled to 64x64)")
+  command
+      ->add_option("--tolerance", state->options.pair.evolution.tolerance,
+                   "Convergence (paper 002 eq. 3.13, Frobenius norm scaled to 64x64)")
       ->capture_default_str();
   command->add_option("--max-iterations", state->options.pair.evolution.maxIterations, "Per pair")
       ->capture_default_str();
@@ -89,7 +97,8 @@ void addMorphCommand(CLI::App& app, Context& context) {
   command->callback([state, &context] {
     pipeline::ExtractOptions extract;
     const auto method = pipeline::parseContourMethod(state->method);
-    if (!method) throw InputError("--method: unknown method '" + state->method + "', expected vdb, regular or adaptive");
+    if (!method)
+      throw InputError("--method: unknown method '" + state->method + "', expected vdb, regular or adaptive");
     extract.method = *method;
     extract.threads = state->threads;
     morph::ReconstructOptions& options = state->options;
@@ -119,10 +128,11 @@ void addMorphCommand(CLI::App& app, Context& context) {
             state->input, {.heightsFile = state->heights, .spacing = state->spacing, .pixelSize = state->pixelSize});
       } else {
         if (!state->heights.empty() || state->spacing > 0)
-          throw InputError("'" + state->input + "': --heights and --spacing apply to a folder of slice images; "
+          throw InputError("'" + state->input +
+                           "': --heights and --spacing apply to a folder of slice images; "
                            "a volume's heights are its z positions");
-        const volume::Volume input = pipeline::loadVolume(state->input, state->flags.toOptions(state->input),
-                                                          context.interrupter(), &stats);
+        const volume::Volume input =
+            pipeline::loadVolume(state->input, state->flags.toOptions(state->input), context.interrupter(), &stats);
         stack = morph::sliceStackFromVolume(input, state->volumeSlices);
       }
       if (state->zStep > 0) stack.zStep = state->zStep;

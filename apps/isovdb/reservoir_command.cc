@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // `isovdb reservoir GRID.grdecl [MORE.grdecl...] --property NAME --iso V -o OUT.ply`:
 // isosurface of a cell property of a corner-point reservoir grid (paper 003).
 #include <iostream>
@@ -16,9 +18,10 @@ void addReservoirCommand(CLI::App& app, Context& context) {
     pipeline::ReservoirOptions options;
   };
   auto state = std::make_shared<State>();
-  CLI::App* command = app.add_subcommand(
-      "reservoir", "Corner-point grid (Eclipse GRDECL) -> isosurface of a cell property (Marching Cubes on "
-                   "hexahedra, Jacobian normals)");
+  CLI::App* command =
+      app.add_subcommand("reservoir",
+                         "Corner-point grid (Eclipse GRDECL) -> isosurface of a cell property (Marching Cubes on "
+                         "hexahedra, Jacobian normals)");
   command->add_option("GRID", state->inputs, "GRDECL deck, then optional files with more keywords (properties)")
       ->required();
   command->add_option("--property", state->options.property, "Cell property keyword (PORO, FACIES, PERMX, ...)")
@@ -50,7 +53,8 @@ void addReservoirCommand(CLI::App& app, Context& context) {
       pipeline::Statistics::StageTimer timer(&stats, "write");
       io::writeMesh(state->output, mesh);
     }
-    for (const auto& w : stats["reservoir"]["warnings"]) std::cerr << "isovdb: warning: " << w.get<std::string>() << '\n';
+    for (const auto& w : stats["reservoir"]["warnings"])
+      std::cerr << "isovdb: warning: " << w.get<std::string>() << '\n';
     stats["output"]["path"] = state->output;
     stats["output"]["triangles"] = mesh.triangleCount();
     stats["output"]["vertices"] = mesh.vertexCount();

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // `isovdb sdf IN -o OUT.vdb`: the narrow-band signed distance field as a level-set .vdb.
 #include "commands.h"
 #include "input_flags.h"

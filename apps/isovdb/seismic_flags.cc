@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "seismic_flags.h"
-
 
 namespace isovdb::cli {
 

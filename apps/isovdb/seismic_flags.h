@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file seismic_flags.h
 /// @brief The input flags of SEG-Y amplitude cubes (and of amplitude-like scalars):
 ///        header byte positions, the dead band, and the two binary masks.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "terminal_progress.h"
 
 #include <unistd.h>
@@ -42,8 +44,10 @@ bool TerminalProgress::wasInterrupted(int percent) {
   if (percent / step == stage.lastPercent / step && stage.lastPercent >= 0) return false;
   stage.lastPercent = percent;
   stage.shown = true;
-  if (tty_) std::fprintf(stderr, "\r\033[K%s: %3d%%", stage.name.c_str(), percent);
-  else std::fprintf(stderr, "%s: %d%%\n", stage.name.c_str(), percent);
+  if (tty_)
+    std::fprintf(stderr, "\r\033[K%s: %3d%%", stage.name.c_str(), percent);
+  else
+    std::fprintf(stderr, "%s: %d%%\n", stage.name.c_str(), percent);
   std::fflush(stderr);
   return false;
 }

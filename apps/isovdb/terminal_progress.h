@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file terminal_progress.h
 /// @brief Progress on stderr for work longer than a second; `--quiet` disables it.
 #pragma once

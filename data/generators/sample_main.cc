@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file sample_main.cc
 /// @brief `isovdb-sample`: writes a synthetic binary volume of known topology.
 ///
@@ -44,8 +46,7 @@ std::string chiText(ShapeKind kind) {
   return chiKnown(kind) ? std::to_string(isovdb::samples::knownEulerCharacteristic(kind)) : "?";
 }
 
-std::string nrrdHeader(ShapeKind kind, const ShapeOptions& options,
-                       const std::array<std::int64_t, 3>& dims) {
+std::string nrrdHeader(ShapeKind kind, const ShapeOptions& options, const std::array<std::int64_t, 3>& dims) {
   std::string header = "NRRD0004\n";
   header += "# isovdb-sample " + std::string(isovdb::samples::shapeName(kind)) + " --size " +
             std::to_string(options.size) +
@@ -53,8 +54,7 @@ std::string nrrdHeader(ShapeKind kind, const ShapeOptions& options,
             ": Euler characteristic " + chiText(kind) + "\n";
   header += "type: uint8\n";
   header += "dimension: 3\n";
-  header += "sizes: " + std::to_string(dims[0]) + " " + std::to_string(dims[1]) + " " +
-            std::to_string(dims[2]) + "\n";
+  header += "sizes: " + std::to_string(dims[0]) + " " + std::to_string(dims[1]) + " " + std::to_string(dims[2]) + "\n";
   header += "spacings: 1 1 1\n";
   header += "encoding: raw\n";
   header += "\n";
@@ -95,11 +95,8 @@ int main(int argc, char** argv) {
   bool list = false;
   app.add_flag("--list", list, "List the shapes with their Euler characteristic and exit");
   app.add_option("shape", shape, "Shape name (see --list)");
-  app.add_option("--size,-n", options.size, "Edge of the volume in voxels (16..16384)")
-      ->capture_default_str();
-  app.add_option("--label", label, "Value of inside voxels (1..255)")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 255));
+  app.add_option("--size,-n", options.size, "Edge of the volume in voxels (16..16384)")->capture_default_str();
+  app.add_option("--label", label, "Value of inside voxels (1..255)")->capture_default_str()->check(CLI::Range(1, 255));
   app.add_option("--seed", options.seed, "Seed of the random bodies (blobs)")->capture_default_str();
   app.add_option("-o,--output", output, "Output file (.nrrd or .raw)");
   CLI11_PARSE(app, argc, argv);
@@ -110,8 +107,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (shape.empty() || output.empty()) {
-      std::fprintf(stderr, "isovdb-sample: SHAPE and -o OUT are required (or --list)\n%s",
-                   app.help().c_str());
+      std::fprintf(stderr, "isovdb-sample: SHAPE and -o OUT are required (or --list)\n%s", app.help().c_str());
       return 2;
     }
     const std::optional<ShapeKind> kind = isovdb::samples::parseShape(shape);

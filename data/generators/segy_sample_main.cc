@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file segy_sample_main.cc
 /// @brief `isovdb-segy-sample`: writes a synthetic SEG-Y amplitude cube with a
 ///        salt-like body, for benchmarks (and any size of test).
@@ -58,10 +60,15 @@ int main(int argc, char** argv) {
   std::string output;
   app.add_option("-o,--output", output, "Output SEG-Y file")->required();
   app.add_option("--inlines", spec.inlines, "Inlines (grid x)")->capture_default_str()->check(CLI::Range(1, 100000));
-  app.add_option("--crosslines", spec.crosslines, "Crosslines (grid y)")->capture_default_str()->check(CLI::Range(1, 100000));
-  app.add_option("--samples", spec.samples, "Samples per trace (grid z)")->capture_default_str()->check(CLI::Range(1, 32767));
+  app.add_option("--crosslines", spec.crosslines, "Crosslines (grid y)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
+  app.add_option("--samples", spec.samples, "Samples per trace (grid z)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 32767));
   app.add_option("--format", spec.formatCode, "SEG-Y sample format: 1 IBM float, 2 int32, 3 int16, 5 IEEE float")
-      ->capture_default_str()->check(CLI::IsMember({1, 2, 3, 5}));
+      ->capture_default_str()
+      ->check(CLI::IsMember({1, 2, 3, 5}));
   app.add_flag("--little-endian", spec.littleEndian, "Byte-swap the whole file");
   app.add_flag("--crossline-sorted", spec.crosslineSorted, "Order traces crossline by crossline");
   CLI11_PARSE(app, argc, argv);
@@ -87,8 +94,8 @@ int main(int argc, char** argv) {
       total += spec.samples;
       return true;
     });
-    std::printf("wrote %s: %d x %d x %d, %.1f %% of samples with |a| >= %g (outside the dead band)\n",
-                output.c_str(), spec.inlines, spec.crosslines, spec.samples, 100.0 * active / total, kClip);
+    std::printf("wrote %s: %d x %d x %d, %.1f %% of samples with |a| >= %g (outside the dead band)\n", output.c_str(),
+                spec.inlines, spec.crosslines, spec.samples, 100.0 * active / total, kClip);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "isovdb-segy-sample: error: %s\n", e.what());
     return 2;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "generators/segy_writer.h"
 
 #include <segyio/segy.h>
@@ -36,9 +38,12 @@ class FieldWriter {
 
 int sampleBytes(int formatCode) {
   switch (formatCode) {
-    case SEGY_SIGNED_SHORT_2_BYTE: return 2;
-    case SEGY_SIGNED_CHAR_1_BYTE: return 1;
-    default: return 4;
+    case SEGY_SIGNED_SHORT_2_BYTE:
+      return 2;
+    case SEGY_SIGNED_CHAR_1_BYTE:
+      return 1;
+    default:
+      return 4;
   }
 }
 
@@ -53,11 +58,17 @@ void encodeSamples(const SegyCubeSpec& spec, const float* values, int count, cha
   for (int s = 0; s < count; ++s) {
     const int byte = 1 + s * size;
     switch (spec.formatCode) {
-      case SEGY_SIGNED_SHORT_2_BYTE: writer.put(byte, clampedRound(values[s], -32768, 32767), 2); break;
-      case SEGY_SIGNED_CHAR_1_BYTE: writer.put(byte, clampedRound(values[s], -128, 127), 1); break;
+      case SEGY_SIGNED_SHORT_2_BYTE:
+        writer.put(byte, clampedRound(values[s], -32768, 32767), 2);
+        break;
+      case SEGY_SIGNED_CHAR_1_BYTE:
+        writer.put(byte, clampedRound(values[s], -128, 127), 1);
+        break;
       case SEGY_SIGNED_INTEGER_4_BYTE:
-        writer.put(byte, clampedRound(values[s], std::numeric_limits<std::int32_t>::min(),
-                                      std::numeric_limits<std::int32_t>::max()), 4);
+        writer.put(
+            byte,
+            clampedRound(values[s], std::numeric_limits<std::int32_t>::min(), std::numeric_limits<std::int32_t>::max()),
+            4);
         break;
       case SEGY_IBM_FLOAT_4_BYTE: {
         float ibm = values[s];
@@ -65,7 +76,8 @@ void encodeSamples(const SegyCubeSpec& spec, const float* values, int count, cha
         std::uint32_t bits = 0;
         std::memcpy(&bits, &ibm, 4);
         const auto* be = reinterpret_cast<const unsigned char*>(&bits);
-        writer.put(byte, (std::uint32_t{be[0]} << 24) | (std::uint32_t{be[1]} << 16) | (std::uint32_t{be[2]} << 8) | be[3], 4);
+        writer.put(
+            byte, (std::uint32_t{be[0]} << 24) | (std::uint32_t{be[1]} << 16) | (std::uint32_t{be[2]} << 8) | be[3], 4);
         break;
       }
       default: {  // IEEE float, and any other code: 4 bytes of IEEE bits
@@ -93,7 +105,7 @@ long long writeSegyCube(const std::filesystem::path& path, const SegyCubeSpec& s
   bin.put(SEGY_BIN_FORMAT, spec.formatCode, 2);
   bin.put(SEGY_BIN_SORTING_CODE, 4, 2);  // post-stack
   bin.put(SEGY_BIN_SEGY_REVISION, 0x0100, 2);
-  bin.put(SEGY_BIN_TRACE_FLAG, 1, 2);    // fixed-length traces
+  bin.put(SEGY_BIN_TRACE_FLAG, 1, 2);  // fixed-length traces
   file.write(binary.data(), binary.size());
 
   std::vector<char> header(SEGY_TRACE_HEADER_SIZE);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file segy_writer.h
 /// @brief A small SEG-Y writer for synthetic cubes: test inputs built in code and
 ///        large benchmark cubes, written trace by trace (memory: one trace).
@@ -21,15 +23,15 @@ struct SegyCubeSpec {
   int samples = 50;     ///< samples per trace (grid z)
   int firstInline = 1, inlineStep = 1;
   int firstCrossline = 1, crosslineStep = 1;
-  int formatCode = 5;          ///< 1 IBM float, 2 int32, 3 int16, 5 IEEE float, 8 int8 (any code is written as is)
-  bool littleEndian = false;   ///< byte-swap the whole file
-  bool crosslineSorted = false;///< traces ordered crossline by crossline
+  int formatCode = 5;            ///< 1 IBM float, 2 int32, 3 int16, 5 IEEE float, 8 int8 (any code is written as is)
+  bool littleEndian = false;     ///< byte-swap the whole file
+  bool crosslineSorted = false;  ///< traces ordered crossline by crossline
   int sampleIntervalUs = 4000;
-  int delayMs = 0;             ///< trace header byte 109
-  int inlineByte = 189;        ///< 4-byte trace header field of the inline number
-  int crosslineByte = 193;     ///< 4-byte trace header field of the crossline number
-  double inlineSpacing = 25.0;    ///< CDP Y grows by this per inline index (written in decimetres)
-  double crosslineSpacing = 25.0; ///< CDP X grows by this per crossline index
+  int delayMs = 0;                 ///< trace header byte 109
+  int inlineByte = 189;            ///< 4-byte trace header field of the inline number
+  int crosslineByte = 193;         ///< 4-byte trace header field of the crossline number
+  double inlineSpacing = 25.0;     ///< CDP Y grows by this per inline index (written in decimetres)
+  double crosslineSpacing = 25.0;  ///< CDP X grows by this per crossline index
 };
 
 /// Fills one trace (spec.samples values) of inline index i, crossline index j

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "generators/shapes.h"
 
 #include <algorithm>
@@ -24,9 +26,8 @@ struct ShapeInfo {
   std::string_view description;
 };
 
-constexpr std::array<ShapeKind, 6> kAllShapes{ShapeKind::Sphere,     ShapeKind::Torus,
-                                              ShapeKind::Genus2,     ShapeKind::GyroidSlab,
-                                              ShapeKind::SaltDome,   ShapeKind::Blobs};
+constexpr std::array<ShapeKind, 6> kAllShapes{ShapeKind::Sphere,     ShapeKind::Torus,    ShapeKind::Genus2,
+                                              ShapeKind::GyroidSlab, ShapeKind::SaltDome, ShapeKind::Blobs};
 constexpr std::span<const ShapeKind> kKnownTopology(kAllShapes.data(), 5);
 
 // Euler characteristics (chi = components - handles + cavities) and why:
@@ -52,8 +53,7 @@ constexpr int kUnknownChi = 0;
 constexpr std::array<ShapeInfo, 6> kShapeInfo{{
     {ShapeKind::Sphere, "sphere", 1, "ball of radius 0.8 (radius 0.4*size voxels)"},
     {ShapeKind::Torus, "torus", 0, "solid torus, major radius 0.6, minor radius 0.25, axis z"},
-    {ShapeKind::Genus2, "genus2", -1,
-     "two solid tori (R 0.34, r 0.16) fused side by side: a genus-2 handlebody"},
+    {ShapeKind::Genus2, "genus2", -1, "two solid tori (R 0.34, r 0.16) fused side by side: a genus-2 handlebody"},
     {ShapeKind::GyroidSlab, "gyroid-slab", -6,
      "gyroid labyrinth (period size/2) clipped to a 1.5 x 1.5 x 1 period box, "
      "size x size x 5/8 size; chi established numerically"},
@@ -76,10 +76,9 @@ constexpr int kMaxSize = 16384;
 
 void validate(const ShapeOptions& options) {
   if (options.size < kMinSize || options.size > kMaxSize)
-    throw InputError("ShapeOptions.size: expected " + std::to_string(kMinSize) + ".." +
-                     std::to_string(kMaxSize) + " voxels, got " + std::to_string(options.size));
-  if (options.label == 0)
-    throw InputError("ShapeOptions.label: expected 1..255 (0 is the outside value), got 0");
+    throw InputError("ShapeOptions.size: expected " + std::to_string(kMinSize) + ".." + std::to_string(kMaxSize) +
+                     " voxels, got " + std::to_string(options.size));
+  if (options.label == 0) throw InputError("ShapeOptions.label: expected 1..255 (0 is the outside value), got 0");
 }
 
 struct Vec3 {
@@ -180,14 +179,10 @@ constexpr double kGyroidFrequency = 2.0 * std::numbers::pi;
 constexpr double kBoxXY = 0.75;
 constexpr double kBoxZ = 0.5;
 
-bool inGyroidBox(Vec3 q) {
-  return std::abs(q.x) <= kBoxXY && std::abs(q.y) <= kBoxXY && std::abs(q.z) <= kBoxZ;
-}
+bool inGyroidBox(Vec3 q) { return std::abs(q.x) <= kBoxXY && std::abs(q.y) <= kBoxXY && std::abs(q.z) <= kBoxZ; }
 
 /// Gyroid value from the sines and cosines of the three scaled coordinates.
-double gyroid(double sx, double cx, double sy, double cy, double sz, double cz) {
-  return sx * cy + sy * cz + sz * cx;
-}
+double gyroid(double sx, double cx, double sy, double cy, double sz, double cz) { return sx * cy + sy * cz + sz * cx; }
 
 // Blobs: kBlobCount ellipsoids with centres uniform in [-0.92, 0.92]^3, a size r
 // log-uniform in [kBlobMinRadius, kBlobMaxRadius] (many small bodies, a few
@@ -253,9 +248,7 @@ class Sampler {
   const std::array<std::int64_t, 3>& dims() const { return dims_; }
 
   /// Normalised coordinate of index-space coordinate `x` along `axis`.
-  double normalised(int axis, double x) const {
-    return (2.0 * (x + 0.5) - static_cast<double>(dims_[axis])) / size_;
-  }
+  double normalised(int axis, double x) const { return (2.0 * (x + 0.5) - static_cast<double>(dims_[axis])) / size_; }
 
   bool insideIndex(double x, double y, double z) const {
     const Vec3 q{normalised(0, x), normalised(1, y), normalised(2, z)};
@@ -264,16 +257,20 @@ class Sampler {
         std::abs(q.z) > static_cast<double>(dims_[2]) / size_ + 1e-12)
       return false;
     switch (kind_) {
-      case ShapeKind::Sphere: return sphereField(q) < 0.0;
-      case ShapeKind::Torus: return torusField(q, {0.0, 0.0, 0.0}, 0.6, 0.25) < 0.0;
-      case ShapeKind::Genus2: return genus2Field(q) < 0.0;
+      case ShapeKind::Sphere:
+        return sphereField(q) < 0.0;
+      case ShapeKind::Torus:
+        return torusField(q, {0.0, 0.0, 0.0}, 0.6, 0.25) < 0.0;
+      case ShapeKind::Genus2:
+        return genus2Field(q) < 0.0;
       case ShapeKind::GyroidSlab: {
         if (!inGyroidBox(q)) return false;
         const double w = kGyroidFrequency;
-        return gyroid(std::sin(w * q.x), std::cos(w * q.x), std::sin(w * q.y), std::cos(w * q.y),
-                      std::sin(w * q.z), std::cos(w * q.z)) > 0.0;
+        return gyroid(std::sin(w * q.x), std::cos(w * q.x), std::sin(w * q.y), std::cos(w * q.y), std::sin(w * q.z),
+                      std::cos(w * q.z)) > 0.0;
       }
-      case ShapeKind::SaltDome: return saltDomeField(q) < 0.0;
+      case ShapeKind::SaltDome:
+        return saltDomeField(q) < 0.0;
       case ShapeKind::Blobs:
         return std::any_of(blobs_.begin(), blobs_.end(), [&q](const Ellipsoid& e) { return e.form(q) <= 1.0; });
     }
@@ -293,15 +290,13 @@ class Sampler {
       return;
     }
     const double zd = static_cast<double>(z);
-    tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, ny, 8),
-                      [&](const tbb::blocked_range<std::int64_t>& rows) {
-                        for (std::int64_t y = rows.begin(); y != rows.end(); ++y) {
-                          std::uint8_t* row = out + y * nx;
-                          const double yd = static_cast<double>(y);
-                          for (std::int64_t x = 0; x < nx; ++x)
-                            row[x] = insideIndex(static_cast<double>(x), yd, zd) ? label : 0;
-                        }
-                      });
+    tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, ny, 8), [&](const tbb::blocked_range<std::int64_t>& rows) {
+      for (std::int64_t y = rows.begin(); y != rows.end(); ++y) {
+        std::uint8_t* row = out + y * nx;
+        const double yd = static_cast<double>(y);
+        for (std::int64_t x = 0; x < nx; ++x) row[x] = insideIndex(static_cast<double>(x), yd, zd) ? label : 0;
+      }
+    });
   }
 
  private:
@@ -335,8 +330,8 @@ class Sampler {
           const double discriminant = b * b - a * c;
           if (discriminant < 0.0) continue;
           const double root = std::sqrt(discriminant);
-          const std::int64_t first = std::max<std::int64_t>(
-              0, clampIndex(std::floor(indexOf(0, e->centre.x + (-b - root) / a)) - 1.0, nx));
+          const std::int64_t first =
+              std::max<std::int64_t>(0, clampIndex(std::floor(indexOf(0, e->centre.x + (-b - root) / a)) - 1.0, nx));
           const std::int64_t last = std::min<std::int64_t>(
               nx - 1, clampIndex(std::ceil(indexOf(0, e->centre.x + (-b + root) / a)) + 1.0, nx));
           for (std::int64_t x = first; x <= last; ++x)
@@ -363,20 +358,18 @@ class Sampler {
       cx[x] = std::cos(w * qx);
       inX[x] = std::abs(qx) <= kBoxXY;
     }
-    tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, ny, 8),
-                      [&](const tbb::blocked_range<std::int64_t>& rows) {
-                        for (std::int64_t y = rows.begin(); y != rows.end(); ++y) {
-                          std::uint8_t* row = out + y * nx;
-                          const double qy = normalised(1, static_cast<double>(y));
-                          if (std::abs(qy) > kBoxXY) {
-                            std::fill_n(row, nx, std::uint8_t{0});
-                            continue;
-                          }
-                          const double sy = std::sin(w * qy), cy = std::cos(w * qy);
-                          for (std::int64_t x = 0; x < nx; ++x)
-                            row[x] = inX[x] && gyroid(sx[x], cx[x], sy, cy, sz, cz) > 0.0 ? label : 0;
-                        }
-                      });
+    tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, ny, 8), [&](const tbb::blocked_range<std::int64_t>& rows) {
+      for (std::int64_t y = rows.begin(); y != rows.end(); ++y) {
+        std::uint8_t* row = out + y * nx;
+        const double qy = normalised(1, static_cast<double>(y));
+        if (std::abs(qy) > kBoxXY) {
+          std::fill_n(row, nx, std::uint8_t{0});
+          continue;
+        }
+        const double sy = std::sin(w * qy), cy = std::cos(w * qy);
+        for (std::int64_t x = 0; x < nx; ++x) row[x] = inX[x] && gyroid(sx[x], cx[x], sy, cy, sz, cz) > 0.0 ? label : 0;
+      }
+    });
   }
 
   ShapeKind kind_;
@@ -405,8 +398,7 @@ class ShapeSliceStream final : public io::SliceStream {
       throw InputError(source_ + ": slice " + std::to_string(next_) + " requested, the volume has " +
                        std::to_string(header_.dims[2]) + " slices");
     sampler_.fillSlice(next_, label_, bytes_.data());
-    std::transform(bytes_.begin(), bytes_.end(), out,
-                   [](std::uint8_t value) { return static_cast<float>(value); });
+    std::transform(bytes_.begin(), bytes_.end(), out, [](std::uint8_t value) { return static_cast<float>(value); });
     ++next_;
   }
 
@@ -456,8 +448,7 @@ bool inside(ShapeKind kind, const ShapeOptions& options, double x, double y, dou
   return Sampler(kind, options).insideIndex(x, y, z);
 }
 
-void generateSlice(ShapeKind kind, const ShapeOptions& options, std::int64_t z,
-                   std::uint8_t* out) {
+void generateSlice(ShapeKind kind, const ShapeOptions& options, std::int64_t z, std::uint8_t* out) {
   const Sampler sampler(kind, options);
   if (z < 0 || z >= sampler.dims()[2])
     throw InputError("generateSlice: slice " + std::to_string(z) + " out of range 0.." +

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file shapes.h
 /// @brief Analytic solids sampled at voxel centres: synthetic binary volumes of
 ///        known topology for tests and benchmarks (sphere, torus, genus-2,
@@ -78,8 +80,7 @@ bool inside(ShapeKind kind, const ShapeOptions& options, double x, double y, dou
 /// (dims[0] * dims[1] bytes, x fastest): options.label inside, 0 outside.
 /// Rows are computed in parallel (TBB); the result does not depend on scheduling.
 /// @throw InputError when options or z are out of range.
-void generateSlice(ShapeKind kind, const ShapeOptions& options, std::int64_t z,
-                   std::uint8_t* out);
+void generateSlice(ShapeKind kind, const ShapeOptions& options, std::int64_t z, std::uint8_t* out);
 
 /// A SliceStream that generates the volume on the fly: header with dims from
 /// shapeDims(), uint8 samples, unit spacing, zero origin; source() is

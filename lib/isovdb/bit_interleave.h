@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file bit_interleave.h
 /// @brief Three-way bit interleaving (Morton / Z-order codes), shared by the
 ///        octree keys and the self-intersection BVH's sort order.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file errors.h
 /// @brief The library's few exception types, derived from std types (as pmp does).
 ///

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file progress.h
 /// @brief Progress reporting and cancellation, modelled on openvdb::util::NullInterrupter.
 ///

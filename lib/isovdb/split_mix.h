@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file split_mix.h
 /// @brief splitmix64: a tiny seedable generator whose stream, and the doubles made
 ///        from it, are the same on every platform and standard library (unlike

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MPL-2.0
+# Copyright Contributors to the isovdb project.
 """Runs a notebook top to bottom and checks what it produced (ctest: python.notebook.*).
 
 Usage: run_notebook.py NOTEBOOK.ipynb [OUT_DIR]

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file array_slice_stream.h
 /// @brief A C-contiguous numpy array [x, y, z] read by the library's streaming ingest
 ///        like any dense file, without copying it first.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file bindings.h
 /// @brief What the binding files share: the Python-side Volume and Mesh, JSON → Python,
 ///        and one registration function per topic (each in its own .cc file).
@@ -47,11 +49,11 @@ std::array<double, 3> threeDoubles(const py::object& value, const char* name);
 /// The `distance=` keyword's method. @throw InputError naming the keyword for another name.
 volume::DistanceMethod distanceMethod(const std::string& name);
 
-void bindVolume(py::module_& m);   // volume_bindings.cc: Volume, from_numpy, read_volume, distance_field
-void bindSeismic(py::module_& m);  // seismic_bindings.cc: read_segy
-void bindMesh(py::module_& m);     // mesh_bindings.cc: Mesh, read_mesh
-void bindExtract(py::module_& m);  // extract_bindings.cc: extract
-void bindMorph(py::module_& m);    // morph_bindings.cc: morph_slices
+void bindVolume(py::module_& m);     // volume_bindings.cc: Volume, from_numpy, read_volume, distance_field
+void bindSeismic(py::module_& m);    // seismic_bindings.cc: read_segy
+void bindMesh(py::module_& m);       // mesh_bindings.cc: Mesh, read_mesh
+void bindExtract(py::module_& m);    // extract_bindings.cc: extract
+void bindMorph(py::module_& m);      // morph_bindings.cc: morph_slices
 void bindReservoir(py::module_& m);  // reservoir_bindings.cc: extract_reservoir
 
 }  // namespace isovdb::python

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // extract: any volume -> Mesh, with the CLI's extract options as keywords.
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
@@ -33,8 +35,8 @@ pipeline::ExtractOptions extractOptions(const std::string& method, double iso, i
   }
   result.iso = iso;
   result.adaptivity = adaptivity;
-  result.distance = {.method = distanceMethod(distance), .halfWidth = halfWidth, .closingSteps = closing,
-                     .chunkSize = sdfChunk};
+  result.distance = {
+      .method = distanceMethod(distance), .halfWidth = halfWidth, .closingSteps = closing, .chunkSize = sdfChunk};
   result.octree.metaCellSize = metaCell;
   result.octree.minLevel = minLevel;
   result.octree.maxLevel = maxLevel;
@@ -53,9 +55,8 @@ py::object extract(const PyVolume& volume, const std::string& method, double iso
                    int sdfChunk, const std::string& boundary, const std::string& topology, std::optional<int> threads,
                    const py::object& progress, const std::optional<std::filesystem::path>& output) {
   const pipeline::ExtractOptions options =
-      extractOptions(method, iso, minLevel, maxLevel, finestSize, maxCellSize, metaCell, qefTolerance,
-                     intersectionFree, sharpFeatures, adaptivity, distance, halfWidth, closing, sdfChunk, boundary,
-                     topology, threads);
+      extractOptions(method, iso, minLevel, maxLevel, finestSize, maxCellSize, metaCell, qefTolerance, intersectionFree,
+                     sharpFeatures, adaptivity, distance, halfWidth, closing, sdfChunk, boundary, topology, threads);
   CallbackProgress callback(progress);
   pipeline::Statistics stats;
   if (output) {
@@ -84,8 +85,8 @@ void bindExtract(py::module_& m) {
         py::arg("distance") = std::string(volume::distanceMethodName(defaults.distance.method)),
         py::arg("half_width") = defaults.distance.halfWidth, py::arg("closing") = defaults.distance.closingSteps,
         py::arg("sdf_chunk") = defaults.distance.chunkSize,
-        py::arg("boundary") = std::string(pipeline::boundaryModeName(defaults.boundary)),
-        py::arg("topology") = "auto", py::arg("threads") = py::none(), py::arg("progress") = py::none(), py::arg("output") = py::none(), R"doc(
+        py::arg("boundary") = std::string(pipeline::boundaryModeName(defaults.boundary)), py::arg("topology") = "auto",
+        py::arg("threads") = py::none(), py::arg("progress") = py::none(), py::arg("output") = py::none(), R"doc(
 Contours a volume into a closed triangle Mesh in world space (the `isovdb extract` job;
 each keyword is the CLI flag of the same name, underscores for dashes, with the same
 default except method).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "bindings.h"
 
 #include <pybind11/stl.h>
@@ -18,12 +20,18 @@ py::object toPython(const Json& json) {
       for (const auto& value : json) list.append(toPython(value));
       return list;
     }
-    case Json::value_t::string: return py::str(json.get<std::string>());
-    case Json::value_t::boolean: return py::bool_(json.get<bool>());
-    case Json::value_t::number_integer: return py::int_(json.get<std::int64_t>());
-    case Json::value_t::number_unsigned: return py::int_(json.get<std::uint64_t>());
-    case Json::value_t::number_float: return py::float_(json.get<double>());
-    default: return py::none();
+    case Json::value_t::string:
+      return py::str(json.get<std::string>());
+    case Json::value_t::boolean:
+      return py::bool_(json.get<bool>());
+    case Json::value_t::number_integer:
+      return py::int_(json.get<std::int64_t>());
+    case Json::value_t::number_unsigned:
+      return py::int_(json.get<std::uint64_t>());
+    case Json::value_t::number_float:
+      return py::float_(json.get<double>());
+    default:
+      return py::none();
   }
 }
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // Mesh (numpy views of the C++ buffers), its validation and files.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
@@ -49,8 +51,8 @@ PyMesh makeMesh(const py::object& vertices, const py::object& triangles, const p
   for (const auto& triangle : result.mesh.triangles)
     for (std::uint32_t index : triangle)
       if (index >= result.mesh.positions.size())
-        throw py::value_error("Mesh: triangle index " + std::to_string(index) + " >= " +
-                              std::to_string(result.mesh.positions.size()) + " vertices");
+        throw py::value_error("Mesh: triangle index " + std::to_string(index) +
+                              " >= " + std::to_string(result.mesh.positions.size()) + " vertices");
   return result;
 }
 
@@ -109,10 +111,13 @@ non_manifold_vertices, inconsistently_oriented_edges, degenerate_triangles, comp
 euler_characteristic, self_intersecting_pairs (-1 when self_intersections=False), closed,
 manifold, and per component its triangles, vertices, edges, Euler characteristic, closed,
 manifold and genus. Exact (CGAL predicates); parallel.)doc")
-      .def("write", [](const PyMesh& self, const std::filesystem::path& path) {
+      .def(
+          "write",
+          [](const PyMesh& self, const std::filesystem::path& path) {
             py::gil_scoped_release release;
             io::writeMesh(path, self.mesh);
-          }, py::arg("path"), R"doc(
+          },
+          py::arg("path"), R"doc(
 Writes the mesh by extension: .ply (binary little-endian, the same bytes as the CLI writes)
 or .obj, through a temporary file. Raises ValueError for another extension, OSError when
 the path is not writable.)doc")

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // The `isovdb` Python module: exceptions, then one registration per topic.
 #include <pybind11/pybind11.h>
 

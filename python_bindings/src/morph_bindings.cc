@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // morph_slices: the slice-stack front end (level-set metamorphosis between sparse slices).
 #include <tbb/global_control.h>
 
@@ -25,14 +27,16 @@ morph::SliceStack sliceStackOf(const py::object& slices, const std::optional<std
                                std::optional<double> spacing, double pixelSize, int sliceStep, int sliceOffset) {
   if (py::isinstance<PyVolume>(slices)) {
     if (heights || spacing)
-      throw InputError("morph_slices: heights and spacing apply to a folder of slice images; a volume's heights "
-                       "are its z positions");
+      throw InputError(
+          "morph_slices: heights and spacing apply to a folder of slice images; a volume's heights "
+          "are its z positions");
     return morph::sliceStackFromVolume(slices.cast<const PyVolume&>().volume,
                                        {.step = sliceStep, .offset = sliceOffset});
   }
   const auto dir = slices.cast<std::filesystem::path>();
   return morph::loadSliceDirectory(dir, {.heightsFile = heights.value_or(std::filesystem::path()),
-                                         .spacing = spacing.value_or(0.0), .pixelSize = pixelSize});
+                                         .spacing = spacing.value_or(0.0),
+                                         .pixelSize = pixelSize});
 }
 
 PyVolume morphSlices(const py::object& slices, const std::optional<std::filesystem::path>& heights,
@@ -84,8 +88,7 @@ void bindMorph(py::module_& m) {
         py::arg("interpolate") = std::string(morph::interpolationName(defaults.pair.interpolation)),
         py::arg("progress_mode") = std::string(morph::progressName(defaults.pair.progress)),
         py::arg("pls") = defaults.pair.particles, py::arg("centring") = defaults.pair.centre,
-        py::arg("area_match") = defaults.pair.matchArea,
-        py::arg("tolerance") = defaults.pair.evolution.tolerance,
+        py::arg("area_match") = defaults.pair.matchArea, py::arg("tolerance") = defaults.pair.evolution.tolerance,
         py::arg("max_iterations") = defaults.pair.evolution.maxIterations, py::arg("half_width") = defaults.halfWidth,
         py::arg("threads") = py::none(), py::arg("progress") = py::none(), R"doc(
 Completes a sparse stack of parallel slices by level-set metamorphosis (the `isovdb morph`

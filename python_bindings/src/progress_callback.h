@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file progress_callback.h
 /// @brief The library's Interrupter driven by a Python callable, and running C++ work
 ///        with the GIL released.

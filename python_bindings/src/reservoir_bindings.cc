@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // extract_reservoir: the reservoir front end (GRDECL corner-point grids, Marching Cubes on
 // hexahedra, PN triangles).
 #include <pybind11/stl.h>
@@ -18,8 +20,10 @@ namespace {
 PyMesh extractReservoir(const std::variant<std::filesystem::path, std::vector<std::filesystem::path>>& grid,
                         const std::string& property, double iso, int tessellate) {
   pipeline::ReservoirOptions options;
-  if (const auto* one = std::get_if<std::filesystem::path>(&grid)) options.inputs = {*one};
-  else options.inputs = std::get<std::vector<std::filesystem::path>>(grid);
+  if (const auto* one = std::get_if<std::filesystem::path>(&grid))
+    options.inputs = {*one};
+  else
+    options.inputs = std::get<std::vector<std::filesystem::path>>(grid);
   options.property = property;
   options.iso = iso;
   options.maxTessellation = tessellate;
@@ -37,8 +41,8 @@ PyMesh extractReservoir(const std::variant<std::filesystem::path, std::vector<st
 
 void bindReservoir(py::module_& m) {
   const pipeline::ReservoirOptions defaults;
-  m.def("extract_reservoir", &extractReservoir, py::arg("grid"), py::kw_only(), py::arg("property"),
-        py::arg("iso"), py::arg("tessellate") = defaults.maxTessellation, R"doc(
+  m.def("extract_reservoir", &extractReservoir, py::arg("grid"), py::kw_only(), py::arg("property"), py::arg("iso"),
+        py::arg("tessellate") = defaults.maxTessellation, R"doc(
 Isosurface of a cell property of an Eclipse corner-point grid (the `isovdb reservoir` job,
 paper 003): GRDECL deck -> corner-point grid -> cell values averaged to the cell corners
 over the active cells -> Marching Cubes on each hexahedron (asymptotic decider on faces),

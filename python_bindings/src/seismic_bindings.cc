@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // read_segy: the seismic front end (SEG-Y amplitude cubes).
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
@@ -12,8 +14,12 @@ namespace {
 PyVolume readSegy(const std::filesystem::path& path, float clip, py::object mask, py::object maskRange,
                   py::object threshold, int inlineByte, int crosslineByte, bool sampleStatistics,
                   const py::object& progress) {
-  const InputKeywords keywords{.threshold = std::move(threshold), .labels = py::none(), .mask = std::move(mask),
-                               .maskRange = std::move(maskRange), .clip = clip, .inlineByte = inlineByte,
+  const InputKeywords keywords{.threshold = std::move(threshold),
+                               .labels = py::none(),
+                               .mask = std::move(mask),
+                               .maskRange = std::move(maskRange),
+                               .clip = clip,
+                               .inlineByte = inlineByte,
                                .crosslineByte = crosslineByte};
   pipeline::InputChoices choices = keywords.choices();
   choices.segy = true;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // Volume, from_numpy, read_volume, distance_field.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
@@ -59,8 +61,9 @@ PyVolume fromNumpy(const py::object& object, const py::object& threshold, const 
   if (array.size() == 0) throw py::value_error("from_numpy: empty array of shape " + shapeText(array));
   const io::SampleType type = sampleTypeOf(array.dtype());
   if (!(array.flags() & py::array::c_style))
-    throw py::value_error("from_numpy: the array is not C-contiguous (a transposed or sliced view); "
-                          "pass numpy.ascontiguousarray(a), which copies it");
+    throw py::value_error(
+        "from_numpy: the array is not C-contiguous (a transposed or sliced view); "
+        "pass numpy.ascontiguousarray(a), which copies it");
   const bool bigEndian = array.dtype().attr("byteorder").cast<std::string>() == ">";
   const std::array<double, 3> spacing = threeDoubles(voxelSize, "voxel_size");
   for (double s : spacing)
@@ -70,8 +73,8 @@ PyVolume fromNumpy(const py::object& object, const py::object& threshold, const 
   volume::MaskRule rule;
   if (!threshold.is_none()) rule.threshold = threshold.cast<double>();
 
-  ArraySliceStream stream(static_cast<const std::byte*>(array.data()),
-                          {array.shape(0), array.shape(1), array.shape(2)}, type, bigEndian, spacing, position);
+  ArraySliceStream stream(static_cast<const std::byte*>(array.data()), {array.shape(0), array.shape(1), array.shape(2)},
+                          type, bigEndian, spacing, position);
   PyVolume result;
   {
     py::gil_scoped_release release;
@@ -87,11 +90,14 @@ PyVolume fromNumpy(const py::object& object, const py::object& threshold, const 
 
 PyVolume readVolume(const std::filesystem::path& path, const py::object& dims, const py::object& dtype, bool bigEndian,
                     const py::object& spacing, std::int64_t headerBytes, py::object threshold, py::object labels,
-                    py::object mask, py::object maskRange, float clip, int inlineByte, int crosslineByte,
-                    bool scalar, const std::string& grid, bool segy, bool sampleStatistics,
-                    const py::object& progress) {
-  const InputKeywords keywords{.threshold = std::move(threshold), .labels = std::move(labels), .mask = std::move(mask),
-                               .maskRange = std::move(maskRange), .clip = clip, .inlineByte = inlineByte,
+                    py::object mask, py::object maskRange, float clip, int inlineByte, int crosslineByte, bool scalar,
+                    const std::string& grid, bool segy, bool sampleStatistics, const py::object& progress) {
+  const InputKeywords keywords{.threshold = std::move(threshold),
+                               .labels = std::move(labels),
+                               .mask = std::move(mask),
+                               .maskRange = std::move(maskRange),
+                               .clip = clip,
+                               .inlineByte = inlineByte,
                                .crosslineByte = crosslineByte};
   pipeline::InputChoices choices = keywords.choices();
   choices.scalar = scalar;
@@ -160,9 +166,12 @@ py::dict info(const PyVolume& self) {
 
 void write(const PyVolume& self, const std::filesystem::path& path, const std::string& gridName) {
   py::gil_scoped_release release;
-  if (pipeline::isVdbPath(path)) io::writeVdb(path, self.volume, {.gridName = gridName});
-  else if (io::isDenseOutputPath(path)) io::writeDenseVolume(path, self.volume);
-  else throw InputError("'" + path.string() + "': unknown volume format, expected .vdb, .raw or .nrrd");
+  if (pipeline::isVdbPath(path))
+    io::writeVdb(path, self.volume, {.gridName = gridName});
+  else if (io::isDenseOutputPath(path))
+    io::writeDenseVolume(path, self.volume);
+  else
+    throw InputError("'" + path.string() + "': unknown volume format, expected .vdb, .raw or .nrrd");
 }
 
 py::object distanceField(const PyVolume& source, int halfWidth, int closing, int chunkSize, const py::object& progress,
@@ -175,9 +184,8 @@ py::object distanceField(const PyVolume& source, int halfWidth, int closing, int
     if (source.volume.kind() != volume::VolumeKind::Mask)
       throw InputError("'" + source.volume.name() + "': a distance field is made from a mask");
     pipeline::Statistics stats;
-    callback.run([&] {
-      pipeline::writeDistanceFieldVdb(source.volume, options, *output, gridName, &callback, &stats);
-    });
+    callback.run(
+        [&] { pipeline::writeDistanceFieldVdb(source.volume, options, *output, gridName, &callback, &stats); });
     stats["output"]["path"] = output->string();
     return toPython(stats.json());
   }
@@ -198,9 +206,8 @@ std::int64_t eulerCharacteristic(const PyVolume& source, int adjacency, const py
   CallbackProgress callback(progress);
   std::int64_t chi = 0;
   callback.run([&] {
-    const volume::Volume mask = source.volume.kind() == volume::VolumeKind::Mask
-                                    ? source.volume
-                                    : volume::interiorMask(source.volume);
+    const volume::Volume mask =
+        source.volume.kind() == volume::VolumeKind::Mask ? source.volume : volume::interiorMask(source.volume);
     chi = volume::eulerCharacteristic(mask, &callback, rule);
   });
   return chi;
@@ -241,12 +248,15 @@ read_volume(), read_segy(), from_numpy() or distance_field().)doc")
       .def_property_readonly(
           "kind", [](const PyVolume& v) { return std::string(volume::volumeKindName(v.volume.kind())); },
           "\"mask\", \"scalar\" or \"sdf\".")
-      .def_property_readonly("name", [](const PyVolume& v) { return v.volume.name(); },
-                             "Name of the grid (the source file, or the grid name of a .vdb).")
-      .def_property_readonly("spacing", [](const PyVolume& v) { return toTuple(v.volume.geometry().spacing); },
-                             "World units per voxel along x, y, z.")
-      .def_property_readonly("origin", [](const PyVolume& v) { return toTuple(v.volume.geometry().origin); },
-                             "World position of voxel (0, 0, 0).")
+      .def_property_readonly(
+          "name", [](const PyVolume& v) { return v.volume.name(); },
+          "Name of the grid (the source file, or the grid name of a .vdb).")
+      .def_property_readonly(
+          "spacing", [](const PyVolume& v) { return toTuple(v.volume.geometry().spacing); },
+          "World units per voxel along x, y, z.")
+      .def_property_readonly(
+          "origin", [](const PyVolume& v) { return toTuple(v.volume.geometry().origin); },
+          "World position of voxel (0, 0, 0).")
       .def_property_readonly(
           "shape",
           [](const PyVolume& v) {
@@ -279,8 +289,8 @@ header). Written through a temporary file. Raises OSError when the path is not w
                "' shape " + py::str(py::cast(v).attr("shape")).cast<std::string>() + ">";
       });
 
-  m.def("from_numpy", &fromNumpy, py::arg("array"), py::arg("threshold") = py::none(),
-        py::arg("voxel_size") = 1.0, py::arg("origin") = py::make_tuple(0.0, 0.0, 0.0), R"doc(
+  m.def("from_numpy", &fromNumpy, py::arg("array"), py::arg("threshold") = py::none(), py::arg("voxel_size") = 1.0,
+        py::arg("origin") = py::make_tuple(0.0, 0.0, 0.0), R"doc(
 Makes a Volume from a 3-D numpy array indexed [x, y, z] (the order of pyopenvdb's
 copyFromArray and of the CLI's --dims X,Y,Z; a raw file for the CLI is array.T.tofile()).
 
@@ -298,9 +308,8 @@ Raises ValueError for a non-array, an array that is not 3-D, empty, not C-contig
         py::arg("dtype") = py::none(), py::arg("big_endian") = false, py::arg("spacing") = py::none(),
         py::arg("header_bytes") = 0, py::arg("threshold") = py::none(), py::arg("labels") = py::none(),
         py::arg("mask") = py::none(), py::arg("mask_range") = py::none(), py::arg("clip") = 0.f,
-        py::arg("inline_byte") = 189, py::arg("crossline_byte") = 193, py::arg("scalar") = false,
-        py::arg("grid") = "", py::arg("segy") = false, py::arg("sample_statistics") = false,
-        py::arg("progress") = py::none(),
+        py::arg("inline_byte") = 189, py::arg("crossline_byte") = 193, py::arg("scalar") = false, py::arg("grid") = "",
+        py::arg("segy") = false, py::arg("sample_statistics") = false, py::arg("progress") = py::none(),
         R"doc(
 Reads a volume file as a sparse Volume: raw (with dims and dtype), NRRD (.nrrd/.nhdr),
 MetaImage (.mhd/.mha), SEG-Y (.sgy/.segy, or segy=True) or .vdb. Keywords map one to one

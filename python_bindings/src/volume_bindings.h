@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file volume_bindings.h
 /// @brief Reading helpers shared by read_volume and read_segy.
 #pragma once

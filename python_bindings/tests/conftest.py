@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: MPL-2.0
+# Copyright Contributors to the isovdb project.
 """Shared fixtures: the CLI, the bundled data, and small volumes built in code."""
 import os
 import pathlib

@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: MPL-2.0
+# Copyright Contributors to the isovdb project.
 """extract: methods, options, guarantees, threads, progress, GIL."""
 import os
 import signal

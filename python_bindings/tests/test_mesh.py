@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: MPL-2.0
+# Copyright Contributors to the isovdb project.
 """Mesh: numpy views, construction, check, write, read_mesh."""
 import gc
 

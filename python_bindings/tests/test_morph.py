@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: MPL-2.0
+# Copyright Contributors to the isovdb project.
 """morph_slices: sparse slice stacks completed by level-set metamorphosis, from image
 folders and from volumes with labelled z-slices, then contoured."""
 import numpy as np

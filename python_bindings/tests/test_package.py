@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: MPL-2.0
+# Copyright Contributors to the isovdb project.
 """Packaging: the stub matches the module, and `cmake --install` puts an importable module in dist-packages."""
 import ast
 import os

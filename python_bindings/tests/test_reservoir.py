@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: MPL-2.0
+# Copyright Contributors to the isovdb project.
 """extract_reservoir: isosurfaces of Eclipse corner-point grids, equal to the CLI's output."""
 import numpy as np
 import pytest

@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: MPL-2.0
+# Copyright Contributors to the isovdb project.
 """numpy volume -> extract -> write/check equals, byte for byte, the CLI on the same data as a raw file."""
 import json
 

@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: MPL-2.0
+# Copyright Contributors to the isovdb project.
 """Seismic front end: read_segy / read_volume on the bundled SEG-Y samples, checked against segyio."""
 import numpy as np
 import pytest

@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: MPL-2.0
+# Copyright Contributors to the isovdb project.
 """Interoperation with Debian's pyopenvdb through .vdb files, both ways."""
 import numpy as np
 import pytest

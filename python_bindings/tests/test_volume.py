@@ -1,3 +1,5 @@
+# SPDX-License-Identifier: MPL-2.0
+# Copyright Contributors to the isovdb project.
 """Volume: from_numpy, read_volume, to_numpy, info, write, distance_field."""
 import numpy as np
 import pytest

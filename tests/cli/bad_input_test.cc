@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // Bad input, end to end through the `isovdb` binary: each case must give a
 // one-line error naming the file and the problem, a non-zero exit code and no
 // output file.
@@ -37,8 +39,9 @@ TEST_F(CliBadInput, ZeroNegativeAndOverflowingDimensions) {
   writeFile(in / "v.raw", std::string(1000, '\1'));
   for (const std::string dims : {"0,10,10", "10,-10,10", "4294967296,4294967296,4294967296"}) {
     SCOPED_TRACE(dims);
-    expectCleanFailure(runCli("extract " + (in / "v.raw").string() + " --dims " + dims + " --type uint8 -o " + outPly()),
-                       {"v.raw", "dim"}, out);
+    expectCleanFailure(
+        runCli("extract " + (in / "v.raw").string() + " --dims " + dims + " --type uint8 -o " + outPly()),
+        {"v.raw", "dim"}, out);
   }
 }
 
@@ -46,8 +49,8 @@ TEST_F(CliBadInput, UnknownSampleType) {
   writeFile(in / "v.raw", std::string(1000, '\1'));
   expectCleanFailure(runCli("extract " + (in / "v.raw").string() + " --dims 10,10,10 --type complex64 -o " + outPly()),
                      {"v.raw", "complex64"}, out);
-  writeFile(in / "t.nrrd", nrrdHeader("type: quaternion\ndimension: 3\nsizes: 2 2 2\nencoding: raw\n") +
-                               std::string(8, '\0'));
+  writeFile(in / "t.nrrd",
+            nrrdHeader("type: quaternion\ndimension: 3\nsizes: 2 2 2\nencoding: raw\n") + std::string(8, '\0'));
   expectCleanFailure(runCli("extract " + (in / "t.nrrd").string() + " -o " + outPly()), {"t.nrrd", "quaternion"}, out);
 }
 
@@ -94,9 +97,9 @@ TEST_F(CliBadInput, OutputPathNotWritable) {
 
 TEST_F(CliBadInput, UnknownMeshFormat) {
   writeFile(in / "v.raw", std::string(1000, '\1'));
-  expectCleanFailure(runCli("extract " + (in / "v.raw").string() + " --dims 10,10,10 --type uint8 -o " +
-                            (out / "mesh.stl").string()),
-                     {"mesh.stl", ".ply or .obj"}, out);
+  expectCleanFailure(
+      runCli("extract " + (in / "v.raw").string() + " --dims 10,10,10 --type uint8 -o " + (out / "mesh.stl").string()),
+      {"mesh.stl", ".ply or .obj"}, out);
 }
 
 }  // namespace

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // The main job end to end through the `isovdb` binary, on generated volumes
 // with a known topology: extract, check --against, sdf, info.
 #include <gtest/gtest.h>
@@ -23,8 +25,7 @@ std::filesystem::path writeShape(const TempDir& dir, samples::ShapeKind kind, in
   const samples::ShapeOptions options{.size = size};
   const auto dims = samples::shapeDims(kind, options);
   std::string bytes = "NRRD0004\ntype: uint8\ndimension: 3\nsizes: " + std::to_string(dims[0]) + " " +
-                      std::to_string(dims[1]) + " " + std::to_string(dims[2]) +
-                      "\nencoding: raw\nspacings: 1 1 1\n\n";
+                      std::to_string(dims[1]) + " " + std::to_string(dims[2]) + "\nencoding: raw\nspacings: 1 1 1\n\n";
   std::string slice(static_cast<std::size_t>(dims[0] * dims[1]), '\0');
   for (std::int64_t z = 0; z < dims[2]; ++z) {
     samples::generateSlice(kind, options, z, reinterpret_cast<std::uint8_t*>(slice.data()));
@@ -52,8 +53,8 @@ TEST_P(CliExtract, ClosedManifoldWithTheObjectsTopology) {
   const auto input = writeShape(dir, shape(), 64);
   const auto mesh = dir / "mesh.ply", stats = dir / "stats.json";
   std::string output;
-  ASSERT_EQ(runCommand(cliPath().string() + " -q extract " + input.string() + " -o " + mesh.string() +
-                           " --method " + method() + " --check --stats " + stats.string(),
+  ASSERT_EQ(runCommand(cliPath().string() + " -q extract " + input.string() + " -o " + mesh.string() + " --method " +
+                           method() + " --check --stats " + stats.string(),
                        &output),
             0)
       << output;
@@ -75,8 +76,7 @@ TEST_P(CliExtract, ClosedManifoldWithTheObjectsTopology) {
             0)
       << output;
   const nlohmann::json check = readJson(checkStats);
-  EXPECT_EQ(check["topology"]["solid_euler_characteristic"].get<int>(),
-            samples::knownEulerCharacteristic(shape()));
+  EXPECT_EQ(check["topology"]["solid_euler_characteristic"].get<int>(), samples::knownEulerCharacteristic(shape()));
   EXPECT_TRUE(check["topology"]["matches"].get<bool>());
   EXPECT_TRUE(check["passed"].get<bool>());
 }
@@ -100,8 +100,8 @@ TEST(CliExtract, StreamsMetaCellsAndCheckAgreesWithTheObject) {
     const auto mesh = dir / (method + ".ply");
     const auto stats = dir / (method + ".json");
     std::string output;
-    ASSERT_EQ(runCommand(cliPath().string() + " -q extract " + genus2.string() + " -o " + mesh.string() +
-                             " --method " + method + " --meta-cell 16 --threads 1 --stats " + stats.string(),
+    ASSERT_EQ(runCommand(cliPath().string() + " -q extract " + genus2.string() + " -o " + mesh.string() + " --method " +
+                             method + " --meta-cell 16 --threads 1 --stats " + stats.string(),
                          &output),
               0)
         << output;
@@ -205,10 +205,10 @@ TEST(CliSdf, WritesALevelSetThatOpenVdbReads) {
 
   // And the .vdb is itself a valid input: contour it directly. It is the field
   // `extract` computes in memory from the same mask, so the meshes are the same bytes.
-  ASSERT_EQ(runCommand(cliPath().string() + " -q extract " + vdb.string() + " -o " + (dir / "m.ply").string() +
-                           " --check",
-                       &output),
-            0)
+  ASSERT_EQ(
+      runCommand(cliPath().string() + " -q extract " + vdb.string() + " -o " + (dir / "m.ply").string() + " --check",
+                 &output),
+      0)
       << output;
   EXPECT_NE(output.find("check.closed: true"), std::string::npos) << output;
   ASSERT_EQ(runCommand(cliPath().string() + " -q extract " + input.string() + " -o " + (dir / "direct.ply").string(),
@@ -237,8 +237,7 @@ TEST(CliExtract, SharpFeaturesOnALevelSetKeepTheGuarantees) {
     std::string output;
     ASSERT_EQ(runCommand(cliPath().string() + " -q extract " + vdb.string() + " -o " + (dir / "m.ply").string() +
                              " --method adaptive --max-cell-size 8 --qef-tolerance 0.25 --check --stats " +
-                             stats.string() +
-                             (sharp ? " --sharp-features" : ""),
+                             stats.string() + (sharp ? " --sharp-features" : ""),
                          &output),
               0)
         << output;

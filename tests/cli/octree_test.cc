@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // `isovdb octree`: one meta-cell's tree, end to end through the binary.
 #include <gtest/gtest.h>
 
@@ -23,19 +25,19 @@ std::filesystem::path writeBall(const TempDir& dir) {
 nlohmann::json runOctree(const TempDir& dir, const std::string& arguments) {
   std::string output;
   const auto stats = dir / "octree.json";
-  EXPECT_EQ(runCommand(cliPath().string() + " -q octree " + writeBall(dir).string() +
-                           " --dims 64,64,64 --type uint8 --meta-cell-size 32 " + arguments + " --stats " +
-                           stats.string(),
-                       &output),
-            0)
+  EXPECT_EQ(
+      runCommand(cliPath().string() + " -q octree " + writeBall(dir).string() +
+                     " --dims 64,64,64 --type uint8 --meta-cell-size 32 " + arguments + " --stats " + stats.string(),
+                 &output),
+      0)
       << output;
   return nlohmann::json::parse(readFile(stats));
 }
 
 TEST(CliOctree, RegularPutsEverySurfaceLeafAtTheMaximumLevel) {
   TempDir dir;
-  const nlohmann::json stats = runOctree(dir, "--construction regular --meta-cell 0,0,0 --wireframe " +
-                                                  (dir / "wire.ply").string());
+  const nlohmann::json stats =
+      runOctree(dir, "--construction regular --meta-cell 0,0,0 --wireframe " + (dir / "wire.ply").string());
   const auto& tree = stats["octree"];
   EXPECT_EQ(tree["max_level"].get<int>(), 5);  // 32 = 2^5: 1-voxel cells
   const auto perLevel = tree["surface_leaves_per_level"].get<std::vector<int>>();

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // `isovdb reservoir` end to end: a shared sample with tessellation and statistics, and a bad deck.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: MPL-2.0
+# Copyright Contributors to the isovdb project.
 """Round trip SEG-Y -> .vdb -> dense float32 through the `isovdb` CLI, compared
 sample for sample with segyio's own reading of the cube (python3-segyio).
 

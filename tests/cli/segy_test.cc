@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // SEG-Y end to end through the `isovdb` binary: info, extract (amplitude iso and
 // masks, every method, --boundary cap|open checked with the mesh validator),
 // convert (.sgy -> .vdb -> .raw) and bad input.
@@ -200,8 +202,7 @@ TEST_F(CliSegyBadInput, EachProblemIsOneLineNamingTheFileAndNothingIsWritten) {
   expectCleanFailure(cube("text.sgy", [](std::string& b) { b.resize(3200); }), "ends after the textual header");
   expectCleanFailure(cube("count.sgy", [](std::string& b) { b[3221] = 5; }), "not a whole number of");
   expectCleanFailure(cube("format.sgy", [](std::string& b) { b[3225] = 6; }), "unsupported sample format code 6");
-  expectCleanFailure(cube("monotonic.sgy", [](std::string& b) { b[3600 + 8 * 264 + 191] = 1; }),
-                     "are not monotonic");
+  expectCleanFailure(cube("monotonic.sgy", [](std::string& b) { b[3600 + 8 * 264 + 191] = 1; }), "are not monotonic");
   expectCleanFailure(cube("duplicate.sgy", [](std::string&) {}), "both have inline", "--crossline-byte 189");
   expectCleanFailure(cube("nosuchfield.sgy", [](std::string&) {}), "--inline-byte 3 is not", "--inline-byte 3");
   // The extension is not needed with --segy.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // Tests of lib/isovdb/contour/adaptive_contour.h: octree dual contouring on
 // minimal edges with Ju–Udeshi fans (paper 000, section 4.2.3.2), on analytic
 // SDFs and on the sample shapes' distance fields, checked with the exact
@@ -59,9 +61,8 @@ MetaCellSamples shapeSamples(samples::ShapeKind kind, int shapeSize, int metaCel
   const volume::Volume mask = volume::ingestMask(*stream, volume::MaskRule{});
   const volume::Volume sdf = volume::distanceField(mask);
   auto accessor = volume::fieldGrid(sdf).getConstAccessor();
-  return makeMetaCellSamples(metaCellSize, {-pad, -pad, -pad}, [&](int x, int y, int z) {
-    return accessor.getValue(openvdb::Coord(x, y, z));
-  });
+  return makeMetaCellSamples(metaCellSize, {-pad, -pad, -pad},
+                             [&](int x, int y, int z) { return accessor.getValue(openvdb::Coord(x, y, z)); });
 }
 
 /// Trilinear interpolation of the samples at a global position.
@@ -98,7 +99,9 @@ double signedVolume(const mesh::Mesh& m) {
   double v = 0;
   for (const auto& t : m.triangles) {
     const V3 a = toV3(m.positions[t[0]]), b = toV3(m.positions[t[1]]), c = toV3(m.positions[t[2]]);
-    v += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
+    v +=
+        (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0])) /
+        6;
   }
   return v;
 }
@@ -145,14 +148,14 @@ TEST(AdaptiveContour, SphereIsClosedOutwardAndIntersectionFree) {
   double sum = 0;
   for (const auto& p : run.mesh.positions) sum += std::abs(sphereSdf(toV3(p), c, 20.4));
   const double mean = sum / static_cast<double>(run.mesh.positions.size());
-  std::printf("sphere: %zu leaves, %zu tris, %lld minimal edges (%lld quads, %lld tris), %lld fanned, +%lld tris, "
-              "mean |d| %.4f\n",
-              tree.leafCount(), run.mesh.triangles.size(), (long long)run.stats.minimalEdges,
-              (long long)run.stats.quads, (long long)run.stats.triangles3, (long long)run.stats.fannedEdges,
-              (long long)run.stats.trianglesAddedByFans, mean);
+  std::printf(
+      "sphere: %zu leaves, %zu tris, %lld minimal edges (%lld quads, %lld tris), %lld fanned, +%lld tris, "
+      "mean |d| %.4f\n",
+      tree.leafCount(), run.mesh.triangles.size(), (long long)run.stats.minimalEdges, (long long)run.stats.quads,
+      (long long)run.stats.triangles3, (long long)run.stats.fannedEdges, (long long)run.stats.trianglesAddedByFans,
+      mean);
   EXPECT_LT(mean, 0.5);
 }
-
 
 /// QEF tolerance (RMS voxels) of the geometric refinement used by these tests:
 /// the default of adaptive mode (OctreeContourOptions::qefTolerance). On the
@@ -192,15 +195,17 @@ TEST(AdaptiveContour, ShapesClosedIntersectionFreeWithFewFans) {
     const std::size_t complexLeaves = complexLeavesAtMaxLevel(tree);
     const int chi = 2 * samples::knownEulerCharacteristic(shape.kind);  // surface of a solid: twice its chi
     const double overhead = static_cast<double>(fans.mesh.triangles.size()) / plain.mesh.triangles.size() - 1.0;
-    std::printf("%-12s leaves %7zu complex@max %3zu | fans: tris %7zu verts %7zu fanned %5lld (uncrossed %lld) (+%lld tris, %.2f%%) "
-                "closed %d manifold %d chi %lld (expected %d) selfX %lld | plain: tris %7zu closed %d chi %lld selfX %lld "
-                "| mean|d| %.3f\n",
-                shape.name, tree.leafCount(), complexLeaves, fans.mesh.triangles.size(), fans.mesh.positions.size(),
-                (long long)fans.stats.fannedEdges, (long long)fans.stats.uncrossedFaceEdges, (long long)fans.stats.trianglesAddedByFans, 100 * overhead,
-                fans.report.closed, fans.report.manifold, (long long)fans.report.eulerCharacteristic, chi,
-                (long long)fans.report.selfIntersectingPairs, plain.mesh.triangles.size(), plain.report.closed,
-                (long long)plain.report.eulerCharacteristic, (long long)plain.report.selfIntersectingPairs,
-                meanDistance(fans.mesh, s));
+    std::printf(
+        "%-12s leaves %7zu complex@max %3zu | fans: tris %7zu verts %7zu fanned %5lld (uncrossed %lld) (+%lld tris, "
+        "%.2f%%) "
+        "closed %d manifold %d chi %lld (expected %d) selfX %lld | plain: tris %7zu closed %d chi %lld selfX %lld "
+        "| mean|d| %.3f\n",
+        shape.name, tree.leafCount(), complexLeaves, fans.mesh.triangles.size(), fans.mesh.positions.size(),
+        (long long)fans.stats.fannedEdges, (long long)fans.stats.uncrossedFaceEdges,
+        (long long)fans.stats.trianglesAddedByFans, 100 * overhead, fans.report.closed, fans.report.manifold,
+        (long long)fans.report.eulerCharacteristic, chi, (long long)fans.report.selfIntersectingPairs,
+        plain.mesh.triangles.size(), plain.report.closed, (long long)plain.report.eulerCharacteristic,
+        (long long)plain.report.selfIntersectingPairs, meanDistance(fans.mesh, s));
     EXPECT_TRUE(fans.report.closed);
     EXPECT_EQ(fans.report.selfIntersectingPairs, 0);
     EXPECT_EQ(fans.report.inconsistentlyOrientedEdges, 0);
@@ -237,7 +242,6 @@ TEST(AdaptiveContour, SaltDomeThreeTimesFewerTrianglesThanRegularWithinHalfAVoxe
   EXPECT_LT(mean, 0.5);
   EXPECT_EQ(a.report.selfIntersectingPairs, 0);
 }
-
 
 // ---- sharp features ---------------------------------------------------------
 
@@ -376,10 +380,11 @@ TEST(AdaptiveContour, SharpCubeKeepsEdgesAndCornersUnlikeMarchingCubes) {
     const std::vector<V3> featureVertices = leafVertices(run.mesh, tree, featureLeaves);
     EXPECT_EQ(featureVertices.size(), featureLeaves.size());
     for (const V3& v : featureVertices) vertexError = std::max(vertexError, edgeDistance(v));
-    std::printf("cube%s: %zu tris; corner error %.4f (OpenVDB MC-style %.4f), edge-to-surface %.4f (OpenVDB %.4f), "
-                "max vertex-to-edge %.4f over %zu feature leaves\n",
-                sharp ? " (sharp features)" : "", run.mesh.triangles.size(), dc.corner, ref.corner, dc.line, ref.line,
-                vertexError, featureLeaves.size());
+    std::printf(
+        "cube%s: %zu tris; corner error %.4f (OpenVDB MC-style %.4f), edge-to-surface %.4f (OpenVDB %.4f), "
+        "max vertex-to-edge %.4f over %zu feature leaves\n",
+        sharp ? " (sharp features)" : "", run.mesh.triangles.size(), dc.corner, ref.corner, dc.line, ref.line,
+        vertexError, featureLeaves.size());
     EXPECT_LT(vertexError, 0.1);
     EXPECT_LT(dc.corner, 0.1);
     EXPECT_LT(dc.line, 0.1);
@@ -434,10 +439,11 @@ TEST(AdaptiveContour, SharpCylinderKeepsItsRimsWithSharpFeatures) {
     std::sort(errors.begin(), errors.end());
     ASSERT_FALSE(errors.empty());
     const double median = errors[errors.size() / 2], p90 = errors[errors.size() * 9 / 10], max = errors.back();
-    std::printf("cylinder%s: %zu tris (%zu feature splits); rim vertex errors over %zu feature leaves: median %.4f, "
-                "90%% %.4f, max %.4f; rim-to-surface %.4f (OpenVDB MC-style %.4f)\n",
-                sharp ? " (sharp features)" : "", run.mesh.triangles.size(), f.build.featureSplits,
-                featureLeaves.size(), median, p90, max, dcLine, refLine);
+    std::printf(
+        "cylinder%s: %zu tris (%zu feature splits); rim vertex errors over %zu feature leaves: median %.4f, "
+        "90%% %.4f, max %.4f; rim-to-surface %.4f (OpenVDB MC-style %.4f)\n",
+        sharp ? " (sharp features)" : "", run.mesh.triangles.size(), f.build.featureSplits, featureLeaves.size(),
+        median, p90, max, dcLine, refLine);
     EXPECT_LT(dcLine, 0.5 * refLine);
     EXPECT_GT(refLine, 0.1);
     if (sharp) {
@@ -453,7 +459,8 @@ TEST(AdaptiveContour, SharpCylinderKeepsItsRimsWithSharpFeatures) {
 // ---- topology: several sheets in one cell, hidden components ------------------
 
 /// Adaptive tree down to 1-voxel cells from the root (no QEF criterion), contoured and validated.
-ContourRun contourRandom(const MetaCellSamples& samples, bool manifoldFix, octree::OctreeBuildStats* buildStats = nullptr) {
+ContourRun contourRandom(const MetaCellSamples& samples, bool manifoldFix,
+                         octree::OctreeBuildStats* buildStats = nullptr) {
   const LinearOctree tree = octree::buildOctree(
       samples, octree::OctreeOptions{.construction = octree::OctreeConstruction::Adaptive, .minDepth = 0}, buildStats);
   ContourRun run;
@@ -490,18 +497,19 @@ TEST(AdaptiveContour, RandomSignFieldsGiveClosedManifoldMeshes) {
   EXPECT_GT(multiSheetSplits, 0);
   EXPECT_GT(fixes, 0);
   EXPECT_GT(brokenWithoutFix, 0) << "Wenger's fix matters in adaptive mode too";
-  std::printf("[random adaptive] multiVertexCells=%lld manifoldFixes=%lld multiSheetSplits=%lld "
-              "nonManifoldWithoutFix=%lld/30 selfIntersectingPairs=%lld\n",
-              static_cast<long long>(multiVertex), static_cast<long long>(fixes),
-              static_cast<long long>(multiSheetSplits), static_cast<long long>(brokenWithoutFix),
-              static_cast<long long>(selfIntersections));
+  std::printf(
+      "[random adaptive] multiVertexCells=%lld manifoldFixes=%lld multiSheetSplits=%lld "
+      "nonManifoldWithoutFix=%lld/30 selfIntersectingPairs=%lld\n",
+      static_cast<long long>(multiVertex), static_cast<long long>(fixes), static_cast<long long>(multiSheetSplits),
+      static_cast<long long>(brokenWithoutFix), static_cast<long long>(selfIntersections));
 }
 
 TEST(AdaptiveContour, BubbleHiddenInACoarseCellIsKept) {
   // A sphere whose inside holds a 1-voxel outside bubble away from every coarse face:
   // without the hidden-component criterion the coarse leaf around it swallows it.
   MetaCellSamples s = makeMetaCellSamples(64, {0, 0, 0}, [](int x, int y, int z) {
-    return static_cast<float>(std::sqrt((x - 30.3) * (x - 30.3) + (y - 31.1) * (y - 31.1) + (z - 29.7) * (z - 29.7)) - 20.0);
+    return static_cast<float>(std::sqrt((x - 30.3) * (x - 30.3) + (y - 31.1) * (y - 31.1) + (z - 29.7) * (z - 29.7)) -
+                              20.0);
   });
   // The bubble: a voxel 1.5+ voxels inside, odd coordinates (off the faces of every
   // cell of 2 voxels or more), in an 8-voxel cell whose corners the surface separates.
@@ -555,9 +563,8 @@ TEST(AdaptiveContour, SizeMismatchThrows) {
 
 TEST(AdaptiveContour, EdgesOnTheMetaCellBoundaryAreSkipped) {
   // A plane crossing the whole meta-cell: its polygons along the boundary are left to stitching.
-  const MetaCellSamples s = makeMetaCellSamples(16, {0, 0, 0}, [](int x, int y, int z) {
-    return 0.3 * x + 0.2 * y + 0.1 * z - 4.1;
-  });
+  const MetaCellSamples s =
+      makeMetaCellSamples(16, {0, 0, 0}, [](int x, int y, int z) { return 0.3 * x + 0.2 * y + 0.1 * z - 4.1; });
   AdaptiveContourStats stats;
   const mesh::Mesh m = contourAdaptive(s, octree::buildOctree(s, adaptiveTree()), {}, &stats);
   EXPECT_GT(stats.boundaryEdges, 0);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // Tests of lib/isovdb/contour/dmc_table.h: the generated Dual Marching Cubes
 // table and Wenger's alternative groupings (2B-I / 3B-I); and voxel_dmc.h's
 // reading of the same cells (joined faces, split faces, tube sectors).
@@ -28,7 +30,7 @@ void expectConsistent(std::uint8_t config, const DmcEntry& entry) {
   std::uint16_t all = 0;
   for (int g = 0; g < entry.vertexCount; ++g) {
     const std::uint16_t group = entry.groups[static_cast<std::size_t>(g)];
-    EXPECT_EQ(all & group, 0) << "config " << int(config);  // disjoint
+    EXPECT_EQ(all & group, 0) << "config " << int(config);           // disjoint
     EXPECT_GE(std::popcount(group), 3) << "config " << int(config);  // a patch cuts at least 3 edges
     // Each face holds 0 or 2 (or, doubled, 4) edges of a group: the group is a closed cycle.
     for (int f = 0; f < 6; ++f) EXPECT_EQ(std::popcount(unsigned(group & cellFaceEdgeMask(f))) % 2, 0);
@@ -114,8 +116,7 @@ TEST(DmcTable, DoubledFacesAreExactlyWengers2BAnd3BConfigurations) {
     // The alternative has one more vertex, and no group holds all four edges of face f.
     EXPECT_EQ(alt.vertexCount, base.vertexCount + 1);
     const std::uint16_t onFace = static_cast<std::uint16_t>(bipolarEdgeMask(config) & cellFaceEdgeMask(f));
-    for (int g = 0; g < alt.vertexCount; ++g)
-      EXPECT_NE(alt.groups[static_cast<std::size_t>(g)] & onFace, onFace);
+    for (int g = 0; g < alt.vertexCount; ++g) EXPECT_NE(alt.groups[static_cast<std::size_t>(g)] & onFace, onFace);
   }
   // 6 faces x 2 diagonals: 1 configuration 2B and 2 configurations 3B each.
   EXPECT_EQ(twoB, 12);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // Tests of lib/isovdb/contour/dual_vertex.h, gradient.h and edge_intersection.h
 // on planes, sharp edges and corners sampled on a grid.
 #include "isovdb/contour/dual_vertex.h"
@@ -49,7 +51,8 @@ bool insideCell(const Vec3f& p, std::array<int, 3> lo, int size) {
 }
 
 TEST(Gradient, PrewittIsExactOnLinearFields) {
-  const MetaCellSamples s = makeMetaCellSamples(8, {3, -2, 5}, [](int x, int y, int z) { return 0.5 * x - 2.0 * y + 0.25 * z; });
+  const MetaCellSamples s =
+      makeMetaCellSamples(8, {3, -2, 5}, [](int x, int y, int z) { return 0.5 * x - 2.0 * y + 0.25 * z; });
   for (int k = 0; k <= 8; k += 4) {
     const Vec3f g = prewittGradient(s, 4, 8, k);
     EXPECT_NEAR(g[0], 0.5f, 1e-5f);
@@ -94,7 +97,8 @@ TEST(DualVertex, PlaneSharpEdgeAndCornerWithin005Voxel) {
       const double d = std::abs(dot(n, sub(p, c)));
       worst[0] = std::max(worst[0], d);
       EXPECT_LT(d, 0.05) << "plane, trial " << trial;
-      EXPECT_TRUE(insideCell({v.position[0] - origin[0], v.position[1] - origin[1], v.position[2] - origin[2]}, cell, 8));
+      EXPECT_TRUE(
+          insideCell({v.position[0] - origin[0], v.position[1] - origin[1], v.position[2] - origin[2]}, cell, 8));
     }
     // Sharp edge: two planes at about 90 degrees; distance to the crease line.
     {
@@ -126,8 +130,9 @@ TEST(DualVertex, PlaneSharpEdgeAndCornerWithin005Voxel) {
       EXPECT_EQ(v.rank, 3);
     }
   }
-  std::printf("[ QEF on 8-voxel cells, 20 trials ] worst distance to the feature: plane %.4f, edge %.4f, corner %.4f voxel\n",
-              worst[0], worst[1], worst[2]);
+  std::printf(
+      "[ QEF on 8-voxel cells, 20 trials ] worst distance to the feature: plane %.4f, edge %.4f, corner %.4f voxel\n",
+      worst[0], worst[1], worst[2]);
 }
 
 TEST(DualVertex, DegenerateSystemGivesAPointOnThePlaneInsideTheCell) {

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // Tests of lib/isovdb/contour/ju_udeshi.h: face points, the envelope test and
 // the fan / trivial triangulations of one minimal edge (Ju & Udeshi 2006;
 // paper 000, section 4.2.3.2).
@@ -26,10 +28,10 @@ EdgeEnvelope regularEnvelope(const std::array<Vec3d, 4>& cells) {
 
 /// Minimal faces between consecutive cells of regularEnvelope: x = 0 or y = 0 planes.
 std::array<MinimalFace, 4> regularFaces() {
-  return {MinimalFace{.axis = 0, .coordinate = 0, .min = {0, -1, 0}, .size = 1},   // cells 0 | 1 (y < 0)
-          MinimalFace{.axis = 1, .coordinate = 0, .min = {0, 0, 0}, .size = 1},    // cells 1 | 2 (x > 0)
-          MinimalFace{.axis = 0, .coordinate = 0, .min = {-1, 0, 0}, .size = 1},   // cells 2 | 3 (y > 0)
-          MinimalFace{.axis = 1, .coordinate = 0, .min = {-1, -1, 0}, .size = 1}}; // cells 3 | 0 (x < 0)
+  return {MinimalFace{.axis = 0, .coordinate = 0, .min = {0, -1, 0}, .size = 1},    // cells 0 | 1 (y < 0)
+          MinimalFace{.axis = 1, .coordinate = 0, .min = {0, 0, 0}, .size = 1},     // cells 1 | 2 (x > 0)
+          MinimalFace{.axis = 0, .coordinate = 0, .min = {-1, 0, 0}, .size = 1},    // cells 2 | 3 (y > 0)
+          MinimalFace{.axis = 1, .coordinate = 0, .min = {-1, -1, 0}, .size = 1}};  // cells 3 | 0 (x < 0)
 }
 
 std::array<bool, 4> fillFacePoints(EdgeEnvelope& env) {

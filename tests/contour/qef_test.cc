@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // Tests of lib/isovdb/contour/qef.h.
 #include "isovdb/contour/qef.h"
 

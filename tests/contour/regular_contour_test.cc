@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // Tests of lib/isovdb/contour/regular_contour.h: manifold Dual Marching Cubes on
 // regular octrees, checked with the mesh validator (closed, manifold, Euler),
 // exhaustively on pairs of cell configurations and on generated volumes.
@@ -33,8 +35,8 @@ struct ContourRun {
 
 /// Regular octree down to 1-voxel cells, then manifold DMC, then validation.
 ContourRun contour(const MetaCellSamples& samples, float iso = 0.0f, bool manifoldFix = true, bool parallel = true,
-            bool selfIntersections = false, int minDepth = 0,
-            RegularTopology topology = RegularTopology::Voxels) {
+                   bool selfIntersections = false, int minDepth = 0,
+                   RegularTopology topology = RegularTopology::Voxels) {
   octree::OctreeOptions treeOptions;
   treeOptions.construction = octree::OctreeConstruction::Regular;
   treeOptions.minDepth = minDepth;
@@ -72,7 +74,8 @@ double signedVolume(const mesh::Mesh& m) {
     const auto& c = m.positions[t[2]];
     v += (double(a[0]) * (double(b[1]) * c[2] - double(b[2]) * c[1]) -
           double(a[1]) * (double(b[0]) * c[2] - double(b[2]) * c[0]) +
-          double(a[2]) * (double(b[0]) * c[1] - double(b[1]) * c[0])) / 6.0;
+          double(a[2]) * (double(b[0]) * c[1] - double(b[1]) * c[0])) /
+         6.0;
   }
   return v;
 }
@@ -198,8 +201,7 @@ TEST_P(RegularTopologies, RandomSignFieldsWithExactIsoSamplesStayClosedAndManifo
               static_cast<long long>(triangles), static_cast<long long>(fixes), int(brokenWithoutFix));
 }
 
-INSTANTIATE_TEST_SUITE_P(Readings, RegularTopologies,
-                         ::testing::Values(RegularTopology::Voxels, RegularTopology::Mdmc),
+INSTANTIATE_TEST_SUITE_P(Readings, RegularTopologies, ::testing::Values(RegularTopology::Voxels, RegularTopology::Mdmc),
                          [](const auto& info) { return info.param == RegularTopology::Voxels ? "voxels" : "mdmc"; });
 
 // --- analytic SDFs -------------------------------------------------------
@@ -295,8 +297,8 @@ TEST(RegularContour, BoundaryEdgesAreSkippedAndMismatchedIsoThrows) {
   EXPECT_TRUE(r.report.manifold);
   EXPECT_GT(r.report.triangles, 0);
   // A tree built at another isovalue is rejected.
-  octree::OctreeOptions treeOptions{.construction = octree::OctreeConstruction::Regular, .minDepth = 0,
-                                    .finestCellSize = 1, .iso = 0.0f};
+  octree::OctreeOptions treeOptions{
+      .construction = octree::OctreeConstruction::Regular, .minDepth = 0, .finestCellSize = 1, .iso = 0.0f};
   const octree::LinearOctree tree = octree::buildOctree(samples, treeOptions);
   EXPECT_THROW(contourRegular(samples, tree, {.iso = 1.0f}), InputError);
 }
@@ -328,7 +330,8 @@ TEST_P(RegularContourGenerated, ClosedManifoldWithTheObjectsEulerCharacteristic)
   std::printf("[%s] triangles=%lld chi=%lld fixes=%lld | fix off: nmE=%lld nmV=%lld\n",
               std::string(samples::shapeName(kind)).c_str(), static_cast<long long>(r.report.triangles),
               static_cast<long long>(r.report.eulerCharacteristic), static_cast<long long>(r.stats.manifoldFixes),
-              static_cast<long long>(off.report.nonManifoldEdges), static_cast<long long>(off.report.nonManifoldVertices));
+              static_cast<long long>(off.report.nonManifoldEdges),
+              static_cast<long long>(off.report.nonManifoldVertices));
 }
 
 INSTANTIATE_TEST_SUITE_P(Shapes, RegularContourGenerated, ::testing::ValuesIn(samples::shapesOfKnownTopology()),

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // io/dense_array.h: a box of a sparse volume copied into a dense [x][y][z] array.
 #include <gtest/gtest.h>
 
@@ -29,9 +31,8 @@ TEST(DenseArray, ScalarBoxIsCopiedInCOrderWithBackgroundOutside) {
 }
 
 TEST(DenseArray, MaskCopiesToBoolAndKindsAreChecked) {
-  auto stream = test::VectorSliceStream::fromFunction({6, 6, 6}, [](int x, int y, int z) {
-    return x == 2 && y == 3 && z == 4 ? 1.f : 0.f;
-  });
+  auto stream = test::VectorSliceStream::fromFunction(
+      {6, 6, 6}, [](int x, int y, int z) { return x == 2 && y == 3 && z == 4 ? 1.f : 0.f; });
   const volume::Volume mask = volume::ingestMask(stream, {});
   std::vector<char> out(6 * 6 * 6, 1);
   copyToDense(mask, defaultDenseBox(mask), reinterpret_cast<bool*>(out.data()));

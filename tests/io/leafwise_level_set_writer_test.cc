@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/io/leafwise_level_set_writer.h"
 
 #include <gtest/gtest.h>
@@ -67,9 +69,8 @@ void expectStreamedEqualsInMemory(const Volume& mask, int chunk, const std::stri
   writeVdb(dir / "memory.vdb", volume::distanceField(mask, options), {.gridName = "band"});
 
   LeafwiseLevelSetWriter writer(dir / "streamed.vdb", 3.f, mask.geometry(), {.gridName = "band", .source = "t"});
-  volume::computeBandInChunks(volume::maskGrid(mask), options, [&writer](auto&& leaves) {
-    writer.add(std::move(leaves));
-  }, nullptr);
+  volume::computeBandInChunks(
+      volume::maskGrid(mask), options, [&writer](auto&& leaves) { writer.add(std::move(leaves)); }, nullptr);
   const LevelSetFileSummary summary = writer.commit();
 
   const auto expected = readRaw(dir / "memory.vdb", "band");
@@ -114,8 +115,7 @@ TEST(LeafwiseLevelSetWriter, WritesWorldUnitsLikeWriteVdb) {
   expectStreamedEqualsInMemory(
       boxMask({{2, 2, 2}, {30, 20, 25}}, {.spacing = {0.25, 0.25, 0.25}, .origin = {-3, 1, 7}}), 16,
       "uniform spacing 0.25");
-  expectStreamedEqualsInMemory(boxMask({{2, 2, 2}, {30, 20, 25}}, {.spacing = {1, 2, 3}}), 16,
-                               "anisotropic spacing");
+  expectStreamedEqualsInMemory(boxMask({{2, 2, 2}, {30, 20, 25}}, {.spacing = {1, 2, 3}}), 16, "anisotropic spacing");
 }
 
 TEST(LeafwiseLevelSetWriter, LeavesWithoutActiveVoxelsBecomeTilesOfTheirSign) {
@@ -127,10 +127,13 @@ TEST(LeafwiseLevelSetWriter, LeavesWithoutActiveVoxelsBecomeTilesOfTheirSign) {
   auto makeLeaves = [&] {
     std::vector<std::unique_ptr<FieldLeaf>> leaves;
     std::mutex adding;  // chunks hand their leaves out from several threads
-    volume::computeBandInChunks(volume::maskGrid(mask), options, [&leaves, &adding](auto&& batch) {
-      const std::lock_guard<std::mutex> lock(adding);
-      for (auto& leaf : batch) leaves.push_back(std::move(leaf));
-    }, nullptr);
+    volume::computeBandInChunks(
+        volume::maskGrid(mask), options,
+        [&leaves, &adding](auto&& batch) {
+          const std::lock_guard<std::mutex> lock(adding);
+          for (auto& leaf : batch) leaves.push_back(std::move(leaf));
+        },
+        nullptr);
     leaves.push_back(std::make_unique<FieldLeaf>(openvdb::Coord(24, 24, 24), -3.f, false));
     leaves.push_back(std::make_unique<FieldLeaf>(openvdb::Coord(200, 24, 24), 3.f, false));
     return leaves;
@@ -155,10 +158,11 @@ TEST(LeafwiseLevelSetWriter, SameTreeWhateverTheThreadCount) {
   test::TempDir dir;
   for (int threads : {1, 2}) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-    LeafwiseLevelSetWriter writer(dir / (std::to_string(threads) + ".vdb"), 3.f, {}, {.gridName = "band", .source = {}});
-    volume::computeBandInChunks(volume::maskGrid(mask), {.halfWidth = 3, .chunkSize = 32}, [&writer](auto&& leaves) {
-      writer.add(std::move(leaves));
-    }, nullptr);
+    LeafwiseLevelSetWriter writer(dir / (std::to_string(threads) + ".vdb"), 3.f, {},
+                                  {.gridName = "band", .source = {}});
+    volume::computeBandInChunks(
+        volume::maskGrid(mask), {.halfWidth = 3, .chunkSize = 32},
+        [&writer](auto&& leaves) { writer.add(std::move(leaves)); }, nullptr);
     writer.commit();
   }
   expectSameTree(*readRaw(dir / "1.vdb", "band"), *readRaw(dir / "2.vdb", "band"));

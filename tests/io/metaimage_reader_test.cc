@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // Tests of lib/isovdb/io/metaimage_reader.h: every sample type and byte order,
 // .mhd/.mha, raw and zlib data, the real frog tissue volume, and bad headers.
 #include "isovdb/io/metaimage_reader.h"
@@ -20,14 +22,22 @@ using namespace test;  // TempDir, writeFile and the reader helpers of reader_te
 
 std::string metTypeName(SampleType type) {
   switch (type) {
-    case SampleType::Int8: return "MET_CHAR";
-    case SampleType::UInt8: return "MET_UCHAR";
-    case SampleType::Int16: return "MET_SHORT";
-    case SampleType::UInt16: return "MET_USHORT";
-    case SampleType::Int32: return "MET_INT";
-    case SampleType::UInt32: return "MET_UINT";
-    case SampleType::Float32: return "MET_FLOAT";
-    case SampleType::Float64: return "MET_DOUBLE";
+    case SampleType::Int8:
+      return "MET_CHAR";
+    case SampleType::UInt8:
+      return "MET_UCHAR";
+    case SampleType::Int16:
+      return "MET_SHORT";
+    case SampleType::UInt16:
+      return "MET_USHORT";
+    case SampleType::Int32:
+      return "MET_INT";
+    case SampleType::UInt32:
+      return "MET_UINT";
+    case SampleType::Float32:
+      return "MET_FLOAT";
+    case SampleType::Float64:
+      return "MET_DOUBLE";
   }
   return "";
 }
@@ -42,8 +52,9 @@ std::string metaHeader(const std::string& type, const std::string& dims, const s
 std::string zlibBytes(const std::string& data) {
   uLongf size = compressBound(data.size());
   std::string out(size, '\0');
-  EXPECT_EQ(compress(reinterpret_cast<Bytef*>(out.data()), &size, reinterpret_cast<const Bytef*>(data.data()), data.size()),
-            Z_OK);
+  EXPECT_EQ(
+      compress(reinterpret_cast<Bytef*>(out.data()), &size, reinterpret_cast<const Bytef*>(data.data()), data.size()),
+      Z_OK);
   out.resize(size);
   return out;
 }
@@ -65,7 +76,8 @@ TEST(MetaImageReader, ReadsEveryTypeInBothByteOrdersExactly) {
       EXPECT_EQ(stream->header().sampleType, type);
       EXPECT_EQ(stream->header().bigEndian, big);
       const std::vector<float> read = readAll(*stream);
-      for (std::size_t i = 0; i < values.size(); ++i) ASSERT_EQ(read[i], static_cast<float>(values[i])) << "sample " << i;
+      for (std::size_t i = 0; i < values.size(); ++i)
+        ASSERT_EQ(read[i], static_cast<float>(values[i])) << "sample " << i;
     }
   }
 }
@@ -100,7 +112,8 @@ TEST(MetaImageReader, ReadsZlibDetachedAndLocal) {
   std::vector<float> read = readAll(*detached);
   for (std::size_t i = 0; i < values.size(); ++i) ASSERT_EQ(read[i], static_cast<float>(values[i]));
 
-  writeFile(dir / "c.mha", metaHeader("MET_USHORT", "8 7 6", "LOCAL", "ElementByteOrderMSB = True\nCompressedData = True\n") + z);
+  writeFile(dir / "c.mha",
+            metaHeader("MET_USHORT", "8 7 6", "LOCAL", "ElementByteOrderMSB = True\nCompressedData = True\n") + z);
   auto local = openMetaImage(dir / "c.mha");
   read = readAll(*local);
   for (std::size_t i = 0; i < values.size(); ++i) ASSERT_EQ(read[i], static_cast<float>(values[i]));
@@ -148,7 +161,8 @@ TEST(MetaImageReader, MissingFileIsIoError) {
 
 TEST(MetaImageReader, NDimsOtherThanThreeIsRejected) {
   TempDir dir;
-  writeFile(dir / "v.mha", "NDims = 2\nDimSize = 4 4\nElementType = MET_UCHAR\nElementDataFile = LOCAL\n" + std::string(16, '\0'));
+  writeFile(dir / "v.mha",
+            "NDims = 2\nDimSize = 4 4\nElementType = MET_UCHAR\nElementDataFile = LOCAL\n" + std::string(16, '\0'));
   expectError<InputError>([&] { openMetaImage(dir / "v.mha"); }, {"v.mha", "'NDims'", "3-D"});
 }
 
@@ -188,8 +202,8 @@ TEST(MetaImageReader, UnknownElementTypeIsRejected) {
 
 TEST(MetaImageReader, RotatedTransformIsRejected) {
   TempDir dir;
-  writeFile(dir / "v.mha", metaHeader("MET_UCHAR", "2 2 2", "LOCAL", "TransformMatrix = 0 1 0 1 0 0 0 0 1\n") +
-                               std::string(8, '\0'));
+  writeFile(dir / "v.mha",
+            metaHeader("MET_UCHAR", "2 2 2", "LOCAL", "TransformMatrix = 0 1 0 1 0 0 0 0 1\n") + std::string(8, '\0'));
   expectError<InputError>([&] { openMetaImage(dir / "v.mha"); }, {"v.mha", "'TransformMatrix'", "identity"});
 }
 

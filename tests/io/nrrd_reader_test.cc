@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // Tests of lib/isovdb/io/nrrd_reader.h: every sample type and byte order, attached
 // and detached headers, raw and gzip encodings, and bad headers.
 #include "isovdb/io/nrrd_reader.h"
@@ -19,20 +21,28 @@ using namespace test;  // TempDir, writeFile and the reader helpers of reader_te
 /// A NRRD header (without the blank line) for a 3-D volume.
 std::string nrrdHeader(const std::string& type, const std::string& sizes, const std::string& encoding,
                        const std::string& extra = {}) {
-  return "NRRD0004\n# Complete NRRD file format specification at:\ntype: " + type +
-         "\ndimension: 3\nsizes: " + sizes + "\nencoding: " + encoding + "\n" + extra;
+  return "NRRD0004\n# Complete NRRD file format specification at:\ntype: " + type + "\ndimension: 3\nsizes: " + sizes +
+         "\nencoding: " + encoding + "\n" + extra;
 }
 
 std::string nrrdTypeName(SampleType type) {
   switch (type) {
-    case SampleType::Int8: return "signed char";
-    case SampleType::UInt8: return "uchar";
-    case SampleType::Int16: return "short";
-    case SampleType::UInt16: return "unsigned short";
-    case SampleType::Int32: return "int";
-    case SampleType::UInt32: return "uint";
-    case SampleType::Float32: return "float";
-    case SampleType::Float64: return "double";
+    case SampleType::Int8:
+      return "signed char";
+    case SampleType::UInt8:
+      return "uchar";
+    case SampleType::Int16:
+      return "short";
+    case SampleType::UInt16:
+      return "unsigned short";
+    case SampleType::Int32:
+      return "int";
+    case SampleType::UInt32:
+      return "uint";
+    case SampleType::Float32:
+      return "float";
+    case SampleType::Float64:
+      return "double";
   }
   return "";
 }
@@ -46,13 +56,14 @@ TEST(NrrdReader, ReadsEveryTypeInBothByteOrdersExactly) {
       SCOPED_TRACE(std::string(sampleTypeName(type)) + (big ? " big" : " little"));
       const std::vector<double> values = testValues(type, 60);
       const auto path = dir / "vol.nrrd";
-      writeFile(path, nrrdHeader(nrrdTypeName(type), "5 4 3", "raw", big ? "endian: big\n" : "endian: little\n") + "\n" +
-                          encode(type, big, values));
+      writeFile(path, nrrdHeader(nrrdTypeName(type), "5 4 3", "raw", big ? "endian: big\n" : "endian: little\n") +
+                          "\n" + encode(type, big, values));
       auto stream = openNrrd(path);
       EXPECT_EQ(stream->header().dims, (std::array<std::int64_t, 3>{5, 4, 3}));
       EXPECT_EQ(stream->header().sampleType, type);
       const std::vector<float> read = readAll(*stream);
-      for (std::size_t i = 0; i < values.size(); ++i) ASSERT_EQ(read[i], static_cast<float>(values[i])) << "sample " << i;
+      for (std::size_t i = 0; i < values.size(); ++i)
+        ASSERT_EQ(read[i], static_cast<float>(values[i])) << "sample " << i;
     }
   }
 }
@@ -97,8 +108,8 @@ TEST(NrrdReader, ReadsSpacingsLineSkipAndByteSkip) {
 TEST(NrrdReader, ReadsAttachedGzip) {
   TempDir dir;
   const std::vector<double> values = testValues(SampleType::Float32, 6 * 5 * 4);
-  writeFile(dir / "g.nrrd",
-            nrrdHeader("float", "6 5 4", "gzip", "endian: little\n") + "\n" + gzipBytes(dir, encode(SampleType::Float32, false, values)));
+  writeFile(dir / "g.nrrd", nrrdHeader("float", "6 5 4", "gzip", "endian: little\n") + "\n" +
+                                gzipBytes(dir, encode(SampleType::Float32, false, values)));
   auto stream = openNrrd(dir / "g.nrrd");
   const std::vector<float> read = readAll(*stream);
   for (std::size_t i = 0; i < values.size(); ++i) EXPECT_EQ(read[i], static_cast<float>(values[i]));
@@ -153,7 +164,8 @@ TEST(NrrdReader, TwoSizesForThreeDimensionsIsRejected) {
 
 TEST(NrrdReader, DimensionOtherThanThreeIsRejected) {
   TempDir dir;
-  writeFile(dir / "v.nrrd", "NRRD0004\ntype: uint8\ndimension: 2\nsizes: 4 4\nencoding: raw\n\n" + std::string(16, '\0'));
+  writeFile(dir / "v.nrrd",
+            "NRRD0004\ntype: uint8\ndimension: 2\nsizes: 4 4\nencoding: raw\n\n" + std::string(16, '\0'));
   expectError<InputError>([&] { openNrrd(dir / "v.nrrd"); }, {"v.nrrd", "'dimension'", "3-D"});
 }
 
@@ -195,8 +207,9 @@ TEST(NrrdReader, SpaceDirectionCountMismatchIsRejected) {
 
 TEST(NrrdReader, SpacingsWithSpaceDirectionsAreContradictory) {
   TempDir dir;
-  writeFile(dir / "v.nrrd", nrrdHeader("uint8", "2 2 2", "raw", "spacings: 1 1 1\nspace directions: (1,0,0) (0,1,0) (0,0,1)\n") +
-                                "\n" + std::string(8, '\0'));
+  writeFile(dir / "v.nrrd",
+            nrrdHeader("uint8", "2 2 2", "raw", "spacings: 1 1 1\nspace directions: (1,0,0) (0,1,0) (0,0,1)\n") + "\n" +
+                std::string(8, '\0'));
   expectError<InputError>([&] { openNrrd(dir / "v.nrrd"); }, {"v.nrrd", "'spacings'", "contradicts"});
 }
 
@@ -213,7 +226,8 @@ TEST(NrrdReader, TruncatedGzipIsRejected) {
   TempDir dir;
   const std::vector<double> values = testValues(SampleType::Int16, 32 * 32 * 8);
   const std::string gz = gzipBytes(dir, encode(SampleType::Int16, false, values));
-  writeFile(dir / "t.nrrd", nrrdHeader("int16", "32 32 8", "gzip", "endian: little\n") + "\n" + gz.substr(0, gz.size() / 2));
+  writeFile(dir / "t.nrrd",
+            nrrdHeader("int16", "32 32 8", "gzip", "endian: little\n") + "\n" + gz.substr(0, gz.size() / 2));
   auto stream = openNrrd(dir / "t.nrrd");
   std::vector<float> slice(32 * 32);
   expectError<InputError>(
@@ -236,7 +250,8 @@ TEST(NrrdReader, NaNAndInfGiveTheVoxel) {
   TempDir dir;
   std::vector<double> values = testValues(SampleType::Float32, 3 * 3 * 3);
   values[2 * 9 + 1 * 3 + 2] = std::numeric_limits<double>::infinity();  // voxel (2, 1, 2)
-  writeFile(dir / "inf.nrrd", nrrdHeader("float", "3 3 3", "raw", "endian: little\n") + "\n" + encode(SampleType::Float32, false, values));
+  writeFile(dir / "inf.nrrd", nrrdHeader("float", "3 3 3", "raw", "endian: little\n") + "\n" +
+                                  encode(SampleType::Float32, false, values));
   auto stream = openNrrd(dir / "inf.nrrd");
   std::vector<float> slice(9);
   expectError<InputError>(
@@ -246,8 +261,8 @@ TEST(NrrdReader, NaNAndInfGiveTheVoxel) {
       {"inf.nrrd", "(2, 1, 2)", "+Inf"});
   values[2 * 9 + 1 * 3 + 2] = 0;
   values[0 * 9 + 2 * 3 + 1] = std::numeric_limits<double>::quiet_NaN();  // voxel (1, 2, 0)
-  writeFile(dir / "nan.nrrd",
-            nrrdHeader("float", "3 3 3", "gzip", "endian: big\n") + "\n" + gzipBytes(dir, encode(SampleType::Float32, true, values)));
+  writeFile(dir / "nan.nrrd", nrrdHeader("float", "3 3 3", "gzip", "endian: big\n") + "\n" +
+                                  gzipBytes(dir, encode(SampleType::Float32, true, values)));
   auto gz = openNrrd(dir / "nan.nrrd");
   expectError<InputError>([&] { gz->readSlice(slice.data()); }, {"nan.nrrd", "(1, 2, 0)", "NaN"});
 }

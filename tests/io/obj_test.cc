@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/io/obj.h"
 
 #include <gtest/gtest.h>
@@ -74,7 +76,8 @@ TEST(Obj, NumbersReadBackBitForBitOnALargeMesh) {
     } else {
       ASSERT_EQ(line.rfind("f ", 0), 0u) << line;
       const auto& t = mesh.triangles[f++];
-      ASSERT_EQ(line, "f " + std::to_string(t[0] + 1) + " " + std::to_string(t[1] + 1) + " " + std::to_string(t[2] + 1));
+      ASSERT_EQ(line,
+                "f " + std::to_string(t[0] + 1) + " " + std::to_string(t[1] + 1) + " " + std::to_string(t[2] + 1));
     }
   }
   EXPECT_EQ(v, mesh.positions.size());

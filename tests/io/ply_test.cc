@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/io/ply.h"
 
 #include <gtest/gtest.h>
@@ -28,8 +30,15 @@ Mesh tetrahedron() {
 /// Floats that a careless writer or reader would change.
 Mesh awkwardMesh(bool normals) {
   Mesh mesh;
-  const float values[] = {0.1f, -0.f, std::numeric_limits<float>::denorm_min(), std::numeric_limits<float>::max(),
-                          -std::numeric_limits<float>::min(), 1.f / 3.f, 16777217.f, -123456.789f, 3.4e-20f};
+  const float values[] = {0.1f,
+                          -0.f,
+                          std::numeric_limits<float>::denorm_min(),
+                          std::numeric_limits<float>::max(),
+                          -std::numeric_limits<float>::min(),
+                          1.f / 3.f,
+                          16777217.f,
+                          -123456.789f,
+                          3.4e-20f};
   for (std::size_t i = 0; i < 300; ++i) {
     mesh.positions.push_back({values[i % 9], values[(i + 1) % 9] * (i % 2 ? 1.f : -1.f), float(i) * 0.7f});
     if (normals) mesh.normals.push_back({values[(i + 4) % 9], float(i) / 7.f, -0.f});
@@ -142,8 +151,9 @@ TEST(Ply, ReadsBigEndianWithOtherTypes) {
 
 TEST(Ply, ReadsAPointCloudWithoutFaces) {
   test::TempDir dir;
-  test::writeFile(dir / "p.ply", "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
-                                 "property float z\nend_header\n1 2 3\n4 5 6\n");
+  test::writeFile(dir / "p.ply",
+                  "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
+                  "property float z\nend_header\n1 2 3\n4 5 6\n");
   const Mesh mesh = readPly(dir / "p.ply");
   EXPECT_EQ(mesh.positions.size(), 2u);
   EXPECT_TRUE(mesh.triangles.empty());
@@ -161,18 +171,21 @@ TEST(Ply, RejectsTruncatedBinaryData) {
 
 TEST(Ply, RejectsTruncatedAscii) {
   test::TempDir dir;
-  test::writeFile(dir / "a.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                                 "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
-                                 "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n");
+  test::writeFile(dir / "a.ply",
+                  "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                  "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                  "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n");
   expectMessage([&] { readPly(dir / "a.ply"); }, "a.ply", "ends early, in element 'face' 0 of 1");
 }
 
 TEST(Ply, RejectsOutOfRangeIndices) {
   test::TempDir dir;
-  test::writeFile(dir / "a.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                                 "property float z\nelement face 2\nproperty list uchar int vertex_indices\n"
-                                 "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 9\n");
-  expectMessage([&] { readPly(dir / "a.ply"); }, "'" + (dir / "a.ply").string() + "': face 1 references vertex 9 but the file has 3 vertices");
+  test::writeFile(dir / "a.ply",
+                  "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                  "property float z\nelement face 2\nproperty list uchar int vertex_indices\n"
+                  "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 1 9\n");
+  expectMessage([&] { readPly(dir / "a.ply"); },
+                "'" + (dir / "a.ply").string() + "': face 1 references vertex 9 but the file has 3 vertices");
 
   Mesh mesh = tetrahedron();
   writePly(dir / "t.ply", mesh);
@@ -181,9 +194,10 @@ TEST(Ply, RejectsOutOfRangeIndices) {
   test::writeFile(dir / "t.ply", bytes);
   expectMessage([&] { readPly(dir / "t.ply"); }, "t.ply", "face 3 references vertex 5 but the file has 4 vertices");
 
-  test::writeFile(dir / "neg.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                                   "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
-                                   "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n");
+  test::writeFile(dir / "neg.ply",
+                  "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                  "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                  "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n");
   expectMessage([&] { readPly(dir / "neg.ply"); }, "neg.ply", "face 0 references vertex -1");
 }
 
@@ -205,15 +219,17 @@ TEST(Ply, RejectsBadHeaders) {
   check("noz.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n1 2\n",
         "the vertex element has no 'z' property");
   check("novertex.ply", "ply\nformat ascii 1.0\nend_header\n", "no vertex element");
-  check("nolist.ply", "ply\nformat ascii 1.0\nelement vertex 0\n" + xyz +
-                          "element face 0\nproperty list uchar int indices\nend_header\n",
+  check("nolist.ply",
+        "ply\nformat ascii 1.0\nelement vertex 0\n" + xyz +
+            "element face 0\nproperty list uchar int indices\nend_header\n",
         "no 'vertex_indices' list");
   check("orphan.ply", "ply\nformat ascii 1.0\nproperty float x\nend_header\n", "property before any element");
   check("count.ply", "ply\nformat ascii 1.0\nelement vertex -3\nend_header\n", "bad count '-3'");
   check("value.ply", "ply\nformat ascii 1.0\nelement vertex 1\n" + xyz + "end_header\n1 zwei 3\n",
         "bad value 'zwei' in element 'vertex' 0 of 1, property 'y'");
-  check("small.ply", "ply\nformat ascii 1.0\nelement vertex 2\n" + xyz +
-                         "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 1 1\n2 0 1\n",
+  check("small.ply",
+        "ply\nformat ascii 1.0\nelement vertex 2\n" + xyz +
+            "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 1 1\n2 0 1\n",
         "face 0 has 2 vertices");
   check("nan.ply", "ply\nformat ascii 1.0\nelement vertex 1\n" + xyz + "end_header\n1 nan 3\n",
         "vertex 0 has a non-finite coordinate");

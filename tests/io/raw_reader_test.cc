@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // Tests of lib/isovdb/io/raw_reader.h, and of the pieces every dense reader shares:
 // byte_stream.h (ByteStream suite), dense_slice_stream.h and dense_volume.h (DenseVolume suite).
 #include "isovdb/io/raw_reader.h"
@@ -36,7 +38,8 @@ TEST(RawReader, ReadsEveryTypeInBothByteOrdersExactly) {
       EXPECT_EQ(stream->header().bigEndian, big);
       EXPECT_EQ(stream->source(), path.string());
       const std::vector<float> read = readAll(*stream);
-      for (std::size_t i = 0; i < values.size(); ++i) ASSERT_EQ(read[i], static_cast<float>(values[i])) << "sample " << i;
+      for (std::size_t i = 0; i < values.size(); ++i)
+        ASSERT_EQ(read[i], static_cast<float>(values[i])) << "sample " << i;
       EXPECT_EQ(stream->nextSlice(), 3);
       float extra[20];
       EXPECT_THROW(stream->readSlice(extra), std::out_of_range);
@@ -63,7 +66,8 @@ TEST(RawReader, StreamsALargeVolumeSliceBySlice) {
   TempDir dir;
   const std::int64_t nx = 256, ny = 256, nz = 64;
   std::string bytes(static_cast<std::size_t>(nx * ny * nz), '\0');
-  for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<char>((i / static_cast<std::size_t>(nx * ny)) & 0xff);
+  for (std::size_t i = 0; i < bytes.size(); ++i)
+    bytes[i] = static_cast<char>((i / static_cast<std::size_t>(nx * ny)) & 0xff);
   writeFile(dir / "big.raw", bytes);
   auto stream = openRaw(dir / "big.raw", {.dims = {nx, ny, nz}, .type = SampleType::UInt8});
   std::vector<float> slice(static_cast<std::size_t>(nx * ny));
@@ -77,8 +81,11 @@ TEST(RawReader, StreamsALargeVolumeSliceBySlice) {
 TEST(RawReader, MissingFileIsIoError) {
   TempDir dir;
   const auto path = dir / "absent.raw";
-  expectError<IoError>([&] { openRaw(path, {.dims = {2, 2, 2}, .type = SampleType::UInt8}); },
-                       {path.string(), "no such file"});
+  expectError<IoError>(
+      [&] {
+        openRaw(path, {.dims = {2, 2, 2}, .type = SampleType::UInt8});
+      },
+      {path.string(), "no such file"});
 }
 
 TEST(RawReader, FileSizeMustMatchDims) {
@@ -86,11 +93,16 @@ TEST(RawReader, FileSizeMustMatchDims) {
   const auto path = dir / "short.raw";
   writeFile(path, std::string(100, '\0'));
   // 4 x 4 x 4 uint16 = 128 bytes.
-  expectError<InputError>([&] { openRaw(path, {.dims = {4, 4, 4}, .type = SampleType::UInt16}); },
-                          {path.string(), "100", "128"});
+  expectError<InputError>(
+      [&] {
+        openRaw(path, {.dims = {4, 4, 4}, .type = SampleType::UInt16});
+      },
+      {path.string(), "100", "128"});
   // Header bytes count too: 28 + 64 = 92.
   expectError<InputError>(
-      [&] { openRaw(path, {.dims = {4, 4, 4}, .type = SampleType::UInt8, .headerBytes = 28}); },
+      [&] {
+        openRaw(path, {.dims = {4, 4, 4}, .type = SampleType::UInt8, .headerBytes = 28});
+      },
       {path.string(), "100", "92"});
 }
 
@@ -98,16 +110,22 @@ TEST(RawReader, ZeroDimIsRejected) {
   TempDir dir;
   const auto path = dir / "zero.raw";
   writeFile(path, "");
-  expectError<InputError>([&] { openRaw(path, {.dims = {4, 0, 4}, .type = SampleType::UInt8}); },
-                          {path.string(), "dims", "y", "got 0"});
+  expectError<InputError>(
+      [&] {
+        openRaw(path, {.dims = {4, 0, 4}, .type = SampleType::UInt8});
+      },
+      {path.string(), "dims", "y", "got 0"});
 }
 
 TEST(RawReader, NegativeDimIsRejected) {
   TempDir dir;
   const auto path = dir / "neg.raw";
   writeFile(path, "");
-  expectError<InputError>([&] { openRaw(path, {.dims = {4, 4, -3}, .type = SampleType::UInt8}); },
-                          {path.string(), "dims", "z", "-3"});
+  expectError<InputError>(
+      [&] {
+        openRaw(path, {.dims = {4, 4, -3}, .type = SampleType::UInt8});
+      },
+      {path.string(), "dims", "z", "-3"});
 }
 
 TEST(RawReader, OverflowingDimsAreRejected) {
@@ -115,12 +133,18 @@ TEST(RawReader, OverflowingDimsAreRejected) {
   const auto path = dir / "huge.raw";
   writeFile(path, "");
   const std::int64_t big = std::int64_t{1} << 31;
-  expectError<InputError>([&] { openRaw(path, {.dims = {big, big, big}, .type = SampleType::UInt8}); },
-                          {path.string(), "dims", "overflow"});
+  expectError<InputError>(
+      [&] {
+        openRaw(path, {.dims = {big, big, big}, .type = SampleType::UInt8});
+      },
+      {path.string(), "dims", "overflow"});
   // The voxel count fits (2^62) but its byte size as float64 does not.
   const std::int64_t d = std::int64_t{1} << 21;
-  expectError<InputError>([&] { openRaw(path, {.dims = {d, d, d / 2}, .type = SampleType::Float64}); },
-                          {path.string(), "dims", "byte size"});
+  expectError<InputError>(
+      [&] {
+        openRaw(path, {.dims = {d, d, d / 2}, .type = SampleType::Float64});
+      },
+      {path.string(), "dims", "byte size"});
 }
 
 TEST(RawReader, BadSpacingAndHeaderBytesAreRejected) {
@@ -128,10 +152,14 @@ TEST(RawReader, BadSpacingAndHeaderBytesAreRejected) {
   const auto path = dir / "v.raw";
   writeFile(path, std::string(8, '\0'));
   expectError<InputError>(
-      [&] { openRaw(path, {.dims = {2, 2, 2}, .type = SampleType::UInt8, .spacing = {1, 0, 1}}); },
+      [&] {
+        openRaw(path, {.dims = {2, 2, 2}, .type = SampleType::UInt8, .spacing = {1, 0, 1}});
+      },
       {path.string(), "spacing"});
   expectError<InputError>(
-      [&] { openRaw(path, {.dims = {2, 2, 2}, .type = SampleType::UInt8, .headerBytes = -1}); },
+      [&] {
+        openRaw(path, {.dims = {2, 2, 2}, .type = SampleType::UInt8, .headerBytes = -1});
+      },
       {path.string(), "header bytes"});
 }
 
@@ -198,8 +226,10 @@ TEST(ByteStream, FileRegionReportsShortData) {
   writeFile(path, std::string(50, 'x'));
   FileRegionStream stream(path, {.offset = 20});
   std::vector<std::byte> out(40);
-  expectError<InputError>([&] { stream.readExact(out.data(), 40, 40); }, {path.string(), "file ends after 30 of 40 bytes"});
-  expectError<InputError>([&] { FileRegionStream(path, {.offset = 10, .length = 60}); }, {path.string(), "ends after 40 of 60"});
+  expectError<InputError>([&] { stream.readExact(out.data(), 40, 40); },
+                          {path.string(), "file ends after 30 of 40 bytes"});
+  expectError<InputError>([&] { FileRegionStream(path, {.offset = 10, .length = 60}); },
+                          {path.string(), "ends after 40 of 60"});
   expectError<IoError>([&] { FileRegionStream(dir / "nope.bin"); }, {"nope.bin", "no such file"});
 }
 
@@ -221,8 +251,9 @@ TEST(ByteStream, InflatesZlibAndConcatenatedGzip) {
   // zlib
   uLongf size = compressBound(data.size());
   std::string zlib(size, '\0');
-  ASSERT_EQ(compress(reinterpret_cast<Bytef*>(zlib.data()), &size, reinterpret_cast<const Bytef*>(data.data()), data.size()),
-            Z_OK);
+  ASSERT_EQ(
+      compress(reinterpret_cast<Bytef*>(zlib.data()), &size, reinterpret_cast<const Bytef*>(data.data()), data.size()),
+      Z_OK);
   zlib.resize(size);
   writeFile(dir / "d.z", zlib);
   // two gzip members
@@ -265,7 +296,8 @@ TEST(DenseVolume, DispatchesByExtension) {
   auto raw = openDenseVolume(dir / "v.raw", RawOptions{.dims = {2, 2, 2}, .type = SampleType::UInt8});
   EXPECT_EQ(readAll(*raw), std::vector<float>(8, 2.f));
 
-  writeFile(dir / "v.NRRD", "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 2 2 2\nencoding: raw\n\n" + std::string(8, '\x03'));
+  writeFile(dir / "v.NRRD",
+            "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 2 2 2\nencoding: raw\n\n" + std::string(8, '\x03'));
   auto nrrd = openDenseVolume(dir / "v.NRRD");
   EXPECT_EQ(readAll(*nrrd), std::vector<float>(8, 3.f));
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "io/reader_test_support.h"
 
 #include <zlib.h>
@@ -17,14 +19,22 @@ using io::SampleType;
 /// negative values and the ends of the small integer ranges).
 double sampleValue(SampleType type, std::int64_t i) {
   switch (type) {
-    case SampleType::Int8: return static_cast<double>((i * 37) % 256 - 128);
-    case SampleType::UInt8: return static_cast<double>((i * 37) % 256);
-    case SampleType::Int16: return static_cast<double>((i * 4099) % 65536 - 32768);
-    case SampleType::UInt16: return static_cast<double>((i * 4099) % 65536);
-    case SampleType::Int32: return static_cast<double>(i * 100003 - 5000000);
-    case SampleType::UInt32: return static_cast<double>(i * 100003);
-    case SampleType::Float32: return static_cast<double>(i) * 0.25 - 3.0;
-    case SampleType::Float64: return static_cast<double>(i) * 0.5 - 7.0;
+    case SampleType::Int8:
+      return static_cast<double>((i * 37) % 256 - 128);
+    case SampleType::UInt8:
+      return static_cast<double>((i * 37) % 256);
+    case SampleType::Int16:
+      return static_cast<double>((i * 4099) % 65536 - 32768);
+    case SampleType::UInt16:
+      return static_cast<double>((i * 4099) % 65536);
+    case SampleType::Int32:
+      return static_cast<double>(i * 100003 - 5000000);
+    case SampleType::UInt32:
+      return static_cast<double>(i * 100003);
+    case SampleType::Float32:
+      return static_cast<double>(i) * 0.25 - 3.0;
+    case SampleType::Float64:
+      return static_cast<double>(i) * 0.5 - 7.0;
   }
   return 0;
 }
@@ -44,14 +54,30 @@ std::string encode(SampleType type, bool bigEndian, const std::vector<double>& v
   std::string bytes;
   for (double v : values) {
     switch (type) {
-      case SampleType::Int8: appendSample<std::int8_t>(bytes, v, bigEndian); break;
-      case SampleType::UInt8: appendSample<std::uint8_t>(bytes, v, bigEndian); break;
-      case SampleType::Int16: appendSample<std::int16_t>(bytes, v, bigEndian); break;
-      case SampleType::UInt16: appendSample<std::uint16_t>(bytes, v, bigEndian); break;
-      case SampleType::Int32: appendSample<std::int32_t>(bytes, v, bigEndian); break;
-      case SampleType::UInt32: appendSample<std::uint32_t>(bytes, v, bigEndian); break;
-      case SampleType::Float32: appendSample<float>(bytes, v, bigEndian); break;
-      case SampleType::Float64: appendSample<double>(bytes, v, bigEndian); break;
+      case SampleType::Int8:
+        appendSample<std::int8_t>(bytes, v, bigEndian);
+        break;
+      case SampleType::UInt8:
+        appendSample<std::uint8_t>(bytes, v, bigEndian);
+        break;
+      case SampleType::Int16:
+        appendSample<std::int16_t>(bytes, v, bigEndian);
+        break;
+      case SampleType::UInt16:
+        appendSample<std::uint16_t>(bytes, v, bigEndian);
+        break;
+      case SampleType::Int32:
+        appendSample<std::int32_t>(bytes, v, bigEndian);
+        break;
+      case SampleType::UInt32:
+        appendSample<std::uint32_t>(bytes, v, bigEndian);
+        break;
+      case SampleType::Float32:
+        appendSample<float>(bytes, v, bigEndian);
+        break;
+      case SampleType::Float64:
+        appendSample<double>(bytes, v, bigEndian);
+        break;
     }
   }
   return bytes;

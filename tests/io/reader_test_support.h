@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file reader_test_support.h
 /// @brief Helpers shared by the tests of the dense volume readers
 ///        (raw_reader_test.cc, nrrd_reader_test.cc, metaimage_reader_test.cc):
@@ -18,9 +20,8 @@
 namespace isovdb::test {
 
 /// Every sample type a dense volume file may hold.
-inline constexpr io::SampleType kAllTypes[] = {io::SampleType::Int8,    io::SampleType::UInt8,
-                                               io::SampleType::Int16,   io::SampleType::UInt16,
-                                               io::SampleType::Int32,   io::SampleType::UInt32,
+inline constexpr io::SampleType kAllTypes[] = {io::SampleType::Int8,    io::SampleType::UInt8,  io::SampleType::Int16,
+                                               io::SampleType::UInt16,  io::SampleType::Int32,  io::SampleType::UInt32,
                                                io::SampleType::Float32, io::SampleType::Float64};
 
 /// The bytes of `values` stored as `type` in the given byte order.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // Tests of lib/isovdb/io/segy_reader.h (SegyReader suite) on the real F3 crop of
 // data/seismic/ and on cubes built in code with data/generators/segy_writer.h,
 // and of io/sample_statistics.h (SampleStatistics suite).
@@ -78,9 +80,16 @@ TEST(SegyReader, TheFourEncodingsOfTheF3CropReadToTheSameValues) {
 
 TEST(SegyReader, GridAxesAreInlineCrosslineSampleWithTheSurveyScale) {
   TempDir dir;
-  const SegyCubeSpec spec{.inlines = 9, .crosslines = 11, .samples = 13, .firstInline = 50, .inlineStep = 2,
-                          .firstCrossline = 7, .sampleIntervalUs = 2000, .delayMs = 100,
-                          .inlineSpacing = 12.5, .crosslineSpacing = 30.0};
+  const SegyCubeSpec spec{.inlines = 9,
+                          .crosslines = 11,
+                          .samples = 13,
+                          .firstInline = 50,
+                          .inlineStep = 2,
+                          .firstCrossline = 7,
+                          .sampleIntervalUs = 2000,
+                          .delayMs = 100,
+                          .inlineSpacing = 12.5,
+                          .crosslineSpacing = 30.0};
   auto stream = openSegy(writeCube(dir, spec));
   EXPECT_EQ(stream->geometry().inlines.step, 2);
   EXPECT_EQ(stream->geometry().inlines.last(), 66);
@@ -101,8 +110,12 @@ TEST(SegyReader, CrosslineSortedLittleEndianIntegerAndIbmCubesReadExactly) {
     for (const bool crosslineSorted : {false, true}) {
       SCOPED_TRACE("format " + std::to_string(format) + (crosslineSorted ? " crossline-sorted" : ""));
       TempDir dir;
-      const SegyCubeSpec spec{.inlines = 4, .crosslines = 6, .samples = 10, .formatCode = format,
-                              .littleEndian = crosslineSorted, .crosslineSorted = crosslineSorted};
+      const SegyCubeSpec spec{.inlines = 4,
+                              .crosslines = 6,
+                              .samples = 10,
+                              .formatCode = format,
+                              .littleEndian = crosslineSorted,
+                              .crosslineSorted = crosslineSorted};
       auto stream = openSegy(writeCube(dir, spec));
       EXPECT_EQ(stream->geometry().sorting, crosslineSorted ? SegySorting::Crossline : SegySorting::Inline);
       EXPECT_EQ(stream->geometry().littleEndian, crosslineSorted);
@@ -141,14 +154,14 @@ TEST(SegyReader, MissingTracesAndLinesAreInactiveHoles) {
 
 TEST(SegyReader, HeaderBytePositionsAreConfigurable) {
   TempDir dir;
-  const auto path = writeCube(dir, {.inlines = 3, .crosslines = 4, .samples = 5, .firstInline = 20,
-                                    .inlineByte = 9, .crosslineByte = 21});
+  const auto path = writeCube(
+      dir, {.inlines = 3, .crosslines = 4, .samples = 5, .firstInline = 20, .inlineByte = 9, .crosslineByte = 21});
   auto stream = openSegy(path, {.inlineByte = 9, .crosslineByte = 21});
   EXPECT_EQ(stream->geometry().inlines.first, 20);
   EXPECT_EQ(stream->geometry().crosslines.count, 4);
   // The default positions hold zeros here: every trace at inline 0, crossline 0.
-  expectError<InputError>([&] { openSegy(path); }, {path.string(), "both have inline 0 and crossline 0",
-                                                    "--inline-byte 189"});
+  expectError<InputError>([&] { openSegy(path); },
+                          {path.string(), "both have inline 0 and crossline 0", "--inline-byte 189"});
   expectError<InputError>([&] { openSegy(path, {.inlineByte = 190}); },
                           {path.string(), "--inline-byte 190 is not the first byte"});
 }
@@ -199,13 +212,15 @@ TEST_F(SegyBadInput, NonMonotonicInlineNumbers) {
   const std::size_t trace8 = 3600 + 8 * (240 + 6 * 4);
   bytes[trace8 + 188 + 3] = 1;
   const auto path = withBytes(bytes);
-  expectError<InputError>([&] { openSegy(path); }, {path.string(), "inline numbers (trace header byte 189) are not "
-                                                                   "monotonic", "trace 8 has inline 1 after 2"});
+  expectError<InputError>([&] { openSegy(path); }, {path.string(),
+                                                    "inline numbers (trace header byte 189) are not "
+                                                    "monotonic",
+                                                    "trace 8 has inline 1 after 2"});
 }
 
 TEST_F(SegyBadInput, NonFiniteSample) {
   std::string bytes = readFile(good());
-  const std::size_t sample = 3600 + 240 + 2 * 4;  // trace 0, sample 2
+  const std::size_t sample = 3600 + 240 + 2 * 4;                 // trace 0, sample 2
   bytes.replace(sample, 4, std::string("\x7f\xc0\x00\x00", 4));  // quiet NaN
   const auto path = withBytes(bytes);
   auto stream = openSegy(path);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/mesh/self_intersection.h"
 
 #include <gtest/gtest.h>
@@ -37,8 +39,8 @@ TEST(SelfIntersection, ClosedSurfacesHaveNone) {
 }
 
 TEST(SelfIntersection, TrianglePiercingAnother) {
-  const Mesh mesh = triangles({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {1, 1, -1}, {1, 1, 1}, {1, 2, 0}},
-                              {{0, 1, 2}, {3, 4, 5}});
+  const Mesh mesh =
+      triangles({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {1, 1, -1}, {1, 1, 1}, {1, 2, 0}}, {{0, 1, 2}, {3, 4, 5}});
   Pairs pairs;
   EXPECT_EQ(countSelfIntersections(mesh, &pairs), 1);
   EXPECT_EQ(pairs, (Pairs{{0, 1}}));
@@ -46,9 +48,8 @@ TEST(SelfIntersection, TrianglePiercingAnother) {
 
 TEST(SelfIntersection, TetrahedronThroughATriangleGivesThreePairs) {
   // The three faces around the apex below z = 0 cross the big triangle; the top face does not.
-  const Mesh mesh = triangles(
-      {{-10, -10, 0}, {10, -10, 0}, {0, 10, 0}, {0, 0, -1}, {1, 0, 1}, {-1, 1, 1}, {-1, -1, 1}},
-      {{0, 1, 2}, {3, 5, 4}, {3, 6, 5}, {3, 4, 6}, {4, 5, 6}});
+  const Mesh mesh = triangles({{-10, -10, 0}, {10, -10, 0}, {0, 10, 0}, {0, 0, -1}, {1, 0, 1}, {-1, 1, 1}, {-1, -1, 1}},
+                              {{0, 1, 2}, {3, 5, 4}, {3, 6, 5}, {3, 4, 6}, {4, 5, 6}});
   Pairs pairs;
   EXPECT_EQ(countSelfIntersections(mesh, &pairs), 3);
   EXPECT_EQ(pairs, (Pairs{{0, 1}, {0, 2}, {0, 3}}));
@@ -73,17 +74,17 @@ TEST(SelfIntersection, InterpenetratingOctahedra) {
 
 TEST(SelfIntersection, TouchingCountsButDisjointDoesNot) {
   // A vertex of the second triangle lies inside the first (no shared index).
-  EXPECT_EQ(countSelfIntersections(triangles({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {1, 1, 0}, {1, 1, 1}, {2, 1, 1}},
-                                             {{0, 1, 2}, {3, 4, 5}})),
+  EXPECT_EQ(countSelfIntersections(
+                triangles({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {1, 1, 0}, {1, 1, 1}, {2, 1, 1}}, {{0, 1, 2}, {3, 4, 5}})),
             1);
   // The same, lifted by the smallest step above the plane.
   const float up = std::nextafter(0.f, 1.f);
-  EXPECT_EQ(countSelfIntersections(triangles({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {1, 1, up}, {1, 1, 1}, {2, 1, 1}},
-                                             {{0, 1, 2}, {3, 4, 5}})),
+  EXPECT_EQ(countSelfIntersections(
+                triangles({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {1, 1, up}, {1, 1, 1}, {2, 1, 1}}, {{0, 1, 2}, {3, 4, 5}})),
             0);
   // Parallel planes, overlapping boxes in x and y.
-  EXPECT_EQ(countSelfIntersections(triangles({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}},
-                                             {{0, 1, 2}, {3, 4, 5}})),
+  EXPECT_EQ(countSelfIntersections(
+                triangles({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}}, {{0, 1, 2}, {3, 4, 5}})),
             0);
 }
 
@@ -96,9 +97,8 @@ TEST(SelfIntersection, SharedEdgeIntersectsOnlyWhenFoldedOntoItsNeighbour) {
 }
 
 TEST(SelfIntersection, SharedVertexIntersectsOnlyBeyondTheVertex) {
-  const std::vector<Vec3f> p = {{0, 0, 0},  {2, 0, 0},       {0, 2, 0},       {-1, 0, 0},
-                                {0, -1, 0}, {1, 0.5f, 0},    {0.5f, 1, 0},    {0, 0, 1},
-                                {0, 3, 0},  {-1, 1.5f, 0},   {0.5f, 0.5f, -1}, {0.5f, 0.5f, 1}};
+  const std::vector<Vec3f> p = {{0, 0, 0},    {2, 0, 0}, {0, 2, 0}, {-1, 0, 0},    {0, -1, 0},       {1, 0.5f, 0},
+                                {0.5f, 1, 0}, {0, 0, 1}, {0, 3, 0}, {-1, 1.5f, 0}, {0.5f, 0.5f, -1}, {0.5f, 0.5f, 1}};
   EXPECT_EQ(countSelfIntersections(triangles(p, {{0, 1, 2}, {0, 3, 4}})), 0);    // coplanar, apart
   EXPECT_EQ(countSelfIntersections(triangles(p, {{0, 1, 2}, {0, 3, 7}})), 0);    // fan, not coplanar
   EXPECT_EQ(countSelfIntersections(triangles(p, {{0, 1, 2}, {0, 5, 6}})), 1);    // coplanar, inside
@@ -114,8 +114,8 @@ TEST(SelfIntersection, DuplicateTrianglesIntersect) {
 
 TEST(SelfIntersection, UnweldedNeighboursTouch) {
   // Two triangles on one geometric edge, but with their own copies of its vertices.
-  const Mesh mesh = triangles({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}, {0, 0, 0}, {0, 0, 1}},
-                              {{0, 1, 2}, {3, 4, 5}});
+  const Mesh mesh =
+      triangles({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}, {0, 0, 0}, {0, 0, 1}}, {{0, 1, 2}, {3, 4, 5}});
   EXPECT_EQ(countSelfIntersections(mesh), 1);
 }
 
@@ -149,8 +149,8 @@ Pairs cgalPairs(const Mesh& mesh) {
   SurfaceMesh sm;
   for (const Vec3f& p : mesh.positions) sm.add_vertex(Kernel::Point_3(p[0], p[1], p[2]));
   for (const Triangle& t : mesh.triangles) {
-    const auto f = sm.add_face(SurfaceMesh::Vertex_index(t[0]), SurfaceMesh::Vertex_index(t[1]),
-                               SurfaceMesh::Vertex_index(t[2]));
+    const auto f =
+        sm.add_face(SurfaceMesh::Vertex_index(t[0]), SurfaceMesh::Vertex_index(t[1]), SurfaceMesh::Vertex_index(t[2]));
     EXPECT_NE(f, SurfaceMesh::null_face());
   }
   std::vector<std::pair<SurfaceMesh::Face_index, SurfaceMesh::Face_index>> found;
@@ -173,8 +173,8 @@ Mesh crumpledGrid(int n, unsigned seed, int zLevels) {
   Mesh mesh;
   for (int i = 0; i <= n; ++i)
     for (int j = 0; j <= n; ++j)
-      mesh.positions.push_back({float(4 * i + jitter(rng)) * 0.25f, float(4 * j + jitter(rng)) * 0.25f,
-                                float(level(rng)) * 0.5f});
+      mesh.positions.push_back(
+          {float(4 * i + jitter(rng)) * 0.25f, float(4 * j + jitter(rng)) * 0.25f, float(level(rng)) * 0.5f});
   auto id = [&](int i, int j) { return static_cast<std::uint32_t>(i * (n + 1) + j); };
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file test_meshes.h
 /// @brief Closed test meshes shared by the mesh-stage tests
 ///        (validate_test.cc, self_intersection_test.cc).

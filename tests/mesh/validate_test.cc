@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/mesh/validate.h"
 
 #include <gtest/gtest.h>
@@ -114,8 +116,7 @@ TEST(ValidateMesh, TwoTetrahedraSharingOneVertexGiveOneNonManifoldVertex) {
   Mesh mesh;
   mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}};
   // Two closed, outward-oriented tetrahedra meeting only at vertex 0.
-  mesh.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3},
-                    {0, 5, 4}, {0, 4, 6}, {0, 6, 5}, {4, 5, 6}};
+  mesh.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}, {0, 5, 4}, {0, 4, 6}, {0, 6, 5}, {4, 5, 6}};
   const MeshReport r = validateMesh(mesh);
   EXPECT_EQ(r.nonManifoldVertices, 1);
   EXPECT_EQ(r.nonManifoldEdges, 0);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/mesh/weld.h"
 
 #include <gtest/gtest.h>
@@ -18,8 +20,7 @@ namespace {
 /// Octahedron as a soup: every triangle has its own three vertices.
 Mesh octahedronSoup() {
   const Vec3f p[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-  const Triangle faces[8] = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
-                             {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  const Triangle faces[8] = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
   Mesh mesh;
   for (const Triangle& f : faces) {
     const auto base = static_cast<std::uint32_t>(mesh.positions.size());

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // How close the morph comes to the solid it was sliced from (issue #8's ground-truth
 // and corner lines, small enough for a unit test; bench/morph_eval.py has the full
 // figures): area matching and the particles' corners.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // `isovdb morph` end to end through the binary: a folder of contour images and a
 // sparse-z volume give closed meshes with their statistics; bad input gives one
 // error line naming the file and leaves no output behind.
@@ -27,10 +29,10 @@ TEST(MorphCli, ContourImagesToClosedMeshWithStatisticsAndSlices) {
   TempDir in, out;
   writeStack(in / "slices", vase(), /*asContours=*/true);
   writeFile(in / "h.txt", "0\n8\n16\n");
-  const CliRun run = runMorph((in / "slices").string() + " --heights " + (in / "h.txt").string() + " -o " +
-                         (out / "vase.ply").string() + " --method regular --save-slices " +
-                         (out / "planes").string() + " --stats " + (out / "s.json").string() + " --vdb " +
-                         (out / "vase.vdb").string());
+  const CliRun run =
+      runMorph((in / "slices").string() + " --heights " + (in / "h.txt").string() + " -o " +
+               (out / "vase.ply").string() + " --method regular --save-slices " + (out / "planes").string() +
+               " --stats " + (out / "s.json").string() + " --vdb " + (out / "vase.vdb").string());
   ASSERT_EQ(run.status, 0) << run.output;
   const mesh::MeshReport report = mesh::validateMesh(io::readMesh(out / "vase.ply"), {.selfIntersections = false});
   EXPECT_TRUE(report.closed);
@@ -54,7 +56,7 @@ TEST(MorphCli, SparseVolumeEveryFourthSliceLabelled) {
     for (int i = 0; i < 64 * 64; ++i) bytes[(8 * k) * 64 * 64 + i] = masks[k].inside[i] ? 1 : 0;
   writeFile(in / "v.raw", bytes);
   const CliRun run = runMorph((in / "v.raw").string() + " --dims 64,64,17 --type uint8 --slice-step 8 -o " +
-                         (out / "p.ply").string() + " --stats " + (out / "s.json").string());
+                              (out / "p.ply").string() + " --stats " + (out / "s.json").string());
   ASSERT_EQ(run.status, 0) << run.output;
   const mesh::MeshReport report = mesh::validateMesh(io::readMesh(out / "p.ply"), {.selfIntersections = false});
   EXPECT_TRUE(report.closed);
@@ -77,7 +79,8 @@ TEST_F(MorphCliBadInput, MissingFolder) {
 
 TEST_F(MorphCliBadInput, CorruptImage) {
   writeFile(in / "slices" / "slice_3.png", "\x89PNG\r\n\x1a\n broken");
-  expectCleanFailure(runMorph(slices() + " --spacing 8 -o " + outPly()), {"slice_3.png", "not a readable PNG or BMP"}, out);
+  expectCleanFailure(runMorph(slices() + " --spacing 8 -o " + outPly()), {"slice_3.png", "not a readable PNG or BMP"},
+                     out);
 }
 
 TEST_F(MorphCliBadInput, HeightsCountMismatch) {
@@ -95,7 +98,8 @@ TEST_F(MorphCliBadInput, NonMonotonicHeights) {
 TEST_F(MorphCliBadInput, EmptySliceSet) {
   std::filesystem::create_directories(in / "empty");
   writeFile(in / "empty" / "readme.txt", "no images here");
-  expectCleanFailure(runMorph((in / "empty").string() + " --spacing 8 -o " + outPly()), {"empty", "no slice images"}, out);
+  expectCleanFailure(runMorph((in / "empty").string() + " --spacing 8 -o " + outPly()), {"empty", "no slice images"},
+                     out);
 }
 
 TEST_F(MorphCliBadInput, NoHeightsNorSpacing) {

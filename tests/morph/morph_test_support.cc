@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "morph_test_support.h"
 
 #include <algorithm>
@@ -38,7 +40,9 @@ Mask2 contourOf(const Mask2& mask) {
   for (int y = 0; y < mask.height; ++y)
     for (int x = 0; x < mask.width; ++x) {
       if (!mask.at(x, y)) continue;
-      const auto outside = [&](int i, int j) { return i < 0 || j < 0 || i >= mask.width || j >= mask.height || !mask.at(i, j); };
+      const auto outside = [&](int i, int j) {
+        return i < 0 || j < 0 || i >= mask.width || j >= mask.height || !mask.at(i, j);
+      };
       out.set(x, y, outside(x - 1, y) || outside(x + 1, y) || outside(x, y - 1) || outside(x, y + 1));
     }
   return out;
@@ -48,7 +52,8 @@ SliceStack stackOf(const std::vector<Mask2>& masks, const std::vector<double>& h
   SliceStack stack;
   stack.width = masks.front().width;
   stack.height = masks.front().height;
-  for (std::size_t i = 0; i < masks.size(); ++i) stack.slices.push_back({masks[i], heights[i], "slice " + std::to_string(i)});
+  for (std::size_t i = 0; i < masks.size(); ++i)
+    stack.slices.push_back({masks[i], heights[i], "slice " + std::to_string(i)});
   return stack;
 }
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file morph_test_support.h
 /// @brief Slices built in code (rectangles, discs, annuli; paper 002's synthetic
 ///        cases) and the mesh cross-section used to check that a reconstruction

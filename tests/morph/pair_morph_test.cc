@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // Tests of lib/isovdb/morph/pair_morph.h on pairs where paper 002's recipe has no
 // good answer as written: a component that appears, and an empty slice.
 #include "isovdb/morph/pair_morph.h"

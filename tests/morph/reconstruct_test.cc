@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // Paper 002's synthetic cases end to end through the library: slices → morph →
 // distance field → mesh. The mesh must be closed with the expected components and
 // genus, and cut at each original slice's height it must give back that slice.
@@ -79,7 +81,8 @@ const Variant kVariants[] = {
     {false, Progress::Exponential, pipeline::ContourMethod::Adaptive},
 };
 
-INSTANTIATE_TEST_SUITE_P(Paper002, SyntheticCase, ::testing::Combine(::testing::ValuesIn(kCases), ::testing::ValuesIn(kVariants)));
+INSTANTIATE_TEST_SUITE_P(Paper002, SyntheticCase,
+                         ::testing::Combine(::testing::ValuesIn(kCases), ::testing::ValuesIn(kVariants)));
 
 TEST(Reconstruct, SameDistanceFieldForAnyThreadCount) {
   std::vector<std::vector<float>> fields;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // Slice images in: PNG and 1-bit BMP, filled regions and thin contours (holes
 // by nesting), sizes padded, heights checked; the per-slice signed distance and
 // the convex-hull centroid.
@@ -25,12 +27,31 @@ std::string monochromeBmp(const Mask2& white) {
   const int rowBytes = ((white.width + 31) / 32) * 4;
   const int dataBytes = rowBytes * white.height, offset = 14 + 40 + 8;
   std::string b;
-  auto u16 = [&](int v) { b += char(v & 255); b += char((v >> 8) & 255); };
-  auto u32 = [&](int v) { u16(v & 0xffff); u16((v >> 16) & 0xffff); };
+  auto u16 = [&](int v) {
+    b += char(v & 255);
+    b += char((v >> 8) & 255);
+  };
+  auto u32 = [&](int v) {
+    u16(v & 0xffff);
+    u16((v >> 16) & 0xffff);
+  };
   b += "BM";
-  u32(offset + dataBytes); u32(0); u32(offset);
-  u32(40); u32(white.width); u32(white.height); u16(1); u16(1); u32(0); u32(dataBytes); u32(2835); u32(2835); u32(2); u32(0);
-  u32(0x000000); u32(0xffffff);
+  u32(offset + dataBytes);
+  u32(0);
+  u32(offset);
+  u32(40);
+  u32(white.width);
+  u32(white.height);
+  u16(1);
+  u16(1);
+  u32(0);
+  u32(dataBytes);
+  u32(2835);
+  u32(2835);
+  u32(2);
+  u32(0);
+  u32(0x000000);
+  u32(0xffffff);
   for (int y = white.height - 1; y >= 0; --y) {
     std::string row(rowBytes, '\0');
     for (int x = 0; x < white.width; ++x)

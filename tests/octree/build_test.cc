@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // Tests of lib/isovdb/octree/build.h: regular vs adaptive constructions,
 // thin features, balance, determinism across thread counts.
 #include "isovdb/octree/build.h"
@@ -81,10 +83,11 @@ TEST_F(SphereR40, AdaptiveIsBalancedAndThreeTimesSmaller) {
     ASSERT_EQ(l.surface, crossedBySurface(*samples_, l));
     ASSERT_FALSE(l.complex);
   }
-  std::printf("[ sphere r=40, S=128, max depth 7 ] surface leaves: regular %zu, adaptive %zu (%.1fx); "
-              "leaves: regular %zu, adaptive %zu; adaptive balance splits %zu, complex cells %zu\n",
-              r.surfaceLeaves, a.surfaceLeaves, double(r.surfaceLeaves) / double(a.surfaceLeaves), r.leaves, a.leaves,
-              adaptiveStats.balanceSplits, adaptiveStats.complexCells);
+  std::printf(
+      "[ sphere r=40, S=128, max depth 7 ] surface leaves: regular %zu, adaptive %zu (%.1fx); "
+      "leaves: regular %zu, adaptive %zu; adaptive balance splits %zu, complex cells %zu\n",
+      r.surfaceLeaves, a.surfaceLeaves, double(r.surfaceLeaves) / double(a.surfaceLeaves), r.leaves, a.leaves,
+      adaptiveStats.balanceSplits, adaptiveStats.complexCells);
   EXPECT_GE(r.surfaceLeaves, 3 * a.surfaceLeaves);
   for (int minDepth : {3, 4}) {
     const OctreeSummary m = summarizeOctree(buildOctree(*samples_, {.minDepth = minDepth}));
@@ -132,9 +135,8 @@ TEST(BuildOctree, ThinSheetForcesTheMaximumDepth) {
 
 TEST(BuildOctree, SmallTunnelForcesTheMaximumDepth) {
   // Solid everywhere except a tunnel one sample wide along z through (9, 9).
-  const MetaCellSamples s = makeMetaCellSamples(32, {0, 0, 0}, [](int x, int y, int) {
-    return 0.8 - std::sqrt((x - 9.0) * (x - 9.0) + (y - 9.0) * (y - 9.0));
-  });
+  const MetaCellSamples s = makeMetaCellSamples(
+      32, {0, 0, 0}, [](int x, int y, int) { return 0.8 - std::sqrt((x - 9.0) * (x - 9.0) + (y - 9.0) * (y - 9.0)); });
   for (auto construction : {OctreeConstruction::Adaptive, OctreeConstruction::Regular}) {
     OctreeBuildStats stats;
     const LinearOctree tree = buildOctree(s, {.construction = construction}, &stats);

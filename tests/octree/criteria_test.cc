@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // Tests of lib/isovdb/octree/criteria.h on hand-built voxel faces.
 #include "isovdb/octree/criteria.h"
 
@@ -120,8 +122,7 @@ TEST(Criteria, InteriorBlobIsDetectedOnlyWhenAsked) {
   EXPECT_TRUE(with.boundaryUniform);
   EXPECT_TRUE(with.interiorComponent);
   EXPECT_TRUE(with.isComplex());
-  const CellTopology without =
-      classifyCell(phasesOf(s), {0, 0, 0}, 8, {.detectInteriorComponents = false}, labeller);
+  const CellTopology without = classifyCell(phasesOf(s), {0, 0, 0}, 8, {.detectInteriorComponents = false}, labeller);
   EXPECT_FALSE(without.isComplex());
   EXPECT_FALSE(without.isHeterogeneous());
 }
@@ -206,7 +207,8 @@ CellTopology referenceTopology(const MetaCellSamples& s, std::array<int, 3> o, i
         const int du[4] = {1, -1, 0, 0}, dv[4] = {0, 0, 1, -1};
         for (int d = 0; d < 4; ++d) {
           const int a = u + du[d], b = v + dv[d];
-          if (a < 0 || b < 0 || a >= n || b >= n || seen[static_cast<std::size_t>(b * n + a)] || at(a, b) != ph) continue;
+          if (a < 0 || b < 0 || a >= n || b >= n || seen[static_cast<std::size_t>(b * n + a)] || at(a, b) != ph)
+            continue;
           seen[static_cast<std::size_t>(b * n + a)] = 1;
           stack.push_back(b * n + a);
         }

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // Tests of lib/isovdb/octree/morton.h and the lookups of linear_octree.h,
 // randomized against a naive pointer octree.
 #include "isovdb/octree/morton.h"
@@ -116,8 +118,8 @@ void collectLeaves(const Node& node, std::vector<const Node*>& out) {
 const Node* locate(const Node& node, std::array<int, 3> voxel) {
   if (node.leaf()) return &node;
   const int h = node.size / 2;
-  const int o = (voxel[0] >= node.origin[0] + h) | (voxel[1] >= node.origin[1] + h) << 1 |
-                (voxel[2] >= node.origin[2] + h) << 2;
+  const int o =
+      (voxel[0] >= node.origin[0] + h) | (voxel[1] >= node.origin[1] + h) << 1 | (voxel[2] >= node.origin[2] + h) << 2;
   return locate(*node.children[static_cast<std::size_t>(o)], voxel);
 }
 
@@ -174,8 +176,7 @@ TEST(LinearOctree, RandomizedAgainstPointerOctree) {
           const bool onPlane = (f & 1) ? b.origin[axis] == plane : b.origin[axis] + b.size == plane;
           bool overlap = onPlane;
           for (int t = 0; t < 3 && overlap; ++t)
-            if (t != axis)
-              overlap = b.origin[t] < a.origin[t] + a.size && a.origin[t] < b.origin[t] + b.size;
+            if (t != axis) overlap = b.origin[t] < a.origin[t] + a.size && a.origin[t] < b.origin[t] + b.size;
           if (overlap) expected.push_back(j);
         }
         EXPECT_EQ(across, expected) << "leaf " << i << " face " << f;

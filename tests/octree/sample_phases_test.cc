@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // Tests of lib/isovdb/octree/sample_phases.h against the float samples they summarise.
 #include "isovdb/octree/sample_phases.h"
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // pipeline/input_choices.h: front-end choices resolved into InputOptions.
 #include <gtest/gtest.h>
 

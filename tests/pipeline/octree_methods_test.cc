@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // Our octree methods end to end through the pipeline (mask -> SDF -> one padded
 // meta-cell -> octree -> contour), each mesh checked by the validator.
 #include <gtest/gtest.h>
@@ -111,8 +113,9 @@ TEST(OctreeMethodsSharpFeatures, CylinderKeepsItsRimsAcrossMetaCells) {
     for (const double side : {-1.0, 1.0})
       for (int i = 0; i < 360; ++i) {
         const double a = 2 * M_PI * i / 360;
-        rimToSurface = std::max(rimToSurface, test::distanceToMesh(mesh, {c[0] + r * std::cos(a),
-                                                                          c[1] + r * std::sin(a), c[2] + side * hh}));
+        rimToSurface =
+            std::max(rimToSurface,
+                     test::distanceToMesh(mesh, {c[0] + r * std::cos(a), c[1] + r * std::sin(a), c[2] + side * hh}));
       }
     std::printf("cylinder, 16-voxel meta-cells%s: %zu triangles, rim-to-surface %.4f voxel\n",
                 sharp ? ", sharp features" : "", mesh.triangles.size(), rimToSurface);
@@ -125,7 +128,8 @@ TEST(OctreeMethodsSharpFeatures, CylinderKeepsItsRimsAcrossMetaCells) {
 }
 
 mesh::Mesh contourRegular(const volume::Volume& sdf, contour::RegularTopology topology, bool manifoldFix = true) {
-  return contourWithOctree(sdf, {.method = OctreeMethod::Regular, .regularTopology = topology, .manifoldFix = manifoldFix});
+  return contourWithOctree(sdf,
+                           {.method = OctreeMethod::Regular, .regularTopology = topology, .manifoldFix = manifoldFix});
 }
 
 volume::Volume frogSkeletonMask() {
@@ -241,11 +245,13 @@ TEST(OctreeMethodsTopology, RegularMeshHasTheVoxelObjectsTopology) {
       EXPECT_EQ(report.eulerCharacteristic, 2 * solid);
       EXPECT_GT(figures["manifold_fixes"].get<std::int64_t>(), 0);  // split faces
       EXPECT_GT(figures["tube_cells"].get<std::int64_t>(), 0);
-      std::printf("[voxels seed %u, meta-cell %d] solid chi %lld, mesh chi %lld, %lld triangles, split faces %lld, tubes %lld\n",
-                  seed, metaCellSize, static_cast<long long>(solid), static_cast<long long>(report.eulerCharacteristic),
-                  static_cast<long long>(report.triangles),
-                  static_cast<long long>(figures["manifold_fixes"].get<std::int64_t>()),
-                  static_cast<long long>(figures["tube_cells"].get<std::int64_t>()));
+      std::printf(
+          "[voxels seed %u, meta-cell %d] solid chi %lld, mesh chi %lld, %lld triangles, split faces %lld, tubes "
+          "%lld\n",
+          seed, metaCellSize, static_cast<long long>(solid), static_cast<long long>(report.eulerCharacteristic),
+          static_cast<long long>(report.triangles),
+          static_cast<long long>(figures["manifold_fixes"].get<std::int64_t>()),
+          static_cast<long long>(figures["tube_cells"].get<std::int64_t>()));
     }
     // Without the split the bridges' two cells share four polygons: non-manifold edges.
     const mesh::MeshReport unsplit = mesh::validateMesh(
@@ -269,7 +275,8 @@ TEST(OctreeMethodsTopology, AdaptiveMeshHasRegularsTopologyOnRandomVoxels) {
     const mesh::MeshReport regular = mesh::validateMesh(
         contourWithOctree(sdf, {.method = OctreeMethod::Regular, .regularTopology = contour::RegularTopology::Mdmc}),
         {.selfIntersections = false});
-    const mesh::MeshReport adaptive = mesh::validateMesh(contour(sdf, OctreeMethod::Adaptive), {.selfIntersections = false});
+    const mesh::MeshReport adaptive =
+        mesh::validateMesh(contour(sdf, OctreeMethod::Adaptive), {.selfIntersections = false});
     EXPECT_TRUE(adaptive.closed) << seed;
     EXPECT_EQ(adaptive.nonManifoldEdges, 0) << seed;
     EXPECT_EQ(adaptive.components, regular.components) << seed;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // The whole-volume pipeline: meta-cells contoured independently, seams closed by
 // edge-octree stitching. Every stitched mesh must keep the guarantees of the
 // single-block mesh (closed; regular: manifold; adaptive: no self-intersection)
@@ -30,9 +32,8 @@ volume::Volume shapeSdf(samples::ShapeKind kind, int size) {
 
 /// A mask volume of 64^3 voxels from an inside test.
 volume::Volume maskSdf(const std::function<bool(int, int, int)>& inside) {
-  auto stream = test::VectorSliceStream::fromFunction({64, 64, 64}, [&](int x, int y, int z) {
-    return inside(x, y, z) ? 1.0f : 0.0f;
-  });
+  auto stream = test::VectorSliceStream::fromFunction(
+      {64, 64, 64}, [&](int x, int y, int z) { return inside(x, y, z) ? 1.0f : 0.0f; });
   return sdfOf(stream);
 }
 
@@ -138,9 +139,8 @@ TEST(StitchedFeatures, TunnelAlongAMetaEdge) {
 
 TEST(StitchedFeatures, SharpCornerAtAMetaVertex) {
   // A box whose corner voxel sits at the meta-vertex (32, 32, 32), where eight meta-cells meet.
-  const volume::Volume sdf = maskSdf([](int x, int y, int z) {
-    return x >= 16 && x <= 32 && y >= 16 && y <= 32 && z >= 16 && z <= 32;
-  });
+  const volume::Volume sdf =
+      maskSdf([](int x, int y, int z) { return x >= 16 && x <= 32 && y >= 16 && y <= 32 && z >= 16 && z <= 32; });
   for (const auto method : {OctreeMethod::Regular, OctreeMethod::Adaptive}) {
     expectSameGuaranteesAsOneBlock(sdf, method, 32);
     expectSameGuaranteesAsOneBlock(sdf, method, 16);

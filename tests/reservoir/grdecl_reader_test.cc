@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // GRDECL reader and grid model: syntax, bad input, the three shared samples.
 #include <gtest/gtest.h>
 

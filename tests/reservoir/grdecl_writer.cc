@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "reservoir/grdecl_writer.h"
 
 #include <cstdio>
@@ -18,8 +20,8 @@ std::string boxGrdecl(const BoxGrid& g, const std::string& name) {
   for (int j = 0; j <= g.ny; ++j)
     for (int i = 0; i <= g.nx; ++i) {
       const Eigen::Vector3d top = boxNode(g, i, j, 0, 0), bottom = boxNode(g, i, j, g.nz, 0);
-      out << top.x() << ' ' << top.y() << ' ' << top.z() << ' ' << bottom.x() << ' ' << bottom.y() << ' '
-          << bottom.z() << '\n';
+      out << top.x() << ' ' << top.y() << ' ' << top.z() << ' ' << bottom.x() << ' ' << bottom.y() << ' ' << bottom.z()
+          << '\n';
     }
   out << "/\n\nZCORN\n";
   for (int k = 0; k < g.nz; ++k)
@@ -38,8 +40,7 @@ std::string boxGrdecl(const BoxGrid& g, const std::string& name) {
   for (int k = 0; k < g.nz; ++k)
     for (int j = 0; j < g.ny; ++j)
       for (int i = 0; i < g.nx; ++i) {
-        const Eigen::Vector3d centre =
-            0.5 * (boxNode(g, i, j, k, i) + boxNode(g, i + 1, j + 1, k + 1, i));
+        const Eigen::Vector3d centre = 0.5 * (boxNode(g, i, j, k, i) + boxNode(g, i + 1, j + 1, k + 1, i));
         out << g.field(centre) << '\n';
       }
   out << "/\n";

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file grdecl_writer.h
 /// @brief Writes synthetic corner-point grids as real GRDECL text for the tests:
 /// a regular box of cells, optionally with a fault throw or mirrored (left-handed).
@@ -13,12 +15,12 @@ namespace isovdb::test {
 
 struct BoxGrid {
   int nx = 10, ny = 10, nz = 10;
-  double cell = 1.0;                       ///< cell edge length
+  double cell = 1.0;  ///< cell edge length
   Eigen::Vector3d origin{0, 0, 0};
-  double faultThrow = 0.0;                 ///< z offset of the cells with i >= nx/2 (a fault)
-  bool mirrorX = false;                    ///< x = origin - i*cell: a left-handed grid
+  double faultThrow = 0.0;                                   ///< z offset of the cells with i >= nx/2 (a fault)
+  bool mirrorX = false;                                      ///< x = origin - i*cell: a left-handed grid
   std::function<double(const Eigen::Vector3d&)> field = {};  ///< property at the cell centres
-  std::function<bool(int, int, int)> active = {};           ///< empty: all active
+  std::function<bool(int, int, int)> active = {};            ///< empty: all active
 };
 
 /// World position of node (i, j, k) of the cell column i (fault throw applied by column).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // Marching Cubes on hexahedra: accuracy on analytic fields, closed surfaces,
 // Jacobian normals, faults, left-handed grids, the Emerald hole.
 #include <gtest/gtest.h>
@@ -122,15 +124,16 @@ TEST(HexMarchingCubes, SphereInsideTheGridIsClosedAndOutwardInBothHandedness) {
     double distance = 0, maxAngle = 0;
     for (std::size_t v = 0; v < m.vertexCount(); ++v) {
       const Vector3d radial = (at(m, v) - centre).normalized();
-      maxAngle = std::max(maxAngle, std::acos(std::clamp(normalAt(m, v).dot(radial), -1.0, 1.0)) * 180 / std::numbers::pi);
+      maxAngle =
+          std::max(maxAngle, std::acos(std::clamp(normalAt(m, v).dot(radial), -1.0, 1.0)) * 180 / std::numbers::pi);
       outward += normalAt(m, v).dot(at(m, v) - centre) > 0.9 * (at(m, v) - centre).norm();
       distance += std::abs((at(m, v) - centre).norm() - 6.0);
     }
     EXPECT_EQ(outward, static_cast<int>(m.vertexCount())) << "normals within 25 deg of radial";
     EXPECT_LT(maxAngle, 5.0) << "Jacobian normals against the analytic gradient";
     std::cout << (mirror ? "left" : "right") << "-handed sphere: " << m.triangleCount()
-              << " triangles, mean vertex distance " << distance / m.vertexCount()
-              << " cell, normals at most " << maxAngle << " deg from radial\n";
+              << " triangles, mean vertex distance " << distance / m.vertexCount() << " cell, normals at most "
+              << maxAngle << " deg from radial\n";
   }
 }
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // PN triangles with envelope normals: Table 4.1, crack-free refinement, accuracy on a sphere.
 #include <gtest/gtest.h>
 
@@ -88,10 +90,9 @@ TEST(PnTessellation, SphereOnACoarseGridStaysClosedAndGetsCloser) {
     EXPECT_EQ(report.inconsistentlyOrientedEdges, 0);
     EXPECT_EQ(report.selfIntersectingPairs, 0);
     const double pnDistance = meanDistance(pn.mesh, centre, radius);
-    std::cout << (rule == FactorRule::Linear ? "linear" : "exponential") << " rule: " << flat.triangleCount()
-              << " -> " << pn.mesh.triangleCount() << " triangles, mean factor " << pn.meanFactor
-              << "; mean distance flat " << flatDistance << ", PN " << pnDistance << " (ratio "
-              << flatDistance / pnDistance << ")\n";
+    std::cout << (rule == FactorRule::Linear ? "linear" : "exponential") << " rule: " << flat.triangleCount() << " -> "
+              << pn.mesh.triangleCount() << " triangles, mean factor " << pn.meanFactor << "; mean distance flat "
+              << flatDistance << ", PN " << pnDistance << " (ratio " << flatDistance / pnDistance << ")\n";
     if (rule == FactorRule::Exponential) {
       EXPECT_GE(flatDistance / pnDistance, 2.0);
     }

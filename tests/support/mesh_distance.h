@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file mesh_distance.h
 /// @brief Distance from a point to a triangle mesh, for tests that measure how
 ///        close a mesh follows a known surface or feature line (brute force).

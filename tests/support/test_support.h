@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file test_support.h
 /// @brief Small helpers shared by the test suites.
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file vector_slice_stream.h
 /// @brief An in-memory SliceStream for tests (dense volumes built in code).
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // Tests for lib/isovdb/volume/digital_topology.h: hand-built voxel objects whose
 // Euler characteristic a naive count gets wrong, a brute-force cubical-complex
 // count on random volumes, and the BoolGrid path (tiles, negative coordinates).
@@ -29,9 +31,7 @@ struct Dense {
 
   Dense(int x, int y, int z) : nx(x), ny(y), nz(z), values(static_cast<std::size_t>(x * y * z), 0) {}
   std::uint8_t& at(int x, int y, int z) { return values[static_cast<std::size_t>((z * ny + y) * nx + x)]; }
-  std::uint8_t at(int x, int y, int z) const {
-    return values[static_cast<std::size_t>((z * ny + y) * nx + x)];
-  }
+  std::uint8_t at(int x, int y, int z) const { return values[static_cast<std::size_t>((z * ny + y) * nx + x)]; }
   void set(int x, int y, int z, std::uint8_t v = 1) { at(x, y, z) = v; }
   void fillBox(std::array<int, 3> lo, std::array<int, 3> hi, std::uint8_t v = 1) {
     for (int z = lo[2]; z <= hi[2]; ++z)
@@ -43,17 +43,14 @@ struct Dense {
 /// SliceStream over a Dense volume (values converted to float).
 class DenseStream final : public io::SliceStream {
  public:
-  explicit DenseStream(const Dense& dense) : dense_(dense) {
-    header_.dims = {dense.nx, dense.ny, dense.nz};
-  }
+  explicit DenseStream(const Dense& dense) : dense_(dense) { header_.dims = {dense.nx, dense.ny, dense.nz}; }
   const std::string& source() const override { return source_; }
   const io::VolumeHeader& header() const override { return header_; }
   std::int64_t nextSlice() const override { return next_; }
   void readSlice(float* out) override {
     if (next_ >= dense_.nz) throw InputError("dense: past the end");
     for (int y = 0; y < dense_.ny; ++y)
-      for (int x = 0; x < dense_.nx; ++x)
-        out[y * dense_.nx + x] = dense_.at(x, y, static_cast<int>(next_));
+      for (int x = 0; x < dense_.nx; ++x) out[y * dense_.nx + x] = dense_.at(x, y, static_cast<int>(next_));
     ++next_;
   }
 
@@ -110,9 +107,7 @@ void expectEuler(const Dense& dense, std::int64_t expected) {
   EXPECT_EQ(eulerCharacteristic(maskVolume(dense, openvdb::Coord(-37, 5, -1000))), expected);
 }
 
-TEST(DigitalTopology, EmptyVolume) {
-  expectEuler(Dense(4, 3, 2), 0);
-}
+TEST(DigitalTopology, EmptyVolume) { expectEuler(Dense(4, 3, 2), 0); }
 
 TEST(DigitalTopology, OneVoxel) {
   Dense dense(3, 3, 3);
@@ -260,8 +255,7 @@ TEST(DigitalTopology, GridWithActiveTilesCountsLikeVoxels) {
   // A 64^3 block filled as tiles (no leaves), with a 3^3 cavity of voxels
   // punched into it and a tunnel straight through it.
   auto grid = openvdb::BoolGrid::create(false);
-  grid->tree().fill(openvdb::CoordBBox(openvdb::Coord(-64, 0, 0), openvdb::Coord(-1, 63, 63)),
-                    true, true);
+  grid->tree().fill(openvdb::CoordBBox(openvdb::Coord(-64, 0, 0), openvdb::Coord(-1, 63, 63)), true, true);
   ASSERT_GT(grid->tree().activeTileCount(), 0u);
   const Volume block(VolumeKind::Mask, grid, Geometry{}, "tiles");
   EXPECT_EQ(eulerCharacteristic(block), 1);
@@ -315,12 +309,12 @@ std::int64_t chi6(std::array<std::int64_t, 3> dims, const std::vector<int>& insi
 }
 
 TEST(EulerCharacteristic6, DiagonalContactsStayApart) {
-  EXPECT_EQ(chi6({2, 2, 1}, {1, 0, 0, 1}), 2);                    // sharing only an edge
-  EXPECT_EQ(chi6({2, 2, 2}, {1, 0, 0, 0, 0, 0, 0, 1}), 2);        // sharing only a corner
-  EXPECT_EQ(chi6({2, 1, 1}, {1, 1}), 1);                          // sharing a face
-  EXPECT_EQ(chi6({2, 2, 2}, {1, 1, 1, 1, 1, 1, 1, 1}), 1);        // a full block
-  EXPECT_EQ(chi6({3, 3, 1}, {1, 1, 1, 1, 0, 1, 1, 1, 1}), 0);     // a ring around a hole
-  EXPECT_EQ(chi6({3, 3, 1}, {0, 1, 0, 1, 0, 1, 0, 1, 0}), 4);     // a diagonal "ring": four pieces
+  EXPECT_EQ(chi6({2, 2, 1}, {1, 0, 0, 1}), 2);                 // sharing only an edge
+  EXPECT_EQ(chi6({2, 2, 2}, {1, 0, 0, 0, 0, 0, 0, 1}), 2);     // sharing only a corner
+  EXPECT_EQ(chi6({2, 1, 1}, {1, 1}), 1);                       // sharing a face
+  EXPECT_EQ(chi6({2, 2, 2}, {1, 1, 1, 1, 1, 1, 1, 1}), 1);     // a full block
+  EXPECT_EQ(chi6({3, 3, 1}, {1, 1, 1, 1, 0, 1, 1, 1, 1}), 0);  // a ring around a hole
+  EXPECT_EQ(chi6({3, 3, 1}, {0, 1, 0, 1, 0, 1, 0, 1, 0}), 4);  // a diagonal "ring": four pieces
 }
 
 TEST(EulerCharacteristic6, BodyDiagonalBackgroundEnclosesNoTunnel) {

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/volume/ingest.h"
 
 #include <gtest/gtest.h>
@@ -52,8 +54,8 @@ TEST(IngestMask, ThresholdRule) {
   VectorSliceStream stream = labelVolume();
   const Volume volume = ingestMask(stream, MaskRule{.threshold = 1.5, .labels = {}});
   EXPECT_EQ(maskGrid(volume).activeVoxelCount(),
-            static_cast<openvdb::Index64>(std::count_if(stream.values().begin(), stream.values().end(),
-                                                        [](float v) { return v > 1.5f; })));
+            static_cast<openvdb::Index64>(
+                std::count_if(stream.values().begin(), stream.values().end(), [](float v) { return v > 1.5f; })));
 }
 
 TEST(IngestMask, HomogeneousBlocksBecomeTiles) {
@@ -68,8 +70,8 @@ TEST(IngestMask, HomogeneousBlocksBecomeTiles) {
   const MaskGrid::TreeType& tree = maskGrid(volume).tree();
   EXPECT_EQ(tree.leafCount(), 1u);  // only the odd voxel needs a leaf
   EXPECT_EQ(tree.activeTileCount(), 2u);
-  EXPECT_EQ(tree.getValueDepth(openvdb::Coord(5, 5, 5)), 1);     // 128^3 tile in a level-2 node
-  EXPECT_EQ(tree.getValueDepth(openvdb::Coord(140, 3, 3)), 2);   // 8^3 tile in a level-1 node
+  EXPECT_EQ(tree.getValueDepth(openvdb::Coord(5, 5, 5)), 1);        // 128^3 tile in a level-2 node
+  EXPECT_EQ(tree.getValueDepth(openvdb::Coord(140, 3, 3)), 2);      // 8^3 tile in a level-1 node
   EXPECT_EQ(tree.getValueDepth(openvdb::Coord(130, 130, 130)), 3);  // voxel in a leaf
   EXPECT_EQ(tree.activeVoxelCount(), 128u * 128 * 128 + 512 + 1);
   EXPECT_LT(tree.memUsage(), 1'000'000u);  // the level-2 node's table; dense: 2.6 MB of bytes
@@ -108,9 +110,8 @@ TEST(IngestScalar, RoundTripIsExact) {
 }
 
 TEST(IngestScalar, BackgroundBlocksAreNotStored) {
-  VectorSliceStream stream = VectorSliceStream::fromFunction({64, 64, 64}, [](int x, int y, int z) {
-    return x == 40 && y == 40 && z == 40 ? 1.f : 0.f;
-  });
+  VectorSliceStream stream = VectorSliceStream::fromFunction(
+      {64, 64, 64}, [](int x, int y, int z) { return x == 40 && y == 40 && z == 40 ? 1.f : 0.f; });
   const Volume volume = ingestScalar(stream, {.background = 0.f});
   EXPECT_EQ(fieldGrid(volume).tree().leafCount(), 1u);
 }

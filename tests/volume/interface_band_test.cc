@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // The interface distance field (volume/interface_band.h, the default method):
 // signs are the mask's on inputs that break smoothing (single voxels, one-voxel
 // sheets, random voxels), the band is the same bit for bit for every chunk size
@@ -68,12 +70,12 @@ TEST(InterfaceBand, SignsAreTheMasksWhereABlurWouldLoseThem) {
   // Single voxels, a one-voxel sheet, a one-voxel line and a one-voxel hole in a
   // block: a blurred mask changes sign on each of them; the field must not.
   const Volume thin = maskOf({40, 40, 40}, [](int x, int y, int z) {
-    if (x == 5 && y == 5 && z == 5) return true;                          // a lone voxel
+    if (x == 5 && y == 5 && z == 5) return true;                                     // a lone voxel
     if ((x == 3 && y == 9 && z == 3) || (x == 4 && y == 10 && z == 4)) return true;  // two touching at a corner
-    if (z == 20 && x >= 4 && x < 36 && y >= 4 && y < 36) return true;     // a sheet
-    if (y == 30 && z == 30 && x >= 3 && x < 37) return true;              // a line
+    if (z == 20 && x >= 4 && x < 36 && y >= 4 && y < 36) return true;                // a sheet
+    if (y == 30 && z == 30 && x >= 3 && x < 37) return true;                         // a line
     const bool block = x >= 10 && x < 30 && y >= 8 && y < 16 && z >= 8 && z < 16;
-    return block && !(x == 20 && y == 12 && z == 12);                     // a block with a hole
+    return block && !(x == 20 && y == 12 && z == 12);  // a block with a hole
   });
   const Volume thinField = interfaceField(thin);
   expectSignsOfTheMask(thin, thinField, -4, 44, "thin features");
@@ -137,8 +139,7 @@ TEST(InterfaceBand, AxisAlignedFacesAreExactAndTheBandIsWhole) {
   // The band: |value| < 3 exactly on the active voxels, which include every voxel
   // within 2.5 of a face (the far interior is a tile, not band).
   for (auto it = fieldGrid(a).cbeginValueOn(); it; ++it) ASSERT_LT(std::abs(*it), 3.f) << it.getCoord();
-  for (int x = box.min().x() - 3; x <= box.min().x() + 2; ++x)
-    EXPECT_TRUE(acc.isValueOn({x, 70, 76})) << x;
+  for (int x = box.min().x() - 3; x <= box.min().x() + 2; ++x) EXPECT_TRUE(acc.isValueOn({x, 70, 76})) << x;
   EXPECT_FALSE(acc.isValueOn({70, 70, 76}));
   EXPECT_LT(acc.getValue({70, 70, 76}), 0.f);
 }
@@ -164,8 +165,8 @@ TEST(InterfaceBand, CloserToAnalyticSolidsThanTheTracker) {
   const auto torus = [](double x, double y, double z) {
     return std::hypot(std::hypot(x - 32.4, y - 33.1) - 20.0, z - 31.8) - 8.3;
   };
-  for (const auto& [name, exact] : {std::pair<const char*, std::function<double(double, double, double)>>{"sphere", sphere},
-                                    {"torus", torus}}) {
+  for (const auto& [name, exact] :
+       {std::pair<const char*, std::function<double(double, double, double)>>{"sphere", sphere}, {"torus", torus}}) {
     SCOPED_TRACE(name);
     const Volume mask = maskOf({68, 68, 68}, [&](int x, int y, int z) { return exact(x, y, z) < 0; });
     const auto [mean, worst] = distanceError(interfaceField(mask), exact);

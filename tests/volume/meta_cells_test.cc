@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/volume/meta_cells.h"
 
 #include <gtest/gtest.h>

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 // Tests for data/generators/shapes.h: every sample shape's digital Euler
 // characteristic (stream and BoolGrid paths of volume/digital_topology.h)
 // equals its known value at two resolutions; streams are deterministic.
@@ -31,21 +33,16 @@ volume::Volume shapeMask(ShapeKind kind, const ShapeOptions& options) {
     for (std::int64_t y = 0; y < dims[1]; ++y)
       for (std::int64_t x = 0; x < dims[0]; ++x)
         if (slice[static_cast<std::size_t>(y * dims[0] + x)])
-          accessor.setValueOn(openvdb::Coord(static_cast<int>(x), static_cast<int>(y),
-                                             static_cast<int>(z)),
-                              true);
+          accessor.setValueOn(openvdb::Coord(static_cast<int>(x), static_cast<int>(y), static_cast<int>(z)), true);
   }
-  return volume::Volume(volume::VolumeKind::Mask, grid, volume::Geometry{},
-                        std::string(shapeName(kind)));
+  return volume::Volume(volume::VolumeKind::Mask, grid, volume::Geometry{}, std::string(shapeName(kind)));
 }
 
 /// Dense copy of a (small) shape volume, padded by one background voxel.
 struct PaddedVolume {
   std::array<std::int64_t, 3> dims;
   std::vector<std::uint8_t> inside;
-  std::int64_t index(std::int64_t x, std::int64_t y, std::int64_t z) const {
-    return (z * dims[1] + y) * dims[0] + x;
-  }
+  std::int64_t index(std::int64_t x, std::int64_t y, std::int64_t z) const { return (z * dims[1] + y) * dims[0] + x; }
 };
 
 PaddedVolume paddedVolume(ShapeKind kind, const ShapeOptions& options) {
@@ -105,17 +102,16 @@ TEST_P(ShapeTopology, DigitalEulerCharacteristicMatchesKnownValue) {
   EXPECT_EQ(volume::eulerCharacteristic(shapeMask(kind, options)), knownEulerCharacteristic(kind));
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    AllShapes, ShapeTopology,
-    ::testing::Combine(::testing::Values(ShapeKind::Sphere, ShapeKind::Torus, ShapeKind::Genus2,
-                                         ShapeKind::GyroidSlab, ShapeKind::SaltDome),
-                       ::testing::Values(64, 128)),
-    [](const auto& info) {
-      std::string name(shapeName(std::get<0>(info.param)));
-      for (char& c : name)
-        if (c == '-') c = '_';
-      return name + "_" + std::to_string(std::get<1>(info.param));
-    });
+INSTANTIATE_TEST_SUITE_P(AllShapes, ShapeTopology,
+                         ::testing::Combine(::testing::Values(ShapeKind::Sphere, ShapeKind::Torus, ShapeKind::Genus2,
+                                                              ShapeKind::GyroidSlab, ShapeKind::SaltDome),
+                                            ::testing::Values(64, 128)),
+                         [](const auto& info) {
+                           std::string name(shapeName(std::get<0>(info.param)));
+                           for (char& c : name)
+                             if (c == '-') c = '_';
+                           return name + "_" + std::to_string(std::get<1>(info.param));
+                         });
 
 TEST(Shapes, ComponentsAndCavitiesExplainChi) {
   // chi = components - handles + cavities; counting components and cavities
@@ -125,10 +121,8 @@ TEST(Shapes, ComponentsAndCavitiesExplainChi) {
     ShapeKind kind;
     int components, handles, cavities;
   };
-  for (const Expected& expected : {Expected{ShapeKind::Sphere, 1, 0, 0},
-                                   Expected{ShapeKind::Torus, 1, 1, 0},
-                                   Expected{ShapeKind::Genus2, 1, 2, 0},
-                                   Expected{ShapeKind::SaltDome, 3, 1, 0}}) {
+  for (const Expected& expected : {Expected{ShapeKind::Sphere, 1, 0, 0}, Expected{ShapeKind::Torus, 1, 1, 0},
+                                   Expected{ShapeKind::Genus2, 1, 2, 0}, Expected{ShapeKind::SaltDome, 3, 1, 0}}) {
     SCOPED_TRACE(std::string(shapeName(expected.kind)));
     const PaddedVolume volume = paddedVolume(expected.kind, ShapeOptions{.size = 64});
     const int components = countComponents(volume, true);
@@ -187,8 +181,8 @@ TEST(Shapes, StreamIsDeterministicAndMatchesInside) {
         for (std::int64_t x = 0; x < dims[0]; ++x) {
           const float value = a[static_cast<std::size_t>(y * dims[0] + x)];
           ASSERT_TRUE(value == 0.f || value == 255.f);
-          ASSERT_EQ(value != 0.f, inside(kind, options, static_cast<double>(x),
-                                         static_cast<double>(y), static_cast<double>(z)))
+          ASSERT_EQ(value != 0.f,
+                    inside(kind, options, static_cast<double>(x), static_cast<double>(y), static_cast<double>(z)))
               << x << " " << y << " " << z;
           insideCount += value != 0.f;
         }
@@ -219,8 +213,7 @@ TEST(Shapes, RejectsBadOptions) {
   EXPECT_THROW(makeShapeStream(ShapeKind::Sphere, ShapeOptions{.size = 8}), InputError);
   EXPECT_THROW(makeShapeStream(ShapeKind::Sphere, ShapeOptions{.size = 64, .label = 0}), InputError);
   std::vector<std::uint8_t> slice(64 * 64);
-  EXPECT_THROW(generateSlice(ShapeKind::Sphere, ShapeOptions{.size = 64}, 64, slice.data()),
-               InputError);
+  EXPECT_THROW(generateSlice(ShapeKind::Sphere, ShapeOptions{.size = 64}, 64, slice.data()), InputError);
 }
 
 }  // namespace

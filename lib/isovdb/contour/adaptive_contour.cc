@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/contour/adaptive_contour.h"
 
 #include <tbb/blocked_range.h>
@@ -32,10 +34,11 @@ MetaCellMesh contourAdaptiveMetaCell(const octree::MetaCellSamples& samples, con
   std::vector<std::uint8_t> configs(leafCount);
   for (std::size_t i = 0; i < leafCount; ++i) configs[i] = tree.leaf(i).cornerSigns;
   const LeafGroups groups = groupLeaves(samples, tree, std::move(configs), options.iso, options.manifoldFix);
-  const std::vector<mesh::Vec3f> positions = placeGroupVertices(
-      samples, tree, groups,
-      DualVertexOptions{.iso = options.iso, .singularValueThreshold = options.singularValueThreshold,
-                        .sharpFeatures = options.sharpFeatures});
+  const std::vector<mesh::Vec3f> positions =
+      placeGroupVertices(samples, tree, groups,
+                         DualVertexOptions{.iso = options.iso,
+                                           .singularValueThreshold = options.singularValueThreshold,
+                                           .sharpFeatures = options.sharpFeatures});
   std::vector<Vec3d> cellPoints(positions.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leafCount, 256), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i)
@@ -54,8 +57,12 @@ MetaCellMesh contourAdaptiveMetaCell(const octree::MetaCellSamples& samples, con
       return std::numeric_limits<double>::quiet_NaN();
     return static_cast<double>(ix.point[axis] - static_cast<float>(start[axis]));
   };
-  const AdaptiveTree source{.tree = &tree, .origin = samples.origin, .firstVertex = &groups.firstVertex,
-                            .cellPoints = &cellPoints, .alternative = &groups.alternative, .crossing = crossing,
+  const AdaptiveTree source{.tree = &tree,
+                            .origin = samples.origin,
+                            .firstVertex = &groups.firstVertex,
+                            .cellPoints = &cellPoints,
+                            .alternative = &groups.alternative,
+                            .crossing = crossing,
                             .inRegion = {}};
   std::vector<LeafEdges> perLeaf(leafCount);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leafCount, 64), [&](const tbb::blocked_range<std::size_t>& r) {
@@ -78,7 +85,8 @@ MetaCellMesh contourAdaptiveMetaCell(const octree::MetaCellSamples& samples, con
     local.edgesWithoutVertex += le.withoutVertex;
     for (const EdgeRecord& r : le.records)
       for (std::size_t i = 0; i < static_cast<std::size_t>(r.cellCount); ++i)
-        meshVertex[groups.firstVertex[static_cast<std::size_t>(r.cells[i])] + static_cast<std::size_t>(r.groups[i])] = kUsed;
+        meshVertex[groups.firstVertex[static_cast<std::size_t>(r.cells[i])] + static_cast<std::size_t>(r.groups[i])] =
+            kUsed;
   }
   const VertexAdder addVertex = appendingTo(mesh);
   for (std::size_t v = 0; v < cellPoints.size(); ++v)
@@ -94,12 +102,13 @@ MetaCellMesh contourAdaptiveMetaCell(const octree::MetaCellSamples& samples, con
       if (r.how.fan) ++local.fannedEdges;
       if (r.uncrossedFace) ++local.uncrossedFaceEdges;
       ++local.minimalEdges;
-      if (r.cellCount == 4) ++local.quads;
-      else ++local.triangles3;
+      if (r.cellCount == 4)
+        ++local.quads;
+      else
+        ++local.triangles3;
     }
   }
-  local.trianglesAddedByFans =
-      static_cast<std::int64_t>(mesh.triangles.size()) - (2 * local.quads + local.triangles3);
+  local.trianglesAddedByFans = static_cast<std::int64_t>(mesh.triangles.size()) - (2 * local.quads + local.triangles3);
 
   // The seam: boundary leaves with their vertex (if a polygon here used it) and edge crossings,
   // and the face points made here on faces that touch the boundary.
@@ -118,8 +127,9 @@ MetaCellMesh contourAdaptiveMetaCell(const octree::MetaCellSamples& samples, con
       cell.positions[g] = {static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])};
     }
     for (int e = 0; e < 12; ++e)
-      cell.edgeCrossing[static_cast<std::size_t>(e)] =
-          ((leaf.bipolarEdges() >> e) & 1) ? static_cast<float>(crossing(i, e)) : std::numeric_limits<float>::quiet_NaN();
+      cell.edgeCrossing[static_cast<std::size_t>(e)] = ((leaf.bipolarEdges() >> e) & 1)
+                                                           ? static_cast<float>(crossing(i, e))
+                                                           : std::numeric_limits<float>::quiet_NaN();
     result.seam.cells.push_back(cell);
   }
   for (const auto& [face, vertex] : faceVertices) {

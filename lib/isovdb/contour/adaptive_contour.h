@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file adaptive_contour.h
 /// @brief Adaptive mode: dual contouring of a meta-cell's octree on minimal
 ///        edges (Ju et al. 2002), made intersection-free with the fans of
@@ -58,22 +60,23 @@ namespace isovdb::contour {
 
 /// Options of contourAdaptive (CLI: `isovdb extract IN --method adaptive`).
 struct AdaptiveContourOptions {
-  float iso = 0.0f;                     ///< isovalue; inside iff value <= iso (must match the octree's)
-  bool intersectionFree = true;         ///< Ju–Udeshi fans where needed; false (--no-intersection-free) = plain DC
-  bool manifoldFix = true;              ///< Wenger's fix on doubled ambiguous faces (leaf_groups.h); false only in tests
+  float iso = 0.0f;              ///< isovalue; inside iff value <= iso (must match the octree's)
+  bool intersectionFree = true;  ///< Ju–Udeshi fans where needed; false (--no-intersection-free) = plain DC
+  bool manifoldFix = true;       ///< Wenger's fix on doubled ambiguous faces (leaf_groups.h); false only in tests
   float singularValueThreshold = 0.1f;  ///< QEF truncation of the dual vertices (see QefOptions); larger = smoother,
                                         ///< smaller = sharper features but noisier vertices
-  bool sharpFeatures = false;  ///< crossings near a crease from the face they lie on (crease_crossing.h);
-                               ///< the octree should be built with the same OctreeOptions::sharpFeatures
+  bool sharpFeatures = false;           ///< crossings near a crease from the face they lie on (crease_crossing.h);
+                                        ///< the octree should be built with the same OctreeOptions::sharpFeatures
 };
 
 /// What contourAdaptive did (figures for statistics, tests and paper 000's Tables 5.1–5.2).
 struct AdaptiveContourStats {
-  std::int64_t minimalEdges = 0;          ///< sign-changing minimal edges contoured
-  std::int64_t quads = 0;                 ///< of them, edges with 4 leaves around
-  std::int64_t triangles3 = 0;            ///< of them, edges with 3 leaves around (one coarser)
-  std::int64_t fannedEdges = 0;           ///< edges triangulated with a Ju–Udeshi fan through the edge point v_e
-  std::int64_t uncrossedFaceEdges = 0;    ///< edges with a face that the cell-to-cell segment misses (polygon through v_f)
+  std::int64_t minimalEdges = 0;  ///< sign-changing minimal edges contoured
+  std::int64_t quads = 0;         ///< of them, edges with 4 leaves around
+  std::int64_t triangles3 = 0;    ///< of them, edges with 3 leaves around (one coarser)
+  std::int64_t fannedEdges = 0;   ///< edges triangulated with a Ju–Udeshi fan through the edge point v_e
+  std::int64_t uncrossedFaceEdges =
+      0;  ///< edges with a face that the cell-to-cell segment misses (polygon through v_f)
   std::int64_t trianglesAddedByFans = 0;  ///< triangles beyond plain DC's (2 per quad, 1 per triangle): fans
                                           ///< and polygons routed through face points
   std::int64_t boundaryEdges = 0;         ///< sign-changing minimal edges skipped on the meta-cell boundary
@@ -98,7 +101,6 @@ mesh::Mesh contourAdaptive(const octree::MetaCellSamples& samples, const octree:
 ///        that touch the meta-cell boundary, and the face points made into
 ///        vertices on faces that touch it.
 MetaCellMesh contourAdaptiveMetaCell(const octree::MetaCellSamples& samples, const octree::LinearOctree& tree,
-                                     const AdaptiveContourOptions& options = {},
-                                     AdaptiveContourStats* stats = nullptr);
+                                     const AdaptiveContourOptions& options = {}, AdaptiveContourStats* stats = nullptr);
 
 }  // namespace isovdb::contour

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/contour/adaptive_edges.h"
 
 #include <algorithm>
@@ -187,13 +189,13 @@ VertexAdder appendingTo(mesh::Mesh& mesh, std::uint32_t base) {
   };
 }
 
-std::size_t emitEdgeRecord(const EdgeRecord& r, const CellVertexFn& cellVertex,
-                           const VertexAdder& addVertex, FaceVertexMap& faceVertices,
-                           std::vector<mesh::Triangle>& triangles) {
+std::size_t emitEdgeRecord(const EdgeRecord& r, const CellVertexFn& cellVertex, const VertexAdder& addVertex,
+                           FaceVertexMap& faceVertices, std::vector<mesh::Triangle>& triangles) {
   const int k = r.cellCount;
   std::array<std::uint32_t, 9> index{};
   for (int i = 0; i < k; ++i) {
-    index[static_cast<std::size_t>(i)] = cellVertex(r.cells[static_cast<std::size_t>(i)], r.groups[static_cast<std::size_t>(i)]);
+    index[static_cast<std::size_t>(i)] =
+        cellVertex(r.cells[static_cast<std::size_t>(i)], r.groups[static_cast<std::size_t>(i)]);
     if (r.crossed[static_cast<std::size_t>(i)]) continue;
     auto [it, inserted] = faceVertices.try_emplace(r.faces[static_cast<std::size_t>(i)], 0u);
     if (inserted) it->second = addVertex(r.facePoints[static_cast<std::size_t>(i)]);
@@ -204,7 +206,7 @@ std::size_t emitEdgeRecord(const EdgeRecord& r, const CellVertexFn& cellVertex,
   triangulateEdge(k, r.crossed, r.how, local);
   for (const auto& t : local)
     triangles.push_back({index[static_cast<std::size_t>(t[0])], index[static_cast<std::size_t>(t[1])],
-                              index[static_cast<std::size_t>(t[2])]});
+                         index[static_cast<std::size_t>(t[2])]});
   return local.size();
 }
 

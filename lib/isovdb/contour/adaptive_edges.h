@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file adaptive_edges.h
 /// @brief The per-edge routine of adaptive mode, shared by a meta-cell's
 ///        contouring and by seam stitching: find the sign-changing minimal
@@ -37,11 +39,11 @@ inline constexpr double kInteriorMargin = 1e-3;
 /// leaf coarser than the edge has a single vertex.
 struct AdaptiveTree {
   const octree::LinearOctree* tree = nullptr;
-  std::array<int, 3> origin{0, 0, 0};       ///< global index coordinate of the tree's offset (0, 0, 0)
+  std::array<int, 3> origin{0, 0, 0};  ///< global index coordinate of the tree's offset (0, 0, 0)
   /// Per leaf + 1: first of the leaf's vertices in `cellPoints` (LeafGroups::firstVertex).
   const std::vector<std::uint32_t>* firstVertex = nullptr;
-  const std::vector<Vec3d>* cellPoints = nullptr;   ///< per vertex: v_c, global coordinates, strictly inside its cell
-  const std::vector<char>* alternative = nullptr;   ///< per leaf: Wenger's alternative grouping
+  const std::vector<Vec3d>* cellPoints = nullptr;  ///< per vertex: v_c, global coordinates, strictly inside its cell
+  const std::vector<char>* alternative = nullptr;  ///< per leaf: Wenger's alternative grouping
   /// Crossing on edge e of leaf l, in voxels from the edge's start corner; NaN if unknown (mid-edge is used).
   std::function<double(std::size_t leaf, int edge)> crossing;
   /// Which edges to contour, by start (tree offsets) and axis; empty = every edge with all leaves around.
@@ -54,9 +56,9 @@ struct AdaptiveTree {
 /// One sign-changing minimal edge, ready to be triangulated.
 struct EdgeRecord {
   int cellCount = 0;
-  std::array<std::int64_t, 4> cells{};    ///< leaf indices in polygon order (outward orientation)
-  std::array<std::int8_t, 4> groups{};    ///< per cell: its vertex (DMC group) that the polygon uses
-  std::array<FaceKey, 4> faces{};         ///< the minimal face between cell i and i + 1
+  std::array<std::int64_t, 4> cells{};  ///< leaf indices in polygon order (outward orientation)
+  std::array<std::int8_t, 4> groups{};  ///< per cell: its vertex (DMC group) that the polygon uses
+  std::array<FaceKey, 4> faces{};       ///< the minimal face between cell i and i + 1
   std::array<Vec3d, 4> facePoints{};
   Vec3d edgePoint{0, 0, 0};
   std::array<bool, 4> crossed{true, true, true, true};  ///< per face: the cell-to-cell segment crosses it
@@ -95,9 +97,8 @@ using VertexAdder = std::function<std::uint32_t(const Vec3d& position)>;
 /// Mesh vertex of group `group` of leaf `leaf`.
 using CellVertexFn = std::function<std::uint32_t(std::int64_t leaf, int group)>;
 
-std::size_t emitEdgeRecord(const EdgeRecord& record, const CellVertexFn& cellVertex,
-                           const VertexAdder& addVertex, FaceVertexMap& faceVertices,
-                           std::vector<mesh::Triangle>& triangles);
+std::size_t emitEdgeRecord(const EdgeRecord& record, const CellVertexFn& cellVertex, const VertexAdder& addVertex,
+                           FaceVertexMap& faceVertices, std::vector<mesh::Triangle>& triangles);
 
 /// @brief A VertexAdder that appends to `mesh.positions` (ids = positions' indices + `base`).
 VertexAdder appendingTo(mesh::Mesh& mesh, std::uint32_t base = 0);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/contour/crease_crossing.h"
 
 #include <algorithm>
@@ -68,7 +70,8 @@ bool crossingBesideCrease(const octree::MetaCellSamples& samples, std::array<int
   const float f0 = samples.value(sample0), f1 = samples.value(sample1);
   Vec3f linear = p0;
   linear[ax] += t;
-  const std::array<std::size_t, 2> uv{static_cast<std::size_t>((axis + 1) % 3), static_cast<std::size_t>((axis + 2) % 3)};
+  const std::array<std::size_t, 2> uv{static_cast<std::size_t>((axis + 1) % 3),
+                                      static_cast<std::size_t>((axis + 2) % 3)};
   constexpr float kNoFit = std::numeric_limits<float>::infinity();
   std::array<VoxelPlane, 12> planes;
   std::array<float, 12> tOf{}, score{};

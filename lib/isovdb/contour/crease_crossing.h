@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file crease_crossing.h
 /// @brief An edge crossing near a crease of the distance field, placed and
 ///        oriented from the side of the crease that it lies on.

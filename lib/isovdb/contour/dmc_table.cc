@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/contour/dmc_table.h"
 
 #include <algorithm>
@@ -109,7 +111,8 @@ DmcEntry buildDmcEntry(std::uint8_t config, std::uint8_t flippedFaces) noexcept 
     int& g = groupOfRoot[static_cast<std::size_t>(r)];
     if (g < 0) g = entry.vertexCount++;
     assert(g < 4);
-    entry.groups[static_cast<std::size_t>(g)] = static_cast<std::uint16_t>(entry.groups[static_cast<std::size_t>(g)] | (1u << e));
+    entry.groups[static_cast<std::size_t>(g)] =
+        static_cast<std::uint16_t>(entry.groups[static_cast<std::size_t>(g)] | (1u << e));
     entry.vertexOfEdge[static_cast<std::size_t>(e)] = static_cast<std::int8_t>(g);
   }
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file dmc_table.h
 /// @brief The Dual Marching Cubes table (Nielson 2004) and the alternative
 ///        groupings of Wenger's Manifold DMC (paper 000, section 4.2.3.1,
@@ -33,9 +35,9 @@ namespace isovdb::contour {
 
 /// @brief The dual vertices of one cell configuration.
 struct DmcEntry {
-  std::uint8_t vertexCount = 0;                 ///< 0..4 dual vertices
-  std::array<std::uint16_t, 4> groups{};        ///< bipolar edges of each vertex (bit e); ordered by lowest edge
-  std::array<std::int8_t, 12> vertexOfEdge{};   ///< vertex representing edge e, -1 if e is not bipolar
+  std::uint8_t vertexCount = 0;                ///< 0..4 dual vertices
+  std::array<std::uint16_t, 4> groups{};       ///< bipolar edges of each vertex (bit e); ordered by lowest edge
+  std::array<std::int8_t, 12> vertexOfEdge{};  ///< vertex representing edge e, -1 if e is not bipolar
   /// Face (0..5) through which one group passes twice (2B-I / 3B-I), or -1.
   /// Meaningful in the base table only.
   std::int8_t doubleFace = -1;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/contour/dual_vertex.h"
 
 #include <algorithm>
@@ -69,8 +71,7 @@ DualVertex computeDualVertex(const octree::MetaCellSamples& samples, std::array<
   v.intersections = static_cast<std::uint8_t>(n);
   v.rank = static_cast<std::uint8_t>(s.rank);
   for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 1; j < n; ++j)
-      v.minNormalDot = std::min(v.minNormalDot, dot(normals[i], normals[j]));
+    for (std::size_t j = i + 1; j < n; ++j) v.minNormalDot = std::min(v.minNormalDot, dot(normals[i], normals[j]));
   Vec3f x = s.point;
   if (options.sharpFeatures && s.rank == 2) x = slideIntoCell(x, s.freeDirections[0], cellOrigin, cellSize);
   const float slack = options.sharpFeatures ? kFeatureSlack : 1e-4f;  // else a rounding tolerance on the cell box
@@ -88,8 +89,8 @@ DualVertex computeDualVertex(const octree::MetaCellSamples& samples, std::array<
   for (int a = 0; a < 3; ++a)
     x[a] = std::clamp(x[a], static_cast<float>(cellOrigin[a]), static_cast<float>(cellOrigin[a] + cellSize));
   v.qefError = inside && !options.sharpFeatures
-                  ? s.error
-                  : qefError(std::span<const Vec3f>(points.data(), n), std::span<const Vec3f>(normals.data(), n), x);
+                   ? s.error
+                   : qefError(std::span<const Vec3f>(points.data(), n), std::span<const Vec3f>(normals.data(), n), x);
   for (int a = 0; a < 3; ++a) v.position[a] = x[a] + static_cast<float>(samples.origin[a]);
   return v;
 }

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file dual_vertex.h
 /// @brief The dual vertex of an octree leaf: crossings on its bipolar edges,
 ///        Prewitt normals (or, with sharp features, the normals of the faces
@@ -63,8 +65,8 @@ DualVertex computeDualVertex(const octree::MetaCellSamples& samples, std::array<
                              std::uint16_t edgeMask, const DualVertexOptions& options = {});
 
 /// @brief Dual vertex from all bipolar edges of the cell.
-inline DualVertex computeDualVertex(const octree::MetaCellSamples& samples, std::array<int, 3> cellOrigin,
-                                    int cellSize, const DualVertexOptions& options = {}) {
+inline DualVertex computeDualVertex(const octree::MetaCellSamples& samples, std::array<int, 3> cellOrigin, int cellSize,
+                                    const DualVertexOptions& options = {}) {
   return computeDualVertex(samples, cellOrigin, cellSize, 0x0fff, options);
 }
 

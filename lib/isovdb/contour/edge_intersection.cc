@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/contour/edge_intersection.h"
 
 #include <cstddef>
@@ -6,10 +8,11 @@
 
 namespace isovdb::contour {
 
-bool intersectEdge(const octree::MetaCellSamples& samples, std::array<int, 3> start, int axis, int length,
-                   float iso, EdgeIntersection& out, bool sharpFeatures) noexcept {
-  const std::ptrdiff_t step =
-      axis == 0 ? 1 : axis == 1 ? samples.stride() : static_cast<std::ptrdiff_t>(samples.stride()) * samples.stride();
+bool intersectEdge(const octree::MetaCellSamples& samples, std::array<int, 3> start, int axis, int length, float iso,
+                   EdgeIntersection& out, bool sharpFeatures) noexcept {
+  const std::ptrdiff_t step = axis == 0   ? 1
+                              : axis == 1 ? samples.stride()
+                                          : static_cast<std::ptrdiff_t>(samples.stride()) * samples.stride();
   const float* p = samples.values.data() + samples.indexOf(start[0], start[1], start[2]);
   bool prev = octree::isInside(p[0], iso);
   int first = -1, transitions = 0;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file edge_intersection.h
 /// @brief Where the surface crosses a cell edge: scan the samples along the
 ///        edge for the inside/outside transition and interpolate linearly
@@ -28,7 +30,7 @@ struct EdgeIntersection {
 ///        from the face it lies on (crease_crossing.h) instead.
 /// @return false if the samples along the edge are all one phase.
 /// @pre the edge lies in [0, S]^3 (so that gradients are defined).
-bool intersectEdge(const octree::MetaCellSamples& samples, std::array<int, 3> start, int axis, int length,
-                   float iso, EdgeIntersection& out, bool sharpFeatures = false) noexcept;
+bool intersectEdge(const octree::MetaCellSamples& samples, std::array<int, 3> start, int axis, int length, float iso,
+                   EdgeIntersection& out, bool sharpFeatures = false) noexcept;
 
 }  // namespace isovdb::contour

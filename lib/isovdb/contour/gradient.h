@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file gradient.h
 /// @brief Prewitt 3x3x3 gradient of the distance field (paper 000, section 4.2.2).
 ///

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file ju_udeshi.h
 /// @brief Intersection-free polygons of octree dual contouring: the envelope
 ///        of a minimal edge, its geometric tests and the fan through the edge
@@ -42,19 +44,19 @@ using Vec3d = std::array<double, 3>;
 
 /// Cells, faces and edge of one sign-changing minimal edge, in cyclic order.
 struct EdgeEnvelope {
-  Vec3d edgeStart{0, 0, 0};              ///< e0
-  Vec3d edgeEnd{0, 0, 0};                ///< e1
-  int cellCount = 4;                     ///< k: 4 (quad) or 3 (triangle)
-  std::array<Vec3d, 4> cellPoints{};     ///< v_c of cell i, cyclic order around e (first k used)
-  std::array<Vec3d, 4> facePoints{};     ///< v_f of the face between cell i and cell (i + 1) mod k
+  Vec3d edgeStart{0, 0, 0};           ///< e0
+  Vec3d edgeEnd{0, 0, 0};             ///< e1
+  int cellCount = 4;                  ///< k: 4 (quad) or 3 (triangle)
+  std::array<Vec3d, 4> cellPoints{};  ///< v_c of cell i, cyclic order around e (first k used)
+  std::array<Vec3d, 4> facePoints{};  ///< v_f of the face between cell i and cell (i + 1) mod k
 };
 
 /// A minimal face: an axis-aligned square on the plane x[axis] = coordinate.
 struct MinimalFace {
-  int axis = 0;                          ///< normal axis
-  double coordinate = 0.0;               ///< plane position on `axis`
-  Vec3d min{0, 0, 0};                    ///< min corner (its `axis` entry is ignored)
-  double size = 1.0;                     ///< side length
+  int axis = 0;             ///< normal axis
+  double coordinate = 0.0;  ///< plane position on `axis`
+  Vec3d min{0, 0, 0};       ///< min corner (its `axis` entry is ignored)
+  double size = 1.0;        ///< side length
 };
 
 /// The point v_f of a minimal face and whether the cell-to-cell segment crosses the face.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/contour/leaf_groups.h"
 
 #include <tbb/blocked_range.h>
@@ -36,22 +38,24 @@ void fixDoubledFaces(const octree::MetaCellSamples& samples, const octree::Linea
   };
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tree.leafCount(), kGrain),
                     [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t i = r.begin(); i != r.end(); ++i) {
-      const int face = entryOf(groups.configs[i]).doubleFace;
-      if (face < 0 || (groups.voxels && (face & 1) == 0)) continue;
-      const octree::OctreeLeaf& leaf = tree.leaf(i);
-      std::array<int, 3> neighbour = leaf.origin;
-      neighbour[static_cast<std::size_t>(face >> 1)] += (face & 1) ? leaf.size : -leaf.size;
-      const int config = cellConfigAt(samples, neighbour, leaf.size, iso);
-      if (config < 0) {
-        beyondApron[i] = 1;
-        continue;
-      }
-      if (entryOf(config).doubleFace != (face ^ 1)) continue;
-      if (groups.voxels) groups.splitFaces[i] = static_cast<std::uint8_t>(1u << (face >> 1));
-      else groups.alternative[i] = 1;
-    }
-  });
+                      for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                        const int face = entryOf(groups.configs[i]).doubleFace;
+                        if (face < 0 || (groups.voxels && (face & 1) == 0)) continue;
+                        const octree::OctreeLeaf& leaf = tree.leaf(i);
+                        std::array<int, 3> neighbour = leaf.origin;
+                        neighbour[static_cast<std::size_t>(face >> 1)] += (face & 1) ? leaf.size : -leaf.size;
+                        const int config = cellConfigAt(samples, neighbour, leaf.size, iso);
+                        if (config < 0) {
+                          beyondApron[i] = 1;
+                          continue;
+                        }
+                        if (entryOf(config).doubleFace != (face ^ 1)) continue;
+                        if (groups.voxels)
+                          groups.splitFaces[i] = static_cast<std::uint8_t>(1u << (face >> 1));
+                        else
+                          groups.alternative[i] = 1;
+                      }
+                    });
 }
 
 }  // namespace
@@ -79,51 +83,54 @@ LeafGroups groupLeaves(const octree::MetaCellSamples& samples, const octree::Lin
 std::vector<mesh::Vec3f> placeGroupVertices(const octree::MetaCellSamples& samples, const octree::LinearOctree& tree,
                                             const LeafGroups& groups, const DualVertexOptions& options) {
   std::vector<mesh::Vec3f> positions(groups.totalVertices());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tree.leafCount(), kGrain / 4),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t i = r.begin(); i != r.end(); ++i) {
-      const DmcEntry& entry = groups.entry(i);
-      const octree::OctreeLeaf& leaf = tree.leaf(i);
-      const bool hasSplits = groups.voxels && groups.splitFaces[i] != 0;
-      if (entry.vertexCount == 1 && !hasSplits && !options.massPointOnly &&
-          leaf.vertexTruncation == options.singularValueThreshold &&
-          leaf.vertexSharpFeatures == options.sharpFeatures) {
-        // The construction's geometric criterion solved this QEF already.
-        positions[groups.firstVertex[i]] = leaf.vertex;
-        continue;
-      }
-      // Several sheets in one cell: each vertex at its group's mass point, which stays
-      // among its own crossings (a QEF minimiser may wander towards the other sheet).
-      // Tube sectors and split faces are pieces of a sheet: their mass points too.
-      DualVertexOptions groupOptions = options;
-      groupOptions.massPointOnly = entry.vertexCount > 1;
-      const std::uint8_t config = groups.configs[i];
-      const bool tube = groups.voxels && isTubeConfig(config);
-      std::array<std::uint16_t, 10> vertexEdges{};
-      int count = 0;
-      if (tube) {
-        for (const std::uint16_t edges : tubeSectors(config).edges) vertexEdges[static_cast<std::size_t>(count++)] = edges;
-      } else {
-        for (int g = 0; g < entry.vertexCount; ++g) vertexEdges[static_cast<std::size_t>(count++)] = entry.groups[static_cast<std::size_t>(g)];
-      }
-      const int groupVertices = count;
-      if (groups.voxels)
-        for (int axis = 0; axis < 3; ++axis)
-          if ((groups.splitFaces[i] >> axis) & 1)
-            for (const std::uint16_t edges : splitVertexEdges(config, 2 * axis + 1)) vertexEdges[static_cast<std::size_t>(count++)] = edges;
-      for (int k = 0; k < count; ++k) {
-        DualVertexOptions vertexOptions = groupOptions;
-        vertexOptions.massPointOnly = groupOptions.massPointOnly || k >= groupVertices;  // a tube has 2 groups
-        const DualVertex v = computeDualVertex(samples, leaf.origin, leaf.size,
-                                               vertexEdges[static_cast<std::size_t>(k)], vertexOptions);
-        mesh::Vec3f p = v.position;
-        if (!v.valid())  // cannot happen for bipolar edges; keep the cell centre rather than garbage
-          for (std::size_t a = 0; a < 3; ++a)
-            p[a] = static_cast<float>(samples.origin[a] + leaf.origin[a]) + 0.5f * static_cast<float>(leaf.size);
-        positions[groups.firstVertex[i] + static_cast<std::size_t>(k)] = p;
-      }
-    }
-  });
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, tree.leafCount(), kGrain / 4), [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+          const DmcEntry& entry = groups.entry(i);
+          const octree::OctreeLeaf& leaf = tree.leaf(i);
+          const bool hasSplits = groups.voxels && groups.splitFaces[i] != 0;
+          if (entry.vertexCount == 1 && !hasSplits && !options.massPointOnly &&
+              leaf.vertexTruncation == options.singularValueThreshold &&
+              leaf.vertexSharpFeatures == options.sharpFeatures) {
+            // The construction's geometric criterion solved this QEF already.
+            positions[groups.firstVertex[i]] = leaf.vertex;
+            continue;
+          }
+          // Several sheets in one cell: each vertex at its group's mass point, which stays
+          // among its own crossings (a QEF minimiser may wander towards the other sheet).
+          // Tube sectors and split faces are pieces of a sheet: their mass points too.
+          DualVertexOptions groupOptions = options;
+          groupOptions.massPointOnly = entry.vertexCount > 1;
+          const std::uint8_t config = groups.configs[i];
+          const bool tube = groups.voxels && isTubeConfig(config);
+          std::array<std::uint16_t, 10> vertexEdges{};
+          int count = 0;
+          if (tube) {
+            for (const std::uint16_t edges : tubeSectors(config).edges)
+              vertexEdges[static_cast<std::size_t>(count++)] = edges;
+          } else {
+            for (int g = 0; g < entry.vertexCount; ++g)
+              vertexEdges[static_cast<std::size_t>(count++)] = entry.groups[static_cast<std::size_t>(g)];
+          }
+          const int groupVertices = count;
+          if (groups.voxels)
+            for (int axis = 0; axis < 3; ++axis)
+              if ((groups.splitFaces[i] >> axis) & 1)
+                for (const std::uint16_t edges : splitVertexEdges(config, 2 * axis + 1))
+                  vertexEdges[static_cast<std::size_t>(count++)] = edges;
+          for (int k = 0; k < count; ++k) {
+            DualVertexOptions vertexOptions = groupOptions;
+            vertexOptions.massPointOnly = groupOptions.massPointOnly || k >= groupVertices;  // a tube has 2 groups
+            const DualVertex v = computeDualVertex(samples, leaf.origin, leaf.size,
+                                                   vertexEdges[static_cast<std::size_t>(k)], vertexOptions);
+            mesh::Vec3f p = v.position;
+            if (!v.valid())  // cannot happen for bipolar edges; keep the cell centre rather than garbage
+              for (std::size_t a = 0; a < 3; ++a)
+                p[a] = static_cast<float>(samples.origin[a] + leaf.origin[a]) + 0.5f * static_cast<float>(leaf.size);
+            positions[groups.firstVertex[i] + static_cast<std::size_t>(k)] = p;
+          }
+        }
+      });
   return positions;
 }
 

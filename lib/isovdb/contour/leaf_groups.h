@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file leaf_groups.h
 /// @brief The dual vertices of a meta-cell's leaves as Dual Marching Cubes
 ///        groups their bipolar edges (dmc_table.h), with Wenger's manifold fix;
@@ -37,13 +39,13 @@ namespace isovdb::contour {
 
 /// Per leaf of one octree: configuration, grouping and vertex numbering.
 struct LeafGroups {
-  bool voxels = false;                      ///< RegularTopology::Voxels
-  std::vector<std::uint8_t> configs;        ///< corner signs (bit c = corner c inside)
-  std::vector<char> alternative;            ///< Wenger's alternative grouping is used (Mdmc)
-  std::vector<std::uint8_t> splitFaces;     ///< voxels: bit a = the max face along axis a is split
-  std::vector<std::uint32_t> firstVertex;   ///< leafCount + 1 prefix sums of the vertex counts
-  std::int64_t manifoldFixes = 0;           ///< leaves with the alternative grouping (voxels: split faces)
-  std::int64_t fixesBeyondApron = 0;        ///< doubled faces whose neighbour lies beyond the apron (left unfixed)
+  bool voxels = false;                     ///< RegularTopology::Voxels
+  std::vector<std::uint8_t> configs;       ///< corner signs (bit c = corner c inside)
+  std::vector<char> alternative;           ///< Wenger's alternative grouping is used (Mdmc)
+  std::vector<std::uint8_t> splitFaces;    ///< voxels: bit a = the max face along axis a is split
+  std::vector<std::uint32_t> firstVertex;  ///< leafCount + 1 prefix sums of the vertex counts
+  std::int64_t manifoldFixes = 0;          ///< leaves with the alternative grouping (voxels: split faces)
+  std::int64_t fixesBeyondApron = 0;       ///< doubled faces whose neighbour lies beyond the apron (left unfixed)
 
   const DmcEntry& entry(std::size_t leaf) const noexcept {
     return voxels ? voxelDmcEntry(configs[leaf]) : dmcEntry(configs[leaf], alternative[leaf] != 0);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file qef.h
 /// @brief Quadratic error function of dual contouring, minimised towards the
 ///        mass point with the SVD pseudo-inverse (paper 000, eq. 4-1 and 4-2;
@@ -36,8 +38,7 @@ struct QefSolution {
 
 /// @brief Solves the QEF of `points` and unit `normals` (same count).
 /// @pre points.size() == normals.size(); an empty input returns all zeros.
-QefSolution solveQef(std::span<const Vec3f> points, std::span<const Vec3f> normals,
-                     const QefOptions& options = {});
+QefSolution solveQef(std::span<const Vec3f> points, std::span<const Vec3f> normals, const QefOptions& options = {});
 
 /// @brief E(x) for the given planes.
 float qefError(std::span<const Vec3f> points, std::span<const Vec3f> normals, const Vec3f& x) noexcept;

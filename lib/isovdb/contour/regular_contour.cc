@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/contour/regular_contour.h"
 
 #include <tbb/blocked_range.h>
@@ -38,8 +40,8 @@ double triangleQuality(const mesh::Vec3f& a, const mesh::Vec3f& b, const mesh::V
   }
   const double cx = u[1] * v[2] - u[2] * v[1], cy = u[2] * v[0] - u[0] * v[2], cz = u[0] * v[1] - u[1] * v[0];
   const double area2 = std::sqrt(cx * cx + cy * cy + cz * cz);  // twice the area
-  const double sum = u[0] * u[0] + u[1] * u[1] + u[2] * u[2] + v[0] * v[0] + v[1] * v[1] + v[2] * v[2] +
-                     w[0] * w[0] + w[1] * w[1] + w[2] * w[2];
+  const double sum = u[0] * u[0] + u[1] * u[1] + u[2] * u[2] + v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + w[0] * w[0] +
+                     w[1] * w[1] + w[2] * w[2];
   return sum > 0.0 ? 2.0 * std::sqrt(3.0) * area2 / sum : 0.0;
 }
 
@@ -74,7 +76,9 @@ std::array<mesh::Triangle, 2> regularEdgeQuad(const std::array<std::uint32_t, 4>
   const bool ccwIsPlus = axis != 1;
   std::array<int, 4> order{0, 1, 3, 2};
   if (plusAxis != ccwIsPlus) order = {0, 2, 3, 1};
-  const auto P = [&](int k) -> const mesh::Vec3f& { return p[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])]; };
+  const auto P = [&](int k) -> const mesh::Vec3f& {
+    return p[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])];
+  };
   const auto V = [&](int k) { return v[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])]; };
   const double qa = std::min(triangleQuality(P(0), P(1), P(2)), triangleQuality(P(0), P(2), P(3)));
   const double qb = std::min(triangleQuality(P(0), P(1), P(3)), triangleQuality(P(1), P(2), P(3)));
@@ -108,7 +112,8 @@ MetaCellMesh contourRegularMetaCell(const MetaCellSamples& samples, const Linear
 
   // 2. Grouping with Wenger's manifold fix, and 3. one vertex per group (leaves in stored
   // order, groups in table order).
-  const LeafGroups groups = groupLeaves(samples, regularTree, std::move(configs), options.iso, options.manifoldFix, options.topology);
+  const LeafGroups groups =
+      groupLeaves(samples, regularTree, std::move(configs), options.iso, options.manifoldFix, options.topology);
   const std::vector<std::uint8_t>& config = groups.configs;
   const std::vector<char>& alternative = groups.alternative;
   const std::vector<std::uint32_t>& vertexBase = groups.firstVertex;
@@ -143,14 +148,16 @@ MetaCellMesh contourRegularMetaCell(const MetaCellSamples& samples, const Linear
             continue;
           }
           bool regular = true;  // the four leaves have the same size (the precondition)
-          for (const std::int64_t j : around) regular = regular && leaves[static_cast<std::size_t>(j)].size == leaf.size;
+          for (const std::int64_t j : around)
+            regular = regular && leaves[static_cast<std::size_t>(j)].size == leaf.size;
           assert(regular);
           if (!regular) continue;
           ++chunkEdges[c];
           if (groups.voxels) {
             std::array<VoxelEdgeCell, 4> cells;
             for (int q = 0; q < 4; ++q)
-              cells[static_cast<std::size_t>(q)] = voxelEdgeCell(groups, out.positions, static_cast<std::size_t>(around[static_cast<std::size_t>(q)]));
+              cells[static_cast<std::size_t>(q)] =
+                  voxelEdgeCell(groups, out.positions, static_cast<std::size_t>(around[static_cast<std::size_t>(q)]));
             voxelEdgeTriangles(cells, axis, triangles);
             continue;
           }

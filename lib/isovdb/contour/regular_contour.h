@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file regular_contour.h
 /// @brief Regular mode: Dual Marching Cubes with Wenger's manifold fix (MDMC)
 ///        on the regular-construction octree of one meta-cell (paper 000,
@@ -44,7 +46,7 @@ namespace isovdb::contour {
 
 /// Options of contourRegular.
 struct RegularContourOptions {
-  float iso = 0.0f;                     ///< isovalue; inside iff value <= iso. Must be the one the octree was built with
+  float iso = 0.0f;  ///< isovalue; inside iff value <= iso. Must be the one the octree was built with
   /// Reading of ambiguous cells: the voxel object's (26, 6) topology (voxel_dmc.h) or Wenger's MDMC.
   RegularTopology topology = RegularTopology::Voxels;
   bool manifoldFix = true;              ///< Wenger's MDMC correction (voxels: split doubled faces); false only in
@@ -55,13 +57,13 @@ struct RegularContourOptions {
 
 /// Figures of one contourRegular call.
 struct RegularContourStats {
-  std::int64_t cells = 0;          ///< surface leaves that received dual vertices
-  std::int64_t vertices = 0;       ///< dual vertices (= mesh positions)
-  std::int64_t quads = 0;          ///< interior bipolar edges contoured (two triangles each; voxels: 2-6)
-  std::int64_t manifoldFixes = 0;  ///< cells that used Wenger's alternative grouping (voxels: split faces)
-  std::int64_t tubeCells = 0;      ///< voxels: cells joining two body-diagonal inside corners by a tube
-  std::int64_t seamCells = 0;      ///< leaves kept for stitching (touch the boundary, have dual vertices)
-  std::int64_t boundaryEdges = 0;  ///< bipolar edges left to stitching (on the meta-cell boundary)
+  std::int64_t cells = 0;             ///< surface leaves that received dual vertices
+  std::int64_t vertices = 0;          ///< dual vertices (= mesh positions)
+  std::int64_t quads = 0;             ///< interior bipolar edges contoured (two triangles each; voxels: 2-6)
+  std::int64_t manifoldFixes = 0;     ///< cells that used Wenger's alternative grouping (voxels: split faces)
+  std::int64_t tubeCells = 0;         ///< voxels: cells joining two body-diagonal inside corners by a tube
+  std::int64_t seamCells = 0;         ///< leaves kept for stitching (touch the boundary, have dual vertices)
+  std::int64_t boundaryEdges = 0;     ///< bipolar edges left to stitching (on the meta-cell boundary)
   std::int64_t fixesBeyondApron = 0;  ///< doubled faces on the boundary whose neighbour lies beyond the
                                       ///< samples' apron (left unfixed; 0 with an apron >= the finest cell)
 };

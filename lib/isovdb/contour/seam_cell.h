@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file seam_cell.h
 /// @brief What one meta-cell's contouring hands to seam stitching: the surface
 ///        leaves around its deferred edges, with their dual vertices, and the
@@ -37,8 +39,8 @@ inline constexpr std::uint32_t kNoVertex = std::numeric_limits<std::uint32_t>::m
 struct SeamCell {
   octree::MortonKey key = octree::kInvalidKey;  ///< key under its meta-cell's root
   std::array<int, 3> origin{0, 0, 0};           ///< min corner, global voxel index coordinates
-  int size = 0;                                  ///< side in voxels
-  std::uint8_t cornerSigns = 0;                  ///< bit c set iff corner c is inside
+  int size = 0;                                 ///< side in voxels
+  std::uint8_t cornerSigns = 0;                 ///< bit c set iff corner c is inside
 
   /// Wenger's alternative grouping was used (both modes group a leaf's bipolar
   /// edges by dmcEntry(cornerSigns, alternative); see leaf_groups.h).
@@ -79,8 +81,8 @@ struct SeamFace {
 
 /// Everything one meta-cell leaves to the stitcher.
 struct MetaCellSeam {
-  std::vector<SeamCell> cells;   ///< in the Z order of the meta-cell's octree
-  std::vector<SeamFace> faces;   ///< adaptive only
+  std::vector<SeamCell> cells;  ///< in the Z order of the meta-cell's octree
+  std::vector<SeamFace> faces;  ///< adaptive only
 };
 
 /// @brief Adds `base` to every vertex id of `seam` (when its mesh is appended after `base` vertices).
@@ -88,7 +90,7 @@ void rebaseSeam(MetaCellSeam& seam, std::uint32_t base) noexcept;
 
 /// @brief The mesh of one meta-cell and what it leaves to the stitcher.
 struct MetaCellMesh {
-  mesh::Mesh mesh;   ///< global voxel index coordinates; ids local to this mesh
+  mesh::Mesh mesh;  ///< global voxel index coordinates; ids local to this mesh
   MetaCellSeam seam;
 };
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/contour/vdb_mesher.h"
 
 #include <openvdb/tools/VolumeToMesh.h>
@@ -12,8 +14,7 @@ float squaredDistance(const openvdb::Vec3s& a, const openvdb::Vec3s& b) { return
 
 }  // namespace
 
-mesh::Mesh contourWithOpenVdb(const volume::Volume& field, const VdbMesherOptions& options,
-                              Interrupter* interrupter) {
+mesh::Mesh contourWithOpenVdb(const volume::Volume& field, const VdbMesherOptions& options, Interrupter* interrupter) {
   const volume::FieldGrid& grid = volume::fieldGrid(field);
   if (!(options.adaptivity >= 0.0 && options.adaptivity <= 1.0))
     throw InputError("adaptivity " + std::to_string(options.adaptivity) + " is out of range, expected 0..1");
@@ -32,8 +33,10 @@ mesh::Mesh contourWithOpenVdb(const volume::Volume& field, const VdbMesherOption
   // (inside = below iso) that is outwards, for a scalar (inside = above) inwards.
   const bool flip = field.kind() == volume::VolumeKind::Scalar;
   auto emit = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
-    if (flip) mesh.triangles.push_back({a, c, b});
-    else mesh.triangles.push_back({a, b, c});
+    if (flip)
+      mesh.triangles.push_back({a, c, b});
+    else
+      mesh.triangles.push_back({a, b, c});
   };
   for (const openvdb::Vec3I& t : triangles) emit(t[0], t[1], t[2]);
   for (const openvdb::Vec4I& q : quads) {

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file vdb_mesher.h
 /// @brief The reference contouring method: OpenVDB's own tools::volumeToMesh.
 ///

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/contour/voxel_dmc.h"
 
 #include <bit>
@@ -73,7 +75,8 @@ int sharedFace(int axis, int q, int other) noexcept {
 /// Cell q's vertex on face f at the edge (its local edge e).
 std::uint32_t vertexOnFace(const VoxelEdgeCell& cell, int edge, int face) noexcept {
   if (isTubeConfig(cell.config))
-    return cell.vertices[static_cast<std::size_t>(tubeSectors(cell.config).sectorOfFace[static_cast<std::size_t>(face)])];
+    return cell
+        .vertices[static_cast<std::size_t>(tubeSectors(cell.config).sectorOfFace[static_cast<std::size_t>(face)])];
   const int g = voxelDmcEntry(cell.config).vertexOfEdge[static_cast<std::size_t>(edge)];
   assert(g >= 0);
   return cell.vertices[static_cast<std::size_t>(g)];

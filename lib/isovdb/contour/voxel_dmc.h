@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file voxel_dmc.h
 /// @brief Regular mode's reading of ambiguous cells that keeps the topology of
 ///        the voxel object: 26-connected inside, 6-connected outside (the
@@ -56,8 +58,8 @@ bool isTubeConfig(std::uint8_t config) noexcept;
 
 /// Sectors of a tube cell.
 struct TubeSectors {
-  std::array<std::uint16_t, 3> edges{};      ///< bipolar edges of sector k (its two faces' edges)
-  std::array<std::int8_t, 6> sectorOfFace{}; ///< the sector holding face f's segment
+  std::array<std::uint16_t, 3> edges{};       ///< bipolar edges of sector k (its two faces' edges)
+  std::array<std::int8_t, 6> sectorOfFace{};  ///< the sector holding face f's segment
 };
 
 /// @brief Sectors of a tube configuration (meaningful only if isTubeConfig).
@@ -76,10 +78,10 @@ inline int splitVertexSlot(int axis, int slot) noexcept { return 2 * axis + slot
 /// One of the four cells around a bipolar edge, as voxelEdgeTriangles reads it.
 struct VoxelEdgeCell {
   std::uint8_t config = 0;
-  std::uint8_t splitFaces = 0;                  ///< bit a: its max face along axis a is split (this cell owns the vertices)
-  std::array<std::uint32_t, 4> vertices{};      ///< vertex ids of its groups (tube: sectors)
-  std::array<mesh::Vec3f, 4> positions{};       ///< their positions (quads choose their diagonal with them)
-  std::array<std::uint32_t, 6> splitVertices{}; ///< ids of its split vertices, by splitVertexSlot
+  std::uint8_t splitFaces = 0;              ///< bit a: its max face along axis a is split (this cell owns the vertices)
+  std::array<std::uint32_t, 4> vertices{};  ///< vertex ids of its groups (tube: sectors)
+  std::array<mesh::Vec3f, 4> positions{};   ///< their positions (quads choose their diagonal with them)
+  std::array<std::uint32_t, 6> splitVertices{};  ///< ids of its split vertices, by splitVertexSlot
 };
 
 /// @brief Appends the triangles (outward) of the polygon of the bipolar edge

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/io/atomic_file.h"
 
 #include <unistd.h>
@@ -56,7 +58,8 @@ void AtomicFile::write(const void* data, std::size_t bytes) {
 
 void AtomicFile::overwrite(std::uint64_t offset, const void* data, std::size_t bytes) {
   if (!file_) throw IoError("cannot write '" + path_.string() + "': stream already closed");
-  if (std::fseek(file_, static_cast<long>(offset), SEEK_SET) != 0) throw IoError("cannot write '" + path_.string() + "': " + osError());
+  if (std::fseek(file_, static_cast<long>(offset), SEEK_SET) != 0)
+    throw IoError("cannot write '" + path_.string() + "': " + osError());
   write(data, bytes);
   if (std::fseek(file_, 0, SEEK_END) != 0) throw IoError("cannot write '" + path_.string() + "': " + osError());
 }

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file atomic_file.h
 /// @brief Writes a file through a temporary beside it and renames it on commit,
 ///        so a failed or interrupted run never leaves a partial output file.

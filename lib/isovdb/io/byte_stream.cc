@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/io/byte_stream.h"
 
 #include <fcntl.h>
@@ -73,8 +75,8 @@ void ByteStream::skipLines(std::int64_t count) {
     std::byte byte{};
     do {
       if (read(&byte, 1) == 0)
-        throw InputError(label_ + ": " + dataNoun() + " ends inside line " + std::to_string(line + 1) +
-                         " of the " + std::to_string(count) + " lines to skip");
+        throw InputError(label_ + ": " + dataNoun() + " ends inside line " + std::to_string(line + 1) + " of the " +
+                         std::to_string(count) + " lines to skip");
     } while (byte != std::byte{'\n'});
   }
 }
@@ -120,8 +122,8 @@ FileRegionStream::FileRegionStream(const std::filesystem::path& path, const File
   fileSize_ = static_cast<std::int64_t>(info.st_size);
   if (options.offset < 0 || options.offset > fileSize_) {
     ::close(fd_);
-    throw InputError(label() + ": data offset " + std::to_string(options.offset) +
-                     " lies outside the file (" + std::to_string(fileSize_) + " bytes)");
+    throw InputError(label() + ": data offset " + std::to_string(options.offset) + " lies outside the file (" +
+                     std::to_string(fileSize_) + " bytes)");
   }
   regionEnd_ = fileSize_;
   if (options.length >= 0) {
@@ -145,8 +147,8 @@ std::int64_t FileRegionStream::remaining() const {
 }
 
 std::size_t FileRegionStream::preadSome(std::byte* out, std::size_t size) {
-  const std::size_t want = static_cast<std::size_t>(std::min<std::int64_t>(
-      static_cast<std::int64_t>(std::min<std::size_t>(size, kMaxChunk)), regionEnd_ - cursor_));
+  const std::size_t want = static_cast<std::size_t>(
+      std::min<std::int64_t>(static_cast<std::int64_t>(std::min<std::size_t>(size, kMaxChunk)), regionEnd_ - cursor_));
   if (want == 0) return 0;
   for (;;) {
     const ssize_t got = ::pread(fd_, out, want, static_cast<off_t>(cursor_));
@@ -163,8 +165,8 @@ std::size_t FileRegionStream::readSome(std::byte* out, std::size_t size) {
     // Large reads go straight to the caller; small ones refill the buffer.
     if (size >= bufferSize_) return preadSome(out, size);
     if (buffer_.empty())
-      buffer_.resize(static_cast<std::size_t>(std::min<std::int64_t>(
-          static_cast<std::int64_t>(bufferSize_), std::max<std::int64_t>(regionEnd_ - cursor_, 1))));
+      buffer_.resize(static_cast<std::size_t>(std::min<std::int64_t>(static_cast<std::int64_t>(bufferSize_),
+                                                                     std::max<std::int64_t>(regionEnd_ - cursor_, 1))));
     bufferBegin_ = 0;
     bufferEnd_ = preadSome(buffer_.data(), buffer_.size());
     if (bufferEnd_ == 0) return 0;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file byte_stream.h
 /// @brief Sequential, buffered byte sources for the dense volume readers: a
 ///        region of a file and a zlib/gzip inflating stream over another source.
@@ -81,9 +83,9 @@ class ByteStream {
 
 /// Where a FileRegionStream reads.
 struct FileRegionOptions {
-  std::int64_t offset = 0;   ///< byte offset of the region in the file (>= 0)
-  std::int64_t length = -1;  ///< bytes in the region; -1 = up to the end of the file
-  std::string label{};       ///< how messages name the data; empty = "'<path>'"
+  std::int64_t offset = 0;                         ///< byte offset of the region in the file (>= 0)
+  std::int64_t length = -1;                        ///< bytes in the region; -1 = up to the end of the file
+  std::string label{};                             ///< how messages name the data; empty = "'<path>'"
   std::size_t bufferSize = kByteStreamBufferSize;  ///< read buffer (bytes); larger reads bypass it
 };
 
@@ -126,8 +128,7 @@ class InflateStream final : public ByteStream {
  public:
   /// @param[in] compressed the compressed bytes; its label names the data in messages.
   /// @throw std::bad_alloc when zlib cannot allocate its state.
-  explicit InflateStream(std::unique_ptr<ByteStream> compressed,
-                         std::size_t bufferSize = kByteStreamBufferSize);
+  explicit InflateStream(std::unique_ptr<ByteStream> compressed, std::size_t bufferSize = kByteStreamBufferSize);
   ~InflateStream() override;
 
   void finish(std::int64_t expectedTotal) override;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file dense_array.h
 /// @brief Copies a box of a sparse volume into a caller's dense array (numpy arrays at
 ///        the Python boundary; the dense writer's default box).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/io/dense_slice_stream.h"
 
 #include <algorithm>
@@ -29,8 +31,7 @@ std::string describeValue(float value) {
 
 }  // namespace
 
-std::int64_t checkedVolumeBytes(const VolumeHeader& header, const std::string& source,
-                                std::string_view dimsField) {
+std::int64_t checkedVolumeBytes(const VolumeHeader& header, const std::string& source, std::string_view dimsField) {
   const std::string where = "'" + source + "': " + std::string(dimsField);
   for (int axis = 0; axis < 3; ++axis) {
     if (header.dims[axis] <= 0)
@@ -51,8 +52,7 @@ std::int64_t checkedVolumeBytes(const VolumeHeader& header, const std::string& s
   return count * size;
 }
 
-DenseSliceStream::DenseSliceStream(std::string source, const VolumeHeader& header,
-                                   std::unique_ptr<ByteStream> bytes)
+DenseSliceStream::DenseSliceStream(std::string source, const VolumeHeader& header, std::unique_ptr<ByteStream> bytes)
     : source_(std::move(source)), header_(header), bytes_(std::move(bytes)) {
   totalBytes_ = checkedVolumeBytes(header_, source_, "dims");
 }
@@ -65,8 +65,7 @@ void DenseSliceStream::readSlice(float* out) {
   if (sliceBytes_.size() != size) sliceBytes_.resize(size);
   bytes_->readExact(sliceBytes_.data(), size, totalBytes_);
 
-  const std::int64_t bad =
-      convertSamples(sliceBytes_.data(), header_.sampleType, header_.bigEndian, samples, out);
+  const std::int64_t bad = convertSamples(sliceBytes_.data(), header_.sampleType, header_.bigEndian, samples, out);
   const std::string voxelPrefix = "'" + source_ + "': voxel (";
   const auto voxel = [&](std::int64_t index) {
     return voxelPrefix + std::to_string(index % header_.dims[0]) + ", " + std::to_string(index / header_.dims[0]) +
@@ -86,8 +85,7 @@ void DenseSliceStream::readSlice(float* out) {
       std::memcpy(&value, raw.data(), sizeof(double));
       std::ostringstream text;
       text << value;
-      throw InputError(voxel(static_cast<std::int64_t>(i)) + " = " + text.str() +
-                       " exceeds the float range");
+      throw InputError(voxel(static_cast<std::int64_t>(i)) + " = " + text.str() + " exceeds the float range");
     }
   }
   ++nextSlice_;

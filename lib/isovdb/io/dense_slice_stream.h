@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file dense_slice_stream.h
 /// @brief A SliceStream over the bytes of a dense volume (raw, NRRD or MetaImage
 ///        data, plain or inflated), converted to float one z-slice at a time.
@@ -22,8 +24,7 @@ namespace isovdb::io {
 /// @param[in] dimsField the field that declared the dims ("DimSize", "sizes", "dims"), for messages.
 /// @throw InputError naming the file and the field when a dim is not positive or the
 ///        voxel count or byte size overflows a 64-bit integer.
-std::int64_t checkedVolumeBytes(const VolumeHeader& header, const std::string& source,
-                                std::string_view dimsField);
+std::int64_t checkedVolumeBytes(const VolumeHeader& header, const std::string& source, std::string_view dimsField);
 
 /// Reads the slices of a volume whose samples follow each other in `bytes`
 /// (x fastest, then y, then z), in the type and byte order of `header`.

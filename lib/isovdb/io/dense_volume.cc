@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/io/dense_volume.h"
 
 #include <string>
@@ -31,9 +33,12 @@ std::unique_ptr<SliceStream> openDenseVolume(const std::filesystem::path& path, 
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw IoError("'" + path.string() + "': no such file");
   switch (formatOf(path)) {
-    case DenseFormat::Nrrd: return openNrrd(path);
-    case DenseFormat::MetaImage: return openMetaImage(path);
-    case DenseFormat::Raw: break;
+    case DenseFormat::Nrrd:
+      return openNrrd(path);
+    case DenseFormat::MetaImage:
+      return openMetaImage(path);
+    case DenseFormat::Raw:
+      break;
   }
   if (!raw) throw InputError("'" + path.string() + "': raw volumes need --dims and --type");
   return openRaw(path, *raw);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file dense_volume.h
 /// @brief Opens any dense volume file (NRRD, MetaImage or headerless raw) as a SliceStream.
 #pragma once

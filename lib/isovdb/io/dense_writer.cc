@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/io/dense_writer.h"
 
 #include <cstring>
@@ -44,8 +46,9 @@ void writeSamples(AtomicFile& file, const GridT& grid, const volume::IndexBox& b
     for (int y = box.min[1]; y <= box.max[1]; ++y) {
       bytes.clear();
       for (std::size_t i = 0; i < nx; ++i)
-        appendLittleEndian(bytes, static_cast<float>(toFloat(accessor.getValue(
-                                      openvdb::Coord(box.min[0] + static_cast<int>(i), y, z)))));
+        appendLittleEndian(
+            bytes,
+            static_cast<float>(toFloat(accessor.getValue(openvdb::Coord(box.min[0] + static_cast<int>(i), y, z)))));
       file.write(bytes.data(), bytes.size());
     }
 }

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file dense_writer.h
 /// @brief Writes a sparse volume back out as a dense float32 volume (NRRD), for
 ///        interchange with tools that read plain arrays (numpy, ParaView, ...).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file header_text.h
 /// @brief Internal text helpers shared by the header readers of dense volume
 ///        files (nrrd_reader.cc, metaimage_reader.cc). Not part of the public API.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/io/leafwise_level_set_writer.h"
 
 #include <openvdb/io/Compression.h>
@@ -107,10 +109,12 @@ struct Skeleton {
   }
 
   std::vector<float> lowerValues(const InternalRecord& lower, openvdb::util::NodeMask<4>& kept) const {
-    return nodeValues<LowerNode>(leaves, lower, [](const LeafRecord& leaf) { return leaf.bytes > 0; }, kept);
+    return nodeValues<LowerNode>(
+        leaves, lower, [](const LeafRecord& leaf) { return leaf.bytes > 0; }, kept);
   }
   std::vector<float> upperValues(const InternalRecord& upper, openvdb::util::NodeMask<5>& kept) const {
-    return nodeValues<UpperNode>(lowers, upper, [](const InternalRecord& lower) { return lower.active; }, kept);
+    return nodeValues<UpperNode>(
+        lowers, upper, [](const InternalRecord& lower) { return lower.active; }, kept);
   }
 
   Skeleton(const std::deque<LeafRecord>& sortedLeaves, float background)
@@ -398,7 +402,9 @@ void LeafwiseLevelSetWriter::add(std::vector<std::unique_ptr<volume::FieldLeaf>>
 
   const std::lock_guard<std::mutex> lock(mutex_);
   spill_.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  if (!spill_) throw IoError("cannot write " + quoted(path_) + ": writing the spill file " + quoted(spillPath_) + " failed (disk full?)");
+  if (!spill_)
+    throw IoError("cannot write " + quoted(path_) + ": writing the spill file " + quoted(spillPath_) +
+                  " failed (disk full?)");
   for (LeafRecord& record : records) {
     if (record.bytes) record.offset += spillOffset_;
     records_.push_back(record);
@@ -425,12 +431,12 @@ void LeafwiseLevelSetWriter::add(std::vector<std::unique_ptr<volume::FieldLeaf>>
 LevelSetFileSummary LeafwiseLevelSetWriter::commit(Interrupter* interrupter) {
   ProgressStage progress(interrupter, "writing .vdb");
   spill_.close();
-  if (!spill_) throw IoError("cannot write " + quoted(path_) + ": closing the spill file " + quoted(spillPath_) + " failed");
+  if (!spill_)
+    throw IoError("cannot write " + quoted(path_) + ": closing the spill file " + quoted(spillPath_) + " failed");
   std::sort(records_.begin(), records_.end(),
             [](const LeafRecord& a, const LeafRecord& b) { return treeOrder(a) < treeOrder(b); });
   for (std::size_t i = 1; i < records_.size(); ++i)
-    if (records_[i].origin == records_[i - 1].origin)
-    {
+    if (records_[i].origin == records_[i - 1].origin) {
       std::ostringstream origin;
       origin << records_[i].origin;
       throw std::logic_error("leafwise level-set writer: leaf " + origin.str() + " was added twice");
@@ -465,10 +471,12 @@ LevelSetFileSummary LeafwiseLevelSetWriter::commit(Interrupter* interrupter) {
     }
   }
   if (summary_.activeVoxels > 0) {
-    metadata.insertMeta(openvdb::GridBase::META_FILE_BBOX_MIN,
-                        openvdb::Vec3IMetadata(openvdb::Vec3i(summary_.bboxMin[0], summary_.bboxMin[1], summary_.bboxMin[2])));
-    metadata.insertMeta(openvdb::GridBase::META_FILE_BBOX_MAX,
-                        openvdb::Vec3IMetadata(openvdb::Vec3i(summary_.bboxMax[0], summary_.bboxMax[1], summary_.bboxMax[2])));
+    metadata.insertMeta(
+        openvdb::GridBase::META_FILE_BBOX_MIN,
+        openvdb::Vec3IMetadata(openvdb::Vec3i(summary_.bboxMin[0], summary_.bboxMin[1], summary_.bboxMin[2])));
+    metadata.insertMeta(
+        openvdb::GridBase::META_FILE_BBOX_MAX,
+        openvdb::Vec3IMetadata(openvdb::Vec3i(summary_.bboxMax[0], summary_.bboxMax[1], summary_.bboxMax[2])));
   }
   metadata.insertMeta(openvdb::GridBase::META_FILE_VOXEL_COUNT, openvdb::Int64Metadata(summary_.activeVoxels));
   metadata.insertMeta(openvdb::GridBase::META_FILE_COMPRESSION,

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file leafwise_level_set_writer.h
 /// @brief A level-set `.vdb` file written from leaves that arrive a batch at a
 ///        time, in any order, so the narrow band is never held whole.
@@ -34,10 +36,10 @@ namespace isovdb::io {
 
 /// What was written, for the statistics report.
 struct LevelSetFileSummary {
-  std::int64_t leafCount = 0;     ///< leaves with active voxels (the file's leaves)
-  std::int64_t activeVoxels = 0;  ///< voxels in the band
-  std::int64_t spillBytes = 0;    ///< serialised leaf blocks (the spill file's size)
-  std::int64_t fileBytes = 0;     ///< size of the .vdb file
+  std::int64_t leafCount = 0;                                ///< leaves with active voxels (the file's leaves)
+  std::int64_t activeVoxels = 0;                             ///< voxels in the band
+  std::int64_t spillBytes = 0;                               ///< serialised leaf blocks (the spill file's size)
+  std::int64_t fileBytes = 0;                                ///< size of the .vdb file
   std::array<int, 3> bboxMin{0, 0, 0}, bboxMax{-1, -1, -1};  ///< active voxels, index space
   float minValue = 0.f, maxValue = 0.f;                      ///< band values, in voxels
 };

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file little_endian.h
 /// @brief Appends numbers to a byte buffer in little-endian order, the byte
 ///        order of every binary file isovdb writes (PLY, raw float32).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file mesh_file.h
 /// @brief Mesh files chosen by extension: .ply (binary little-endian) or .obj.
 #pragma once

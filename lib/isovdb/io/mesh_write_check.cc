@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/io/mesh_write_check.h"
 
 #include <string>
@@ -17,9 +19,8 @@ void checkTriangleIndices(const std::filesystem::path& path, const mesh::Mesh& m
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     for (const std::uint32_t v : mesh.triangles[t])
       if (v >= n)
-        throw InputError("cannot write '" + path.string() + "': triangle " + std::to_string(t) +
-                         " references vertex " + std::to_string(v) + " but the mesh has " + std::to_string(n) +
-                         " vertices");
+        throw InputError("cannot write '" + path.string() + "': triangle " + std::to_string(t) + " references vertex " +
+                         std::to_string(v) + " but the mesh has " + std::to_string(n) + " vertices");
 }
 
 }  // namespace isovdb::io::detail

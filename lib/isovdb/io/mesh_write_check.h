@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file mesh_write_check.h
 /// @brief Internal checks of a mesh before the mesh writers (obj.cc, ply.cc)
 ///        open their file. Not part of the public API.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/io/metaimage_reader.h"
 
 #include <algorithm>
@@ -86,8 +88,8 @@ SampleType parseElementType(const MetaFields& fields, const Field& field) {
     SampleType type;
   };
   static constexpr Entry kTypes[] = {
-      {"MET_CHAR", SampleType::Int8},   {"MET_UCHAR", SampleType::UInt8},   {"MET_SHORT", SampleType::Int16},
-      {"MET_USHORT", SampleType::UInt16}, {"MET_INT", SampleType::Int32}, {"MET_UINT", SampleType::UInt32},
+      {"MET_CHAR", SampleType::Int8},     {"MET_UCHAR", SampleType::UInt8},    {"MET_SHORT", SampleType::Int16},
+      {"MET_USHORT", SampleType::UInt16}, {"MET_INT", SampleType::Int32},      {"MET_UINT", SampleType::UInt32},
       {"MET_FLOAT", SampleType::Float32}, {"MET_DOUBLE", SampleType::Float64},
   };
   const std::string name = trim(field.value);
@@ -132,14 +134,12 @@ std::unique_ptr<SliceStream> openMetaImage(const std::filesystem::path& path) {
   if (const Field* objectType = fields.find({"ObjectType"}); objectType && lower(objectType->value) != "image")
     fields.fail(objectType->name, "expected Image, got '" + objectType->value + "'");
   const Field& nDims = fields.require("NDims");
-  if (fields.integer(nDims) != 3)
-    fields.fail(nDims.name, "only 3-D volumes are supported, got " + nDims.value);
+  if (fields.integer(nDims) != 3) fields.fail(nDims.name, "only 3-D volumes are supported, got " + nDims.value);
 
   VolumeHeader header;
   const Field& dimSize = fields.require("DimSize");
   const std::vector<std::string> dims = splitWords(dimSize.value);
-  if (dims.size() != 3)
-    fields.fail(dimSize.name, "NDims is 3 but it gives " + std::to_string(dims.size()) + " values");
+  if (dims.size() != 3) fields.fail(dimSize.name, "NDims is 3 but it gives " + std::to_string(dims.size()) + " values");
   for (int axis = 0; axis < 3; ++axis) header.dims[axis] = fields.integer(Field{dimSize.name, dims[axis]});
   header.sampleType = parseElementType(fields, fields.require("ElementType"));
   const std::int64_t dataBytes = checkedVolumeBytes(header, source, "field '" + dimSize.name + "'");
@@ -150,7 +150,8 @@ std::unique_ptr<SliceStream> openMetaImage(const std::filesystem::path& path) {
     fields.fail(binary->name, "ASCII data (BinaryData = False) is not supported");
   if (const Field* msb = fields.find({"BinaryDataByteOrderMSB", "ElementByteOrderMSB", "ByteOrderMSB"}))
     header.bigEndian = fields.boolean(*msb);
-  if (const Field* spacing = fields.find({"ElementSpacing"}) ? fields.find({"ElementSpacing"}) : fields.find({"ElementSize"})) {
+  if (const Field* spacing =
+          fields.find({"ElementSpacing"}) ? fields.find({"ElementSpacing"}) : fields.find({"ElementSize"})) {
     header.spacing = fields.numbers<3>(*spacing);
     for (double value : header.spacing)
       if (value <= 0) fields.fail(spacing->name, "each value must be positive, got '" + spacing->value + "'");

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file metaimage_reader.h
 /// @brief MetaImage volumes (ITK/VTK): .mhd header with a detached data file, or
 ///        .mha with the data after the header (ElementDataFile = LOCAL).

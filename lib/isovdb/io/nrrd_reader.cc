@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/io/nrrd_reader.h"
 
 #include <algorithm>
@@ -112,8 +114,7 @@ std::unique_ptr<SliceStream> openNrrd(const std::filesystem::path& path) {
   auto file = std::make_unique<FileRegionStream>(path);
 
   const auto magic = file->readLine(64);
-  if (!magic || magic->size() != 8 || magic->compare(0, 7, "NRRD000") != 0 || (*magic)[7] < '1' ||
-      (*magic)[7] > '5')
+  if (!magic || magic->size() != 8 || magic->compare(0, 7, "NRRD000") != 0 || (*magic)[7] < '1' || (*magic)[7] > '5')
     throw InputError(fields.where() + "not a NRRD file (the first line must be NRRD0001 to NRRD0005)");
 
   bool blankLine = false;
@@ -128,8 +129,8 @@ std::unique_ptr<SliceStream> openNrrd(const std::filesystem::path& path) {
     if ((*line)[0] == '#') continue;
     const std::size_t colon = line->find(':');
     if (colon == std::string::npos)
-      throw InputError(fields.where() + "line " + std::to_string(lineNumber) + " is neither 'field: value' nor a comment: '" +
-                       *line + "'");
+      throw InputError(fields.where() + "line " + std::to_string(lineNumber) +
+                       " is neither 'field: value' nor a comment: '" + *line + "'");
     if (colon + 1 < line->size() && (*line)[colon + 1] == '=') continue;  // key:=value pair
     std::string name = lower(trim(std::string_view(*line).substr(0, colon)));
     if (name == "datafile") name = "data file";
@@ -140,8 +141,7 @@ std::unique_ptr<SliceStream> openNrrd(const std::filesystem::path& path) {
 
   // dimension, type, sizes.
   const std::int64_t dimension = fields.integer("dimension", fields.require("dimension"));
-  if (dimension != 3)
-    fields.fail("dimension", "only 3-D volumes are supported, got " + std::to_string(dimension));
+  if (dimension != 3) fields.fail("dimension", "only 3-D volumes are supported, got " + std::to_string(dimension));
   VolumeHeader header;
   header.sampleType = parseNrrdType(fields, fields.require("type"));
   const std::vector<std::string> sizes = splitWords(fields.require("sizes"));
@@ -156,8 +156,8 @@ std::unique_ptr<SliceStream> openNrrd(const std::filesystem::path& path) {
   if (!gzip && encoding != "raw")
     fields.fail("encoding", "unsupported encoding '" + encoding + "' (supported: raw, gzip)");
   if (sampleSize(header.sampleType) > 1) {
-    const std::string endian = lower(fields.require(
-        "endian", " (required for " + std::string(sampleTypeName(header.sampleType)) + " samples)"));
+    const std::string endian = lower(
+        fields.require("endian", " (required for " + std::string(sampleTypeName(header.sampleType)) + " samples)"));
     if (endian != "little" && endian != "big")
       fields.fail("endian", "expected 'little' or 'big', got '" + endian + "'");
     header.bigEndian = endian == "big";
@@ -170,7 +170,8 @@ std::unique_ptr<SliceStream> openNrrd(const std::filesystem::path& path) {
     fields.fail("spacings", "contradicts 'space directions' (a header may give only one of them)");
   if (spacings) {
     const std::vector<std::string> words = splitWords(*spacings);
-    if (words.size() != 3) fields.fail("spacings", "dimension is 3 but it gives " + std::to_string(words.size()) + " values");
+    if (words.size() != 3)
+      fields.fail("spacings", "dimension is 3 but it gives " + std::to_string(words.size()) + " values");
     for (int axis = 0; axis < 3; ++axis) {
       header.spacing[axis] = fields.number("spacings", words[axis]);
       if (!std::isfinite(header.spacing[axis]) || header.spacing[axis] <= 0)
@@ -219,8 +220,7 @@ std::unique_ptr<SliceStream> openNrrd(const std::filesystem::path& path) {
   std::unique_ptr<FileRegionStream> data;
   std::string dataName = source;
   if (const std::string* dataFile = fields.find("data file")) {
-    if (const std::string problem = dataFileProblem(*dataFile); !problem.empty())
-      fields.fail("data file", problem);
+    if (const std::string problem = dataFileProblem(*dataFile); !problem.empty()) fields.fail("data file", problem);
     const std::filesystem::path dataPath = dataFilePath(path, *dataFile);
     dataName = dataPath.string();
     std::error_code ec;
@@ -230,8 +230,9 @@ std::unique_ptr<SliceStream> openNrrd(const std::filesystem::path& path) {
         dataPath, FileRegionOptions{.label = "'" + dataName + "' (data file of '" + source + "')"});
   } else {
     if (!blankLine)
-      throw InputError(fields.where() + "no data: the header has neither a 'data file' field nor a blank line "
-                                        "followed by attached data");
+      throw InputError(fields.where() +
+                       "no data: the header has neither a 'data file' field nor a blank line "
+                       "followed by attached data");
     data = std::move(file);
   }
   data->skipLines(lineSkip);
@@ -246,8 +247,9 @@ std::unique_ptr<SliceStream> openNrrd(const std::filesystem::path& path) {
     const std::int64_t available = data->remaining();
     if (byteSkip == -1) byteSkip = std::max<std::int64_t>(available - dataBytes, 0);
     if (available - byteSkip != dataBytes)
-      fields.fail("sizes", need + " but '" + dataName + "' holds " + std::to_string(std::max<std::int64_t>(available - byteSkip, 0)) +
-                               " data bytes" + (byteSkip > 0 ? " after the byte skip of " + std::to_string(byteSkip) : ""));
+      fields.fail("sizes", need + " but '" + dataName + "' holds " +
+                               std::to_string(std::max<std::int64_t>(available - byteSkip, 0)) + " data bytes" +
+                               (byteSkip > 0 ? " after the byte skip of " + std::to_string(byteSkip) : ""));
     data->skip(byteSkip);
     bytes = std::move(data);
   }

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file nrrd_reader.h
 /// @brief NRRD volumes (NRRD0001..NRRD0005), attached (.nrrd) or detached (.nhdr).
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file obj.h
 /// @brief Writes triangle meshes as Wavefront OBJ text.
 ///

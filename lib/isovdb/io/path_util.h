@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file path_util.h
 /// @brief Small helpers on file paths shared by the readers, the writers and pipeline/.
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/io/ply.h"
 
 #include <algorithm>
@@ -217,14 +219,22 @@ class BinarySource {
   template <typename Out>
   Status read(SampleType type, Out& out) {
     switch (type) {
-      case SampleType::Int8: return load<std::int8_t>(out);
-      case SampleType::UInt8: return load<std::uint8_t>(out);
-      case SampleType::Int16: return load<std::int16_t>(out);
-      case SampleType::UInt16: return load<std::uint16_t>(out);
-      case SampleType::Int32: return load<std::int32_t>(out);
-      case SampleType::UInt32: return load<std::uint32_t>(out);
-      case SampleType::Float32: return load<float>(out);
-      case SampleType::Float64: return load<double>(out);
+      case SampleType::Int8:
+        return load<std::int8_t>(out);
+      case SampleType::UInt8:
+        return load<std::uint8_t>(out);
+      case SampleType::Int16:
+        return load<std::int16_t>(out);
+      case SampleType::UInt16:
+        return load<std::uint16_t>(out);
+      case SampleType::Int32:
+        return load<std::int32_t>(out);
+      case SampleType::UInt32:
+        return load<std::uint32_t>(out);
+      case SampleType::Float32:
+        return load<float>(out);
+      case SampleType::Float64:
+        return load<double>(out);
     }
     return Status::Malformed;
   }
@@ -290,13 +300,20 @@ class AsciiSource {
 
   static bool inRange(SampleType type, std::int64_t v) {
     switch (type) {
-      case SampleType::Int8: return v >= -128 && v <= 127;
-      case SampleType::UInt8: return v >= 0 && v <= 255;
-      case SampleType::Int16: return v >= -32768 && v <= 32767;
-      case SampleType::UInt16: return v >= 0 && v <= 65535;
-      case SampleType::Int32: return v >= std::numeric_limits<std::int32_t>::min() && v <= std::numeric_limits<std::int32_t>::max();
-      case SampleType::UInt32: return v >= 0 && v <= std::numeric_limits<std::uint32_t>::max();
-      default: return true;
+      case SampleType::Int8:
+        return v >= -128 && v <= 127;
+      case SampleType::UInt8:
+        return v >= 0 && v <= 255;
+      case SampleType::Int16:
+        return v >= -32768 && v <= 32767;
+      case SampleType::UInt16:
+        return v >= 0 && v <= 65535;
+      case SampleType::Int32:
+        return v >= std::numeric_limits<std::int32_t>::min() && v <= std::numeric_limits<std::int32_t>::max();
+      case SampleType::UInt32:
+        return v >= 0 && v <= std::numeric_limits<std::uint32_t>::max();
+      default:
+        return true;
     }
   }
 
@@ -380,7 +397,8 @@ class BodyReader {
 
   std::int64_t listCount(const Element& e, std::uint64_t item, const Property& p) {
     const std::int64_t n = integer(e, item, p, p.countType);
-    if (n < 0) file_.fail("element '" + e.name + "' " + std::to_string(item) + ": negative list length in '" + p.name + "'");
+    if (n < 0)
+      file_.fail("element '" + e.name + "' " + std::to_string(item) + ": negative list length in '" + p.name + "'");
     return n;
   }
 
@@ -390,7 +408,9 @@ class BodyReader {
   }
 
   /// Upper bound on the items the rest of the file can hold, to reserve no more than that.
-  std::size_t plausible(std::uint64_t count) const { return static_cast<std::size_t>(std::min<std::uint64_t>(count, src_.remaining() / 2)); }
+  std::size_t plausible(std::uint64_t count) const {
+    return static_cast<std::size_t>(std::min<std::uint64_t>(count, src_.remaining() / 2));
+  }
 
   void readVertices(const Element& e, Mesh& mesh) {
     bool hasNormals = false;
@@ -443,7 +463,8 @@ class BodyReader {
                        " but the file has " + std::to_string(vertexCount_) + " vertices");
           corners.push_back(static_cast<std::uint32_t>(index));
         }
-        for (std::size_t k = 1; k + 1 < corners.size(); ++k) mesh.triangles.push_back({corners[0], corners[k], corners[k + 1]});
+        for (std::size_t k = 1; k + 1 < corners.size(); ++k)
+          mesh.triangles.push_back({corners[0], corners[k], corners[k + 1]});
       }
     }
   }

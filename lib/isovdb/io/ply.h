@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file ply.h
 /// @brief Reads and writes triangle meshes as PLY (Stanford polygon files).
 ///

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file ply_stream_writer.h
 /// @brief Writes a binary PLY mesh piece by piece, as the meta-cell pipeline
 ///        produces it, without holding the mesh in memory.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file sample_statistics.h
 /// @brief Value range, percentiles and dead-band figures of the samples a
 ///        SliceStream delivers, gathered while the stream is ingested (no second read).
@@ -20,10 +22,10 @@ namespace isovdb::io {
 
 /// What SampleStatistics found.
 struct SampleSummary {
-  std::int64_t samples = 0;   ///< finite samples seen
-  std::int64_t holes = 0;     ///< NaN samples (no trace at that position)
+  std::int64_t samples = 0;  ///< finite samples seen
+  std::int64_t holes = 0;    ///< NaN samples (no trace at that position)
   float minValue = 0.f, maxValue = 0.f;
-  double clip = 0.0;            ///< the dead band asked about: |value| < clip is quiet
+  double clip = 0.0;               ///< the dead band asked about: |value| < clip is quiet
   std::int64_t activeSamples = 0;  ///< samples with |value| >= clip
   /// activeSamples / samples (0 when there is no sample).
   double activeFraction() const { return samples ? static_cast<double>(activeSamples) / samples : 0.0; }

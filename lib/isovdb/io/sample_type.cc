@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/io/sample_type.h"
 
 #include <algorithm>
@@ -13,34 +15,44 @@ namespace isovdb::io {
 std::size_t sampleSize(SampleType type) {
   switch (type) {
     case SampleType::Int8:
-    case SampleType::UInt8: return 1;
+    case SampleType::UInt8:
+      return 1;
     case SampleType::Int16:
-    case SampleType::UInt16: return 2;
+    case SampleType::UInt16:
+      return 2;
     case SampleType::Int32:
     case SampleType::UInt32:
-    case SampleType::Float32: return 4;
-    case SampleType::Float64: return 8;
+    case SampleType::Float32:
+      return 4;
+    case SampleType::Float64:
+      return 8;
   }
   return 0;
 }
 
 std::string_view sampleTypeName(SampleType type) {
   switch (type) {
-    case SampleType::Int8: return "int8";
-    case SampleType::UInt8: return "uint8";
-    case SampleType::Int16: return "int16";
-    case SampleType::UInt16: return "uint16";
-    case SampleType::Int32: return "int32";
-    case SampleType::UInt32: return "uint32";
-    case SampleType::Float32: return "float32";
-    case SampleType::Float64: return "float64";
+    case SampleType::Int8:
+      return "int8";
+    case SampleType::UInt8:
+      return "uint8";
+    case SampleType::Int16:
+      return "int16";
+    case SampleType::UInt16:
+      return "uint16";
+    case SampleType::Int32:
+      return "int32";
+    case SampleType::UInt32:
+      return "uint32";
+    case SampleType::Float32:
+      return "float32";
+    case SampleType::Float64:
+      return "float64";
   }
   return "unknown";
 }
 
-bool isFloatingPoint(SampleType type) {
-  return type == SampleType::Float32 || type == SampleType::Float64;
-}
+bool isFloatingPoint(SampleType type) { return type == SampleType::Float32 || type == SampleType::Float64; }
 
 std::optional<SampleType> parseSampleType(std::string_view name) {
   std::string s(name);
@@ -50,21 +62,44 @@ std::optional<SampleType> parseSampleType(std::string_view name) {
     SampleType type;
   };
   static constexpr Alias kAliases[] = {
-      {"int8", SampleType::Int8},       {"i8", SampleType::Int8},         {"char", SampleType::Int8},
-      {"signed char", SampleType::Int8}, {"int8_t", SampleType::Int8},
-      {"uint8", SampleType::UInt8},     {"u8", SampleType::UInt8},        {"uchar", SampleType::UInt8},
-      {"unsigned char", SampleType::UInt8}, {"uint8_t", SampleType::UInt8},
-      {"int16", SampleType::Int16},     {"i16", SampleType::Int16},       {"short", SampleType::Int16},
-      {"short int", SampleType::Int16}, {"signed short", SampleType::Int16}, {"int16_t", SampleType::Int16},
-      {"uint16", SampleType::UInt16},   {"u16", SampleType::UInt16},      {"ushort", SampleType::UInt16},
-      {"unsigned short", SampleType::UInt16}, {"unsigned short int", SampleType::UInt16},
+      {"int8", SampleType::Int8},
+      {"i8", SampleType::Int8},
+      {"char", SampleType::Int8},
+      {"signed char", SampleType::Int8},
+      {"int8_t", SampleType::Int8},
+      {"uint8", SampleType::UInt8},
+      {"u8", SampleType::UInt8},
+      {"uchar", SampleType::UInt8},
+      {"unsigned char", SampleType::UInt8},
+      {"uint8_t", SampleType::UInt8},
+      {"int16", SampleType::Int16},
+      {"i16", SampleType::Int16},
+      {"short", SampleType::Int16},
+      {"short int", SampleType::Int16},
+      {"signed short", SampleType::Int16},
+      {"int16_t", SampleType::Int16},
+      {"uint16", SampleType::UInt16},
+      {"u16", SampleType::UInt16},
+      {"ushort", SampleType::UInt16},
+      {"unsigned short", SampleType::UInt16},
+      {"unsigned short int", SampleType::UInt16},
       {"uint16_t", SampleType::UInt16},
-      {"int32", SampleType::Int32},     {"i32", SampleType::Int32},       {"int", SampleType::Int32},
-      {"signed int", SampleType::Int32}, {"int32_t", SampleType::Int32},
-      {"uint32", SampleType::UInt32},   {"u32", SampleType::UInt32},      {"uint", SampleType::UInt32},
-      {"unsigned int", SampleType::UInt32}, {"uint32_t", SampleType::UInt32},
-      {"float32", SampleType::Float32}, {"f32", SampleType::Float32},     {"float", SampleType::Float32},
-      {"float64", SampleType::Float64}, {"f64", SampleType::Float64},     {"double", SampleType::Float64},
+      {"int32", SampleType::Int32},
+      {"i32", SampleType::Int32},
+      {"int", SampleType::Int32},
+      {"signed int", SampleType::Int32},
+      {"int32_t", SampleType::Int32},
+      {"uint32", SampleType::UInt32},
+      {"u32", SampleType::UInt32},
+      {"uint", SampleType::UInt32},
+      {"unsigned int", SampleType::UInt32},
+      {"uint32_t", SampleType::UInt32},
+      {"float32", SampleType::Float32},
+      {"f32", SampleType::Float32},
+      {"float", SampleType::Float32},
+      {"float64", SampleType::Float64},
+      {"f64", SampleType::Float64},
+      {"double", SampleType::Float64},
   };
   for (const Alias& alias : kAliases)
     if (s == alias.name) return alias.type;
@@ -98,18 +133,25 @@ std::int64_t convertTyped(const std::byte* bytes, bool swap, std::size_t count, 
 
 }  // namespace
 
-std::int64_t convertSamples(const std::byte* bytes, SampleType type, bool bigEndian,
-                            std::size_t count, float* out) {
+std::int64_t convertSamples(const std::byte* bytes, SampleType type, bool bigEndian, std::size_t count, float* out) {
   const bool swap = bigEndian != (std::endian::native == std::endian::big);
   switch (type) {
-    case SampleType::Int8: return convertTyped<std::int8_t>(bytes, swap, count, out);
-    case SampleType::UInt8: return convertTyped<std::uint8_t>(bytes, swap, count, out);
-    case SampleType::Int16: return convertTyped<std::int16_t>(bytes, swap, count, out);
-    case SampleType::UInt16: return convertTyped<std::uint16_t>(bytes, swap, count, out);
-    case SampleType::Int32: return convertTyped<std::int32_t>(bytes, swap, count, out);
-    case SampleType::UInt32: return convertTyped<std::uint32_t>(bytes, swap, count, out);
-    case SampleType::Float32: return convertTyped<float>(bytes, swap, count, out);
-    case SampleType::Float64: return convertTyped<double>(bytes, swap, count, out);
+    case SampleType::Int8:
+      return convertTyped<std::int8_t>(bytes, swap, count, out);
+    case SampleType::UInt8:
+      return convertTyped<std::uint8_t>(bytes, swap, count, out);
+    case SampleType::Int16:
+      return convertTyped<std::int16_t>(bytes, swap, count, out);
+    case SampleType::UInt16:
+      return convertTyped<std::uint16_t>(bytes, swap, count, out);
+    case SampleType::Int32:
+      return convertTyped<std::int32_t>(bytes, swap, count, out);
+    case SampleType::UInt32:
+      return convertTyped<std::uint32_t>(bytes, swap, count, out);
+    case SampleType::Float32:
+      return convertTyped<float>(bytes, swap, count, out);
+    case SampleType::Float64:
+      return convertTyped<double>(bytes, swap, count, out);
   }
   return -1;
 }

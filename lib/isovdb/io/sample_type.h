@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file sample_type.h
 /// @brief Element types of dense volume files and their conversion to float.
 #pragma once
@@ -27,7 +29,6 @@ std::optional<SampleType> parseSampleType(std::string_view name);
 /// Converts `count` samples stored in `bytes` (file byte order given by
 /// `bigEndian`) to float. Returns the index of the first non-finite value,
 /// or -1 when all are finite.
-std::int64_t convertSamples(const std::byte* bytes, SampleType type, bool bigEndian,
-                            std::size_t count, float* out);
+std::int64_t convertSamples(const std::byte* bytes, SampleType type, bool bigEndian, std::size_t count, float* out);
 
 }  // namespace isovdb::io

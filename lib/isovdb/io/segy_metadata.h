@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file segy_metadata.h
 /// @brief A SEG-Y cube's survey geometry kept in its grid's metadata, so a `.vdb`
 ///        export tells other VDB tools where the samples came from.

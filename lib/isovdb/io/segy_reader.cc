@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/io/segy_reader.h"
 
 #include <segyio/segy.h>
@@ -35,11 +37,16 @@ constexpr std::int64_t kHeaderBytes = SEGY_TEXT_HEADER_SIZE + SEGY_BINARY_HEADER
 std::optional<SampleType> sampleTypeOf(int formatCode) {
   switch (formatCode) {
     case SEGY_IBM_FLOAT_4_BYTE:
-    case SEGY_IEEE_FLOAT_4_BYTE: return SampleType::Float32;
-    case SEGY_SIGNED_INTEGER_4_BYTE: return SampleType::Int32;
-    case SEGY_SIGNED_SHORT_2_BYTE: return SampleType::Int16;
-    case SEGY_SIGNED_CHAR_1_BYTE: return SampleType::Int8;
-    default: return std::nullopt;
+    case SEGY_IEEE_FLOAT_4_BYTE:
+      return SampleType::Float32;
+    case SEGY_SIGNED_INTEGER_4_BYTE:
+      return SampleType::Int32;
+    case SEGY_SIGNED_SHORT_2_BYTE:
+      return SampleType::Int16;
+    case SEGY_SIGNED_CHAR_1_BYTE:
+      return SampleType::Int8;
+    default:
+      return std::nullopt;
   }
 }
 
@@ -76,7 +83,8 @@ class HeaderScan {
 std::array<double, 2> cdpOf(const HeaderScan& scan, const char* header) {
   int scalar = scan.field(header, SEGY_TR_SOURCE_GROUP_SCALAR, "trace header byte");
   const double factor = scalar == 0 ? 1.0 : scalar > 0 ? scalar : 1.0 / -scalar;
-  return {scan.field(header, SEGY_TR_CDP_X, "trace header byte") * factor, scan.field(header, SEGY_TR_CDP_Y, "trace header byte") * factor};
+  return {scan.field(header, SEGY_TR_CDP_X, "trace header byte") * factor,
+          scan.field(header, SEGY_TR_CDP_Y, "trace header byte") * factor};
 }
 
 struct LineKeys {
@@ -90,12 +98,18 @@ int indexOf(int number, const SegyLineAxis& axis) { return (number - axis.first)
 
 std::string segyFormatName(int formatCode) {
   switch (formatCode) {
-    case SEGY_IBM_FLOAT_4_BYTE: return "IBM float";
-    case SEGY_SIGNED_INTEGER_4_BYTE: return "int32";
-    case SEGY_SIGNED_SHORT_2_BYTE: return "int16";
-    case SEGY_IEEE_FLOAT_4_BYTE: return "IEEE float";
-    case SEGY_SIGNED_CHAR_1_BYTE: return "int8";
-    default: return "format " + std::to_string(formatCode);
+    case SEGY_IBM_FLOAT_4_BYTE:
+      return "IBM float";
+    case SEGY_SIGNED_INTEGER_4_BYTE:
+      return "int32";
+    case SEGY_SIGNED_SHORT_2_BYTE:
+      return "int16";
+    case SEGY_IEEE_FLOAT_4_BYTE:
+      return "IEEE float";
+    case SEGY_SIGNED_CHAR_1_BYTE:
+      return "int8";
+    default:
+      return "format " + std::to_string(formatCode);
   }
 }
 
@@ -141,7 +155,8 @@ std::unique_ptr<SegyStream> openSegy(const std::filesystem::path& path, const Se
     scan.readBinaryHeader(binary);
     const int lsbFormat = segy_format(binary);
     if (!sampleTypeOf(lsbFormat)) {
-      const int shown = (msbFormat > 0 && msbFormat < 256) || lsbFormat <= 0 || lsbFormat >= 256 ? msbFormat : lsbFormat;
+      const int shown =
+          (msbFormat > 0 && msbFormat < 256) || lsbFormat <= 0 || lsbFormat >= 256 ? msbFormat : lsbFormat;
       throw scan.error("unsupported sample format code " + std::to_string(shown) +
                        " (binary header bytes 3225-3226), expected 1 (IBM float), 2 (int32), 3 (int16), "
                        "5 (IEEE float) or 8 (int8)");
@@ -171,9 +186,10 @@ std::unique_ptr<SegyStream> openSegy(const std::filesystem::path& path, const Se
   const std::int64_t dataBytes = fileSize - file.trace0;
   if (dataBytes % traceSize != 0)
     throw scan.error(std::to_string(dataBytes) + " bytes of traces are not a whole number of " +
-                     std::to_string(traceSize) + "-byte traces (240-byte header + " + std::to_string(g.samples) +
-                     " " + segyFormatName(format) + " samples): the file is truncated (last trace has " +
-                     std::to_string(dataBytes % traceSize) + " bytes) or the sample count (binary header bytes "
+                     std::to_string(traceSize) + "-byte traces (240-byte header + " + std::to_string(g.samples) + " " +
+                     segyFormatName(format) + " samples): the file is truncated (last trace has " +
+                     std::to_string(dataBytes % traceSize) +
+                     " bytes) or the sample count (binary header bytes "
                      "3221-3222) does not match the traces");
   g.traces = dataBytes / traceSize;
   if (g.traces > std::numeric_limits<std::int32_t>::max())
@@ -241,8 +257,9 @@ std::unique_ptr<SegyStream> openSegy(const std::filesystem::path& path, const Se
 
   const std::int64_t positions = std::int64_t{slow.count} * fast.count;
   if (positions > 4 * g.traces)
-    throw scan.error("the inline and crossline numbers make a " + std::to_string(inlineSorted ? slow.count : fast.count) +
-                     " x " + std::to_string(inlineSorted ? fast.count : slow.count) + " grid for only " +
+    throw scan.error("the inline and crossline numbers make a " +
+                     std::to_string(inlineSorted ? slow.count : fast.count) + " x " +
+                     std::to_string(inlineSorted ? fast.count : slow.count) + " grid for only " +
                      std::to_string(g.traces) + " traces " + checkBytes);
   g.missingTraces = positions - g.traces;
 
@@ -261,9 +278,9 @@ std::unique_ptr<SegyStream> openSegy(const std::filesystem::path& path, const Se
       const int position = indexOf(keys.fast[static_cast<std::size_t>(t)], fast);
       std::int64_t& previous = traceAt[static_cast<std::size_t>(position)];
       if (previous >= begin)
-        throw scan.error("traces " + std::to_string(previous) + " and " + std::to_string(t) + " both have " +
-                         slowName + " " + std::to_string(keys.slow[static_cast<std::size_t>(t)]) + " and " +
-                         fastName + " " + std::to_string(keys.fast[static_cast<std::size_t>(t)]) + " " + checkBytes);
+        throw scan.error("traces " + std::to_string(previous) + " and " + std::to_string(t) + " both have " + slowName +
+                         " " + std::to_string(keys.slow[static_cast<std::size_t>(t)]) + " and " + fastName + " " +
+                         std::to_string(keys.fast[static_cast<std::size_t>(t)]) + " " + checkBytes);
       previous = t;
       stream->positionOfTrace_[static_cast<std::size_t>(t)] = position;
     }
@@ -327,9 +344,8 @@ void SegyStream::readSlice(float* out) {
     const bool ibm = geometry_.formatCode == SEGY_IBM_FLOAT_4_BYTE;
     if (ibm) segy_to_native(SEGY_IBM_FLOAT_4_BYTE, static_cast<long long>(samples), traceBytes_.data());
     float* trace = out + static_cast<std::size_t>(positionOfTrace_[static_cast<std::size_t>(t)]) * samples;
-    const std::int64_t bad = convertSamples(reinterpret_cast<const std::byte*>(traceBytes_.data()),
-                                            header_.sampleType, ibm ? std::endian::native == std::endian::big : true,
-                                            samples, trace);
+    const std::int64_t bad = convertSamples(reinterpret_cast<const std::byte*>(traceBytes_.data()), header_.sampleType,
+                                            ibm ? std::endian::native == std::endian::big : true, samples, trace);
     if (bad >= 0) {
       const int position = positionOfTrace_[static_cast<std::size_t>(t)];
       const bool inlineSorted = geometry_.sorting == SegySorting::Inline;

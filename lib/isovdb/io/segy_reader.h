@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file segy_reader.h
 /// @brief SEG-Y (rev 0/1) post-stack amplitude cubes, read trace by trace with
 ///        segyio's C API, as a SliceStream.
@@ -46,28 +48,28 @@ enum class SegySorting { Inline, Crossline };
 /// Line numbers along one grid axis: index i is line first + i * step.
 struct SegyLineAxis {
   int first = 0;
-  int step = 1;         ///< non-zero; negative when the file's lines run downwards
+  int step = 1;  ///< non-zero; negative when the file's lines run downwards
   int count = 0;
-  double spacing = 1.0; ///< world distance between neighbouring indices (CDP units)
+  double spacing = 1.0;  ///< world distance between neighbouring indices (CDP units)
   int last() const { return first + (count - 1) * step; }
 };
 
 /// Everything the header scan found.
 struct SegyGeometry {
-  int formatCode = 1;        ///< SEG-Y sample format: 1 IBM float, 2 int32, 3 int16, 5 IEEE float, 8 int8
-  bool littleEndian = false; ///< whole file byte-swapped (SEG-Y rev 2 / Seismic Unix style)
+  int formatCode = 1;         ///< SEG-Y sample format: 1 IBM float, 2 int32, 3 int16, 5 IEEE float, 8 int8
+  bool littleEndian = false;  ///< whole file byte-swapped (SEG-Y rev 2 / Seismic Unix style)
   SegySorting sorting = SegySorting::Inline;
-  int samples = 0;                    ///< samples per trace
-  double sampleIntervalUs = 4000.0;   ///< microseconds (or the depth unit / 1000)
-  double firstSampleMs = 0.0;         ///< delay recording time of the first trace (byte 109)
-  std::int64_t traces = 0;            ///< traces in the file
-  std::int64_t missingTraces = 0;     ///< inline/crossline positions without a trace
+  int samples = 0;                   ///< samples per trace
+  double sampleIntervalUs = 4000.0;  ///< microseconds (or the depth unit / 1000)
+  double firstSampleMs = 0.0;        ///< delay recording time of the first trace (byte 109)
+  std::int64_t traces = 0;           ///< traces in the file
+  std::int64_t missingTraces = 0;    ///< inline/crossline positions without a trace
   SegyLineAxis inlines, crosslines;
   /// Line spacings come from CDP coordinates; false when the file has none (spacing 1 per line).
   bool spacingFromCoordinates = false;
   std::array<double, 2> originCdp{0.0, 0.0};  ///< CDP X, Y of index (0, 0) (extrapolated if it is a hole)
-  double rotationDegrees = 0.0;  ///< azimuth of the inline axis (x), clockwise from CDP-Y ("north")
-  SegyOptions bytes;             ///< the header byte positions used
+  double rotationDegrees = 0.0;               ///< azimuth of the inline axis (x), clockwise from CDP-Y ("north")
+  SegyOptions bytes;                          ///< the header byte positions used
 };
 
 /// "IBM float", "int32", "int16", "IEEE float" or "int8".
@@ -100,14 +102,13 @@ class SegyStream final : public SliceStream {
   struct File;  ///< segyio's handle and trace layout (defined in the .cc)
 
  private:
-
   std::string source_;
   VolumeHeader header_;
   SegyGeometry geometry_;
   std::unique_ptr<File> file_;
-  std::vector<std::int64_t> lineFirstTrace_;  ///< per line index: first trace, -1 for a missing line
-  std::vector<std::int32_t> lineTraceCount_;  ///< per line index: traces in the file
-  std::vector<std::int32_t> positionOfTrace_; ///< per trace: index along its line
+  std::vector<std::int64_t> lineFirstTrace_;   ///< per line index: first trace, -1 for a missing line
+  std::vector<std::int32_t> lineTraceCount_;   ///< per line index: traces in the file
+  std::vector<std::int32_t> positionOfTrace_;  ///< per trace: index along its line
   std::vector<char> traceBytes_;
   std::int64_t nextSlice_ = 0;
 };

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file slice_stream.h
 /// @brief A dense volume read z-slice by z-slice, so nothing holds the whole volume.
 ///
@@ -22,7 +24,7 @@ namespace isovdb::io {
 struct VolumeHeader {
   std::array<std::int64_t, 3> dims{0, 0, 0};  ///< samples along x, y, z (each > 0)
   SampleType sampleType = SampleType::UInt8;
-  bool bigEndian = false;                     ///< byte order of the file's samples
+  bool bigEndian = false;                        ///< byte order of the file's samples
   std::array<double, 3> spacing{1.0, 1.0, 1.0};  ///< world units per voxel
   std::array<double, 3> origin{0.0, 0.0, 0.0};   ///< world position of voxel (0,0,0)
   /// Grid axis (0 = x, 1 = y, 2 = z) of each stream axis: a permutation of {0, 1, 2}.

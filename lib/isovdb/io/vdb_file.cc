@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/io/vdb_file.h"
 
 #include <openvdb/io/File.h>
@@ -25,10 +27,14 @@ std::string quoted(const std::filesystem::path& path) { return "'" + path.string
 
 std::string className(openvdb::GridClass gridClass) {
   switch (gridClass) {
-    case openvdb::GRID_LEVEL_SET: return "level set";
-    case openvdb::GRID_FOG_VOLUME: return "fog volume";
-    case openvdb::GRID_STAGGERED: return "staggered";
-    default: return "unknown";
+    case openvdb::GRID_LEVEL_SET:
+      return "level set";
+    case openvdb::GRID_FOG_VOLUME:
+      return "fog volume";
+    case openvdb::GRID_STAGGERED:
+      return "staggered";
+    default:
+      return "unknown";
   }
 }
 
@@ -70,9 +76,8 @@ Geometry takeGeometry(openvdb::GridBase& grid, const std::filesystem::path& path
 template <typename GridT>
 void scaleLevelSet(GridT& grid, float factor) {
   const float background = grid.background() * factor;
-  openvdb::tools::foreach(grid.beginValueOn(), [factor](const typename GridT::ValueOnIter& it) {
-    it.setValue(*it * factor);
-  });
+  openvdb::tools::foreach (grid.beginValueOn(),
+                           [factor](const typename GridT::ValueOnIter& it) { it.setValue(*it * factor); });
   openvdb::tools::changeLevelSetBackground(grid.tree(), background);
 }
 
@@ -101,8 +106,8 @@ Volume toVolume(openvdb::GridBase::Ptr base, const std::filesystem::path& path) 
     return Volume(VolumeKind::Mask, boolGrid, geometry, path.string());
   }
   if (auto maskGrid = openvdb::gridPtrCast<openvdb::MaskGrid>(base)) {
-    auto boolGrid = MaskGrid::create(
-        std::make_shared<MaskGrid::TreeType>(maskGrid->tree(), false, true, openvdb::TopologyCopy()));
+    auto boolGrid =
+        MaskGrid::create(std::make_shared<MaskGrid::TreeType>(maskGrid->tree(), false, true, openvdb::TopologyCopy()));
     boolGrid->setName(name);
     boolGrid->setTransform(maskGrid->transform().copy());
     return toVolume(boolGrid, path);

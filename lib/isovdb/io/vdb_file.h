@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file vdb_file.h
 /// @brief Reading and writing OpenVDB `.vdb` files (any file version OpenVDB 10 reads,
 ///        including old half-float files).
@@ -43,7 +45,6 @@ struct VdbWriteOptions {
 /// spacing, distances stay in voxels and the metadata "isovdb_distance_units"
 /// says so). Written through a temporary file: nothing partial is left on failure.
 /// @throw IoError when the path is not writable.
-void writeVdb(const std::filesystem::path& path, const volume::Volume& volume,
-              const VdbWriteOptions& options = {});
+void writeVdb(const std::filesystem::path& path, const volume::Volume& volume, const VdbWriteOptions& options = {});
 
 }  // namespace isovdb::io

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file vdb_grid_setup.h
 /// @brief What every grid isovdb writes to a .vdb file carries: its world
 ///        transform, name, class and provenance metadata, and level-set values
@@ -25,7 +27,7 @@ float levelSetWorldScale(const volume::Geometry& geometry);
 /// Sets the grid's world transform, name, class (level set or not) and metadata
 /// (`isovdb_source`; `isovdb_distance_units` = "voxels" for a level set with an
 /// anisotropic voxel size).
-void describeGrid(openvdb::GridBase& grid, const volume::Geometry& geometry, const std::string& name,
-                  bool levelSet, const std::string& source);
+void describeGrid(openvdb::GridBase& grid, const volume::Geometry& geometry, const std::string& name, bool levelSet,
+                  const std::string& source);
 
 }  // namespace isovdb::io

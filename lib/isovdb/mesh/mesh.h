@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file mesh.h
 /// @brief The indexed triangle mesh that every contouring method produces.
 ///

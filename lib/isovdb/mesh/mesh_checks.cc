@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/mesh/mesh_checks.h"
 
 #include <cmath>
@@ -30,7 +32,8 @@ void throwInvalidTriangle(const Mesh& mesh, std::size_t t, std::string_view call
       throw InputError(std::string(caller) + ": triangle " + std::to_string(t) + " references vertex " +
                        std::to_string(v) + " but the mesh has " + std::to_string(vertexCount) + " vertices");
   }
-  throw InputError(std::string(caller) + ": a vertex of triangle " + std::to_string(t) + " has a non-finite coordinate");
+  throw InputError(std::string(caller) + ": a vertex of triangle " + std::to_string(t) +
+                   " has a non-finite coordinate");
 }
 
 }  // namespace isovdb::mesh::detail

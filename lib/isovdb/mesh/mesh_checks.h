@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file mesh_checks.h
 /// @brief Internal input checks shared by the mesh analyses (validate.cc,
 ///        self_intersection.cc). Not part of the public API.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file mesh_sink.h
 /// @brief Where a contourer puts its mesh piece by piece: collected in memory
 ///        (MeshCollector) or streamed to a file (io::MeshStreamWriter), so the

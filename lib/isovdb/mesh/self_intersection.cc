@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/mesh/self_intersection.h"
 
 #include "isovdb/bit_interleave.h"
@@ -54,8 +56,8 @@ struct Box {
 
 /// Closed boxes: touching counts, since touching triangles intersect.
 bool overlaps(const Box& a, const Box& b) {
-  return a.lo[0] <= b.hi[0] && b.lo[0] <= a.hi[0] && a.lo[1] <= b.hi[1] && b.lo[1] <= a.hi[1] &&
-         a.lo[2] <= b.hi[2] && b.lo[2] <= a.hi[2];
+  return a.lo[0] <= b.hi[0] && b.lo[0] <= a.hi[0] && a.lo[1] <= b.hi[1] && b.lo[1] <= a.hi[1] && a.lo[2] <= b.hi[2] &&
+         b.lo[2] <= a.hi[2];
 }
 
 Box boxOf(const Vec3f& a, const Vec3f& b) {
@@ -189,8 +191,7 @@ class PairTest {
 
  private:
   Triangle3 triangle(const Triangle& t) const {
-    return Triangle3(toPoint(mesh_.positions[t[0]]), toPoint(mesh_.positions[t[1]]),
-                     toPoint(mesh_.positions[t[2]]));
+    return Triangle3(toPoint(mesh_.positions[t[0]]), toPoint(mesh_.positions[t[1]]), toPoint(mesh_.positions[t[2]]));
   }
 
   bool edgeMeetsTriangle(std::uint32_t v0, std::uint32_t v1, const Triangle& t) const {

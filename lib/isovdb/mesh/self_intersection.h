@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file self_intersection.h
 /// @brief Counts intersecting triangle pairs of a mesh with exact predicates.
 ///

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/mesh/validate.h"
 
 #include <algorithm>
@@ -102,8 +104,8 @@ struct VertexFigures {
 enum VertexFlag : std::uint8_t { kReferenced = 1, kBoundaryEdge = 2, kNonManifoldEdge = 4, kNonManifoldVertex = 8 };
 
 struct Totals {
-  std::int64_t edges = 0, boundaryEdges = 0, nonManifoldEdges = 0, nonManifoldVertices = 0,
-               inconsistentEdges = 0, referencedVertices = 0;
+  std::int64_t edges = 0, boundaryEdges = 0, nonManifoldEdges = 0, nonManifoldVertices = 0, inconsistentEdges = 0,
+               referencedVertices = 0;
   Totals& operator+=(const Totals& o) {
     edges += o.edges;
     boundaryEdges += o.boundaryEdges;
@@ -148,8 +150,7 @@ Totals analyseUmbrellas(const Stars& stars, std::vector<VertexFigures>& figures)
         entries.push_back({previous, k, false});
         parent[k] = k;
       }
-      std::sort(entries.begin(), entries.end(),
-                [](const Entry& a, const Entry& b) { return a.other < b.other; });
+      std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) { return a.other < b.other; });
       VertexFigures fig;
       fig.flags = kReferenced;
       std::uint32_t fans = degree;

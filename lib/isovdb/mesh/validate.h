@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file validate.h
 /// @brief Topological and geometric checks of a triangle mesh: closed,
 ///        manifold, consistently oriented, Euler characteristic and genus per
@@ -24,11 +26,11 @@ namespace isovdb::mesh {
 /// Figures of one connected component (triangles connected through shared vertices).
 struct ComponentReport {
   std::int64_t triangles = 0;
-  std::int64_t vertices = 0;            ///< vertices its triangles reference
+  std::int64_t vertices = 0;  ///< vertices its triangles reference
   std::int64_t edges = 0;
-  std::int64_t eulerCharacteristic = 0; ///< vertices - edges + triangles
-  bool closed = false;                  ///< no boundary edge and no non-manifold edge
-  bool manifold = false;                ///< no non-manifold edge and no non-manifold vertex
+  std::int64_t eulerCharacteristic = 0;  ///< vertices - edges + triangles
+  bool closed = false;                   ///< no boundary edge and no non-manifold edge
+  bool manifold = false;                 ///< no non-manifold edge and no non-manifold vertex
   /// (2 - χ) / 2 for a closed manifold component; -1 otherwise, and -1 when
   /// 2 - χ is odd (a non-orientable surface such as RP²).
   std::int64_t genus = -1;
@@ -41,8 +43,8 @@ struct MeshReport {
   std::int64_t referencedVertices = 0;  ///< vertices used by at least one triangle
   std::int64_t triangles = 0;           ///< mesh.triangles.size(), collapsed ones included
   std::int64_t edges = 0;
-  std::int64_t boundaryEdges = 0;       ///< edges of exactly one triangle
-  std::int64_t nonManifoldEdges = 0;    ///< edges of more than two triangles
+  std::int64_t boundaryEdges = 0;     ///< edges of exactly one triangle
+  std::int64_t nonManifoldEdges = 0;  ///< edges of more than two triangles
   /// Vertices whose incident triangles, joined through the edges they share
   /// at that vertex, form more than one fan (the umbrella test); each counted once.
   std::int64_t nonManifoldVertices = 0;
@@ -51,8 +53,8 @@ struct MeshReport {
   /// Triangles with a repeated index, or whose three points are collinear or
   /// coincident (CGAL's exact `collinear`).
   std::int64_t degenerateTriangles = 0;
-  std::int64_t components = 0;          ///< connected through shared vertices
-  std::int64_t eulerCharacteristic = 0; ///< referencedVertices - edges + triangles (not collapsed)
+  std::int64_t components = 0;           ///< connected through shared vertices
+  std::int64_t eulerCharacteristic = 0;  ///< referencedVertices - edges + triangles (not collapsed)
   /// Intersecting triangle pairs (self_intersection.h); -1 when not checked.
   std::int64_t selfIntersectingPairs = -1;
   bool closed = true;    ///< no boundary edge and no non-manifold edge (true for an empty mesh)

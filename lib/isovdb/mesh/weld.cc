@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/mesh/weld.h"
 
 #include <bit>
@@ -21,8 +23,7 @@ struct PositionBits {
 };
 
 PositionBits bitsOf(const Vec3f& p) {
-  return {std::bit_cast<std::uint32_t>(p[0]), std::bit_cast<std::uint32_t>(p[1]),
-          std::bit_cast<std::uint32_t>(p[2])};
+  return {std::bit_cast<std::uint32_t>(p[0]), std::bit_cast<std::uint32_t>(p[1]), std::bit_cast<std::uint32_t>(p[2])};
 }
 
 /// splitmix64's finaliser over the three bit patterns.
@@ -38,15 +39,14 @@ std::uint64_t hashBits(const PositionBits& b) {
 
 void checkMesh(const Mesh& mesh) {
   if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size())
-    throw InputError("weldVertices: the mesh has " + std::to_string(mesh.normals.size()) +
-                     " normals for " + std::to_string(mesh.positions.size()) +
-                     " vertices (expected none or one per vertex)");
+    throw InputError("weldVertices: the mesh has " + std::to_string(mesh.normals.size()) + " normals for " +
+                     std::to_string(mesh.positions.size()) + " vertices (expected none or one per vertex)");
   const std::size_t n = mesh.positions.size();
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
     for (const std::uint32_t v : mesh.triangles[t])
       if (v >= n)
-        throw InputError("weldVertices: triangle " + std::to_string(t) + " references vertex " +
-                         std::to_string(v) + " but the mesh has " + std::to_string(n) + " vertices");
+        throw InputError("weldVertices: triangle " + std::to_string(t) + " references vertex " + std::to_string(v) +
+                         " but the mesh has " + std::to_string(n) + " vertices");
 }
 
 }  // namespace

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file weld.h
 /// @brief Merges vertices whose positions are bit-identical.
 ///

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file area_match.h
 /// @brief Sets the area of an intermediate slice: φ is shifted by one constant so
 ///        that exactly `area` pixels are inside (φ <= 0). The morph gives the shape,

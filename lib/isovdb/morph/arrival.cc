@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/morph/arrival.h"
 
 #include <algorithm>
@@ -6,8 +8,7 @@
 
 namespace isovdb::morph {
 
-ArrivalRecorder::ArrivalRecorder(const Field2& initial)
-    : times_(Field2::filled(initial.width, initial.height, -1.f)) {}
+ArrivalRecorder::ArrivalRecorder(const Field2& initial) : times_(Field2::filled(initial.width, initial.height, -1.f)) {}
 
 void ArrivalRecorder::record(const Field2& previous, const Field2& current, int iteration) {
   for (std::size_t i = 0; i < current.size(); ++i) {

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file arrival.h
 /// @brief Time-of-arrival reparametrisation of a morph (after Nilsson, Breen and
 ///        Museth, 2005): every part of the contour progresses uniformly.

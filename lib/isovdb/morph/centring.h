@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file centring.h
 /// @brief Centring a pair of slices on their convex-hull centroids before the
 ///        morph, and resampling a field at an offset (paper 002 §3.3.2, §3.3.9).

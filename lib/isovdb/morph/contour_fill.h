@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file contour_fill.h
 /// @brief Foreground pixels of a slice image → the object's inside, accepting both
 ///        filled regions and thin closed contours (paper 002 §3.3.3, MATLAB imfill

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/morph/evolution.h"
 
 #include <algorithm>
@@ -67,11 +69,9 @@ bool LevelSetMorph::step() {
       // Godunov: F > 0 moves the front outwards (along ∇φ).
       float grad2 = 0;
       if (speed > 0) {
-        grad2 = sq(std::max(d.xm, 0.f)) + sq(std::min(d.xp, 0.f)) +
-                sq(std::max(d.ym, 0.f)) + sq(std::min(d.yp, 0.f));
+        grad2 = sq(std::max(d.xm, 0.f)) + sq(std::min(d.xp, 0.f)) + sq(std::max(d.ym, 0.f)) + sq(std::min(d.yp, 0.f));
       } else {
-        grad2 = sq(std::min(d.xm, 0.f)) + sq(std::max(d.xp, 0.f)) +
-                sq(std::min(d.ym, 0.f)) + sq(std::max(d.yp, 0.f));
+        grad2 = sq(std::min(d.xm, 0.f)) + sq(std::max(d.xp, 0.f)) + sq(std::min(d.ym, 0.f)) + sq(std::max(d.yp, 0.f));
       }
       next_.at(x, y) = static_cast<float>(phi - dt_ * speed * std::sqrt(grad2));
     }

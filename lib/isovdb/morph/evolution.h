@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file evolution.h
 /// @brief Level-set metamorphosis of one slice into another on a 2-D pixel grid:
 ///        φ_t + (φ − φ_target)|∇φ| = 0 (paper 002 eq. 2.13), forward Euler with the

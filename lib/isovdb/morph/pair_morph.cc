@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/morph/pair_morph.h"
 
 #include <algorithm>
@@ -79,8 +81,7 @@ std::int64_t countDifferent(const Mask2& a, const Mask2& b) {
 /// Runs the morph (with particles when asked), calling visit(previous, current, n)
 /// after every step n = 1..K. Deterministic, so a second run replays the first.
 template <typename Visit>
-void runMorph(const Field2& source, const Field2& target, const PairOptions& options, PairStats& stats,
-              Visit&& visit) {
+void runMorph(const Field2& source, const Field2& target, const PairOptions& options, PairStats& stats, Visit&& visit) {
   LevelSetMorph morph(source, target, options.evolution);
   std::optional<ParticleLevelSet> particles;
   if (options.particles) {
@@ -179,9 +180,8 @@ PairResult morphPair(const Mask2& a, const Mask2& b, const Field2& sdfA, const F
     runMorph(source, target, run, result.stats, record);
   }
   const int iterations = result.stats.iterations;
-  const Field2 scale = options.progress == Progress::Arrival
-                           ? arrivalScale(arrival.times(), target, iterations)
-                           : Field2::filled(w, h, static_cast<float>(iterations + 1));
+  const Field2 scale = options.progress == Progress::Arrival ? arrivalScale(arrival.times(), target, iterations)
+                                                             : Field2::filled(w, h, static_cast<float>(iterations + 1));
   // Exponential progress (pair_morph.h): one time per slice, t(s) = -ln(1 - s (1 - e^{-T})).
   std::vector<double> warped(fractions.size(), -1.0);
   if (options.progress == Progress::Exponential && result.stats.timeStep > 0 && iterations > 0) {
@@ -230,8 +230,8 @@ PairResult morphPair(const Mask2& a, const Mask2& b, const Field2& sdfA, const F
   const std::int64_t swept = countDifferent(insideA, insideB);
   double error = 0;
   for (std::size_t j = 0; j < fractions.size(); ++j) {
-    const double covered = swept > 0 ? static_cast<double>(countDifferent(insideOf(work[j]), insideA)) / swept
-                                     : fractions[j];
+    const double covered =
+        swept > 0 ? static_cast<double>(countDifferent(insideOf(work[j]), insideA)) / swept : fractions[j];
     error += std::abs(covered - fractions[j]);
   }
   result.stats.progressError = fractions.empty() ? 0 : error / fractions.size();

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file pair_morph.h
 /// @brief The intermediate slices between two consecutive slices (paper 002 §3.3):
 ///        centre both on their convex-hull centroids (when that registers them),
@@ -25,8 +27,8 @@ enum class Interpolation {
 /// Which iterate the slice at fraction s shows (uniform progress: paper 002's
 /// conclusion, after Nilsson et al.'s time-of-arrival reparametrisation).
 enum class Progress {
-  Iterations,   ///< iterate s · (K + 1) of K, as the paper's evenly spaced heights: bunches near the target
-  Arrival,      ///< per pixel: measured arrival time over the arrival time at the target (arrival.h)
+  Iterations,  ///< iterate s · (K + 1) of K, as the paper's evenly spaced heights: bunches near the target
+  Arrival,     ///< per pixel: measured arrival time over the arrival time at the target (arrival.h)
   /// Arrival time modelled: with F = φ − φ_target and |∇φ| = 1 every point's distance to
   /// the target decays as e^{-t}, so every point is at fraction (1 - e^{-t}) / (1 - e^{-T})
   /// of its path at time t, T = K Δt; slice s shows time t(s) = -ln(1 - s (1 - e^{-T})).
@@ -53,12 +55,12 @@ struct PairOptions {
 
 /// What one pair cost and did.
 struct PairStats {
-  int iterations = 0;            ///< K, steps to convergence (0 without a morph)
+  int iterations = 0;  ///< K, steps to convergence (0 without a morph)
   bool hitMaxIterations = false;
-  double timeStep = 0;           ///< Δt (CFL)
-  double finalCriterion = 0;     ///< eq. 3.13 at the last step
+  double timeStep = 0;        ///< Δt (CFL)
+  double finalCriterion = 0;  ///< eq. 3.13 at the last step
   int workWidth = 0, workHeight = 0;
-  bool centred = false;          ///< the contours were centred (PairOptions::centre and it helped)
+  bool centred = false;  ///< the contours were centred (PairOptions::centre and it helped)
   std::int64_t particles = 0, discardedParticles = 0, escapedParticles = 0;  ///< PLS; escaped summed over steps
   /// Mean over the slices of |p - s|, p the fraction of the swept area (A Δ B,
   /// centred) the slice covers at fraction s: 0 is perfectly uniform progress.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/morph/particle_level_set.h"
 
 #include <algorithm>
@@ -9,9 +11,7 @@ namespace isovdb::morph {
 
 namespace {
 
-bool inDomain(const Field2& f, double x, double y) {
-  return x >= 0 && y >= 0 && x <= f.width - 1 && y <= f.height - 1;
-}
+bool inDomain(const Field2& f, double x, double y) { return x >= 0 && y >= 0 && x <= f.width - 1 && y <= f.height - 1; }
 
 /// Unit normal ∇φ/|∇φ| by bilinear interpolation of central differences; (1/√2, 1/√2)
 /// where the gradient vanishes (paper eq. 3.18).

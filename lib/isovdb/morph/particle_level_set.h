@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file particle_level_set.h
 /// @brief Particle level set correction of a 2-D morph (Enright et al.; paper 002
 ///        §3.3.13, Alg. 3.2 and 3.3): marker particles on both sides of the front
@@ -16,10 +18,10 @@
 namespace isovdb::morph {
 
 struct ParticleOptions {
-  int perCell = 16;             ///< particles seeded per cell near the front (half positive, half negative)
-  double band = 3.0;            ///< seed in cells with a corner |φ| < band (pixels)
-  int attractionIterations = 10;///< Alg. 3.2: tries before a particle is discarded
-  std::uint64_t seed = 1;       ///< random seed (each pair derives its own from it)
+  int perCell = 16;               ///< particles seeded per cell near the front (half positive, half negative)
+  double band = 3.0;              ///< seed in cells with a corner |φ| < band (pixels)
+  int attractionIterations = 10;  ///< Alg. 3.2: tries before a particle is discarded
+  std::uint64_t seed = 1;         ///< random seed (each pair derives its own from it)
 };
 
 struct Particle {

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file plane.h
 /// @brief The two 2-D value types of the morph stage: a binary slice (Mask2) and a
 ///        scalar field on the same pixel grid (Field2), with bilinear sampling.
@@ -58,7 +60,8 @@ struct Field2 {
     const int y0 = std::min(static_cast<int>(cy), height - 2 < 0 ? 0 : height - 2);
     const int x1 = std::min(x0 + 1, width - 1), y1 = std::min(y0 + 1, height - 1);
     const double fx = cx - x0, fy = cy - y0;
-    const double v = (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x1, y0)) + fy * ((1 - fx) * at(x0, y1) + fx * at(x1, y1));
+    const double v =
+        (1 - fy) * ((1 - fx) * at(x0, y0) + fx * at(x1, y0)) + fy * ((1 - fx) * at(x0, y1) + fx * at(x1, y1));
     return static_cast<float>(v + beyond);
   }
 };

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/morph/reconstruct.h"
 
 #include <tbb/parallel_for.h>
@@ -40,9 +42,8 @@ Reconstruction reconstruct(const SliceStack& stack, const ReconstructOptions& op
   {
     ProgressStage stage(interrupter, "slice distances");
     const auto start = std::chrono::steady_clock::now();
-    tbb::parallel_for(std::size_t(0), n, [&](std::size_t i) {
-      out.planes[out.originalPlane[i]] = signedDistance(stack.slices[i].mask);
-    });
+    tbb::parallel_for(std::size_t(0), n,
+                      [&](std::size_t i) { out.planes[out.originalPlane[i]] = signedDistance(stack.slices[i].mask); });
     out.sdfSeconds = secondsSince(start);
   }
   {
@@ -58,11 +59,12 @@ Reconstruction reconstruct(const SliceStack& stack, const ReconstructOptions& op
       const int za = out.originalPlane[i], zb = out.originalPlane[i + 1];
       const double ha = stack.slices[i].height, hb = stack.slices[i + 1].height;
       std::vector<double> fractions;
-      for (int z = za + 1; z < zb; ++z) fractions.push_back(std::clamp((out.planeHeights[z] - ha) / (hb - ha), 0.0, 1.0));
+      for (int z = za + 1; z < zb; ++z)
+        fractions.push_back(std::clamp((out.planeHeights[z] - ha) / (hb - ha), 0.0, 1.0));
       PairOptions pair = options.pair;
       pair.particleOptions.seed = options.pair.particleOptions.seed * 0x9E3779B97F4A7C15ull + i;
-      PairResult result = morphPair(stack.slices[i].mask, stack.slices[i + 1].mask, out.planes[za], out.planes[zb],
-                                    fractions, pair);
+      PairResult result =
+          morphPair(stack.slices[i].mask, stack.slices[i + 1].mask, out.planes[za], out.planes[zb], fractions, pair);
       for (std::size_t j = 0; j < result.slices.size(); ++j) out.planes[za + 1 + j] = std::move(result.slices[j]);
       out.pairs[i] = result.stats;
       const int finished = ++done;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file reconstruct.h
 /// @brief A sparse slice stack → the completed stack (originals + intermediate
 ///        slices at every voxel plane between them) → one 3-D distance field.
@@ -23,11 +25,11 @@ struct ReconstructOptions {
 };
 
 struct Reconstruction {
-  volume::Volume volume;            ///< DistanceField, voxels, NEGATIVE inside; geometry in world units
-  std::vector<Field2> planes;       ///< every plane's 2-D signed distance, bottom to top
-  std::vector<double> planeHeights; ///< world z of each plane
-  std::vector<int> originalPlane;   ///< plane index of each original slice
-  std::vector<PairStats> pairs;     ///< one per consecutive pair of originals
+  volume::Volume volume;             ///< DistanceField, voxels, NEGATIVE inside; geometry in world units
+  std::vector<Field2> planes;        ///< every plane's 2-D signed distance, bottom to top
+  std::vector<double> planeHeights;  ///< world z of each plane
+  std::vector<int> originalPlane;    ///< plane index of each original slice
+  std::vector<PairStats> pairs;      ///< one per consecutive pair of originals
   double sdfSeconds = 0, morphSeconds = 0, assemblySeconds = 0;
 };
 

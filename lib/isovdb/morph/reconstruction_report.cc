@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/morph/reconstruction_report.h"
 
 #include <string>
@@ -15,9 +17,12 @@ std::optional<Interpolation> parseInterpolation(std::string_view name) {
 
 std::string_view interpolationName(Interpolation interpolation) {
   switch (interpolation) {
-    case Interpolation::LevelSet: return "levelset";
-    case Interpolation::Nearest: return "nearest";
-    case Interpolation::Linear: return "linear";
+    case Interpolation::LevelSet:
+      return "levelset";
+    case Interpolation::Nearest:
+      return "nearest";
+    case Interpolation::Linear:
+      return "linear";
   }
   return "?";
 }
@@ -31,9 +36,12 @@ std::optional<Progress> parseProgress(std::string_view name) {
 
 std::string_view progressName(Progress progress) {
   switch (progress) {
-    case Progress::Exponential: return "exponential";
-    case Progress::Arrival: return "arrival";
-    case Progress::Iterations: return "iterations";
+    case Progress::Exponential:
+      return "exponential";
+    case Progress::Arrival:
+      return "arrival";
+    case Progress::Iterations:
+      return "iterations";
   }
   return "?";
 }

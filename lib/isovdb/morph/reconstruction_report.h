@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file reconstruction_report.h
 /// @brief The slice-morph front ends' shared vocabulary: the names of the
 ///        interpolation and progress modes, and the figures of a reconstruction

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/morph/slice_image.h"
 
 #include <stb_image.h>
@@ -24,8 +26,8 @@ Mask2 readSliceImage(const std::filesystem::path& path) {
   if (!in) throw IoError("'" + path.string() + "': cannot open slice image (no such file or not readable)");
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   int width = 0, height = 0, channels = 0;
-  stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), static_cast<int>(bytes.size()),
-                                          &width, &height, &channels, 1);
+  stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
+                                          static_cast<int>(bytes.size()), &width, &height, &channels, 1);
   if (!pixels)
     throw InputError("'" + path.string() + "': not a readable PNG or BMP image (" + stbi_failure_reason() + ")");
   Mask2 dark = Mask2::empty(width, height);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file slice_image.h
 /// @brief Reading a monochrome slice image (PNG or BMP, 1-bit included) as the
 ///        object's inside, and writing a slice back as a PNG.

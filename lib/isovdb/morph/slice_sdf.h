@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file slice_sdf.h
 /// @brief Signed distance of one slice, with OpenVDB's fast sweeping (paper 002 §3.3.3).
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/morph/slice_stack.h"
 
 #include <algorithm>
@@ -90,8 +92,7 @@ void checkIncreasing(const std::vector<double>& heights, const std::string& what
 
 SliceStack loadSliceDirectory(const std::filesystem::path& dir, const SliceDirectoryOptions& options) {
   std::error_code ec;
-  if (!std::filesystem::is_directory(dir, ec))
-    throw IoError("'" + dir.string() + "': no such slice folder");
+  if (!std::filesystem::is_directory(dir, ec)) throw IoError("'" + dir.string() + "': no such slice folder");
   if (options.heightsFile.empty() == (options.spacing <= 0))
     throw InputError("'" + dir.string() + "': give either --heights FILE or --spacing DZ (> 0)");
   if (!(options.pixelSize > 0)) throw InputError("--pixel-size must be > 0");
@@ -99,16 +100,15 @@ SliceStack loadSliceDirectory(const std::filesystem::path& dir, const SliceDirec
   for (const auto& entry : std::filesystem::directory_iterator(dir))
     if (entry.is_regular_file() && isSliceImagePath(entry.path())) files.push_back(entry.path());
   if (files.empty()) throw InputError("'" + dir.string() + "': no slice images (.png or .bmp) in the folder");
-  std::sort(files.begin(), files.end(), [](const auto& a, const auto& b) {
-    return naturalLess(a.filename().string(), b.filename().string());
-  });
+  std::sort(files.begin(), files.end(),
+            [](const auto& a, const auto& b) { return naturalLess(a.filename().string(), b.filename().string()); });
 
   std::vector<double> heights;
   if (!options.heightsFile.empty()) {
     heights = readHeights(options.heightsFile);
     if (heights.size() != files.size())
-      throw InputError("'" + options.heightsFile.string() + "': " + std::to_string(heights.size()) +
-                       " heights for " + std::to_string(files.size()) + " slice images in '" + dir.string() + "'");
+      throw InputError("'" + options.heightsFile.string() + "': " + std::to_string(heights.size()) + " heights for " +
+                       std::to_string(files.size()) + " slice images in '" + dir.string() + "'");
     checkIncreasing(heights, "'" + options.heightsFile.string() + "'");
   } else {
     for (std::size_t i = 0; i < files.size(); ++i) heights.push_back(static_cast<double>(i) * options.spacing);
@@ -127,8 +127,7 @@ SliceStack sliceStackFromVolume(const volume::Volume& volume, const VolumeSliceO
   if (volume.kind() != volume::VolumeKind::Mask)
     throw InputError("'" + volume.name() + "': slices come from a binary volume (use --threshold or --labels)");
   const volume::Geometry& g = volume.geometry();
-  if (g.spacing[0] != g.spacing[1])
-    throw InputError("'" + volume.name() + "': slices need equal x and y spacing");
+  if (g.spacing[0] != g.spacing[1]) throw InputError("'" + volume.name() + "': slices need equal x and y spacing");
   if (options.step < 0 || options.offset < 0) throw InputError("--slice-step and --slice-offset must be >= 0");
   const volume::MaskGrid& grid = volume::maskGrid(volume);
   volume::IndexBox box;

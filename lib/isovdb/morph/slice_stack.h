@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file slice_stack.h
 /// @brief A stack of parallel planar slices (binary, one canvas size) with their
 ///        heights, read from a folder of images or from a sparse-z binary volume.

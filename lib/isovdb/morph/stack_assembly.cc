@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/morph/stack_assembly.h"
 
 #include <openvdb/tools/FastSweeping.h>
@@ -34,8 +36,15 @@ volume::Volume assembleStack(const std::vector<Field2>& planes, float halfWidth,
           // A sign change to a neighbour must be seen even where both are far from
           // the in-plane boundary (a slice ending above a wide inside region).
           for (int d = 0; d < 6 && !keep; ++d) {
-            const int dx = d == 0 ? -1 : d == 1 ? 1 : 0, dy = d == 2 ? -1 : d == 3 ? 1 : 0,
-                      dz = d == 4 ? -1 : d == 5 ? 1 : 0;
+            const int dx = d == 0   ? -1
+                           : d == 1 ? 1
+                                    : 0,
+                      dy = d == 2   ? -1
+                           : d == 3 ? 1
+                                    : 0,
+                      dz = d == 4   ? -1
+                           : d == 5 ? 1
+                                    : 0;
             keep = (value(x + dx, y + dy, z + dz) <= 0) != (v <= 0);
           }
           if (keep) acc.setValueOn(openvdb::Coord(x, y, z), v);

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file stack_assembly.h
 /// @brief The completed stack of 2-D signed distances → one 3-D narrow-band signed
 ///        distance field (an isovdb DistanceField volume) that the engine contours.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/octree/build.h"
 
 #include <tbb/blocked_range.h>
@@ -70,10 +72,10 @@ struct Evaluation {
   bool split = false;
   bool classified = false;
   bool complex = false;
-  bool geometric = false;  // split only because of the QEF criterion
-  bool feature = false;    // of those, because of the sharp-feature gap
-  bool multiSheet = false; // split only because one vertex cannot stand for the cell (adaptive)
-  bool hidden = false;     // split only because of a component hidden inside (adaptive)
+  bool geometric = false;   // split only because of the QEF criterion
+  bool feature = false;     // of those, because of the sharp-feature gap
+  bool multiSheet = false;  // split only because one vertex cannot stand for the cell (adaptive)
+  bool hidden = false;      // split only because of a component hidden inside (adaptive)
   bool interiorOnly = false;
   std::uint8_t complexEdges = 0;
   std::uint8_t complexFaces = 0;
@@ -82,7 +84,10 @@ struct Evaluation {
 class Builder {
  public:
   Builder(const MetaCellSamples& samples, const OctreeOptions& options, OctreeDepths depths)
-      : samples_(samples), options_(options), depths_(depths), phases_(samples, options.iso),
+      : samples_(samples),
+        options_(options),
+        depths_(depths),
+        phases_(samples, options.iso),
         leavesAtDepth_(static_cast<std::size_t>(depths.maxDepth) + 1) {
     classify_.detectInteriorComponents = options.detectInteriorComponents;
   }
@@ -253,7 +258,8 @@ class Builder {
         nodes.reserve(internal.size() + leavesAtDepth_[static_cast<std::size_t>(depth) + 1].size() / 8 + 1);
         for (const MortonKey k : internal) nodes.push_back(parentKey(k));
         for (const std::int32_t li : leavesAtDepth_[static_cast<std::size_t>(depth) + 1])
-          if (alive_[static_cast<std::size_t>(li)]) nodes.push_back(parentKey(records_[static_cast<std::size_t>(li)].leaf.key));
+          if (alive_[static_cast<std::size_t>(li)])
+            nodes.push_back(parentKey(records_[static_cast<std::size_t>(li)].leaf.key));
         std::sort(nodes.begin(), nodes.end());
         nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
         for (const MortonKey node : nodes)
@@ -367,14 +373,14 @@ OctreeDepths resolveDepths(const OctreeOptions& options, int metaCellSize) {
   d.maxDepth = options.finestCellSize > 0 ? checkedDepth(metaCellSize, options.finestCellSize, "finestCellSize")
                : options.maxDepth < 0     ? finest
                                           : options.maxDepth;
-  d.minDepth = options.maxCellSize > 0 ? checkedDepth(metaCellSize, options.maxCellSize, "maxCellSize")
-                                       : options.minDepth;
+  d.minDepth =
+      options.maxCellSize > 0 ? checkedDepth(metaCellSize, options.maxCellSize, "maxCellSize") : options.minDepth;
   if (d.maxDepth > finest)
     throw InputError("octree options: maxDepth: expected at most " + std::to_string(finest) + " (1-voxel cells), got " +
                      std::to_string(d.maxDepth));
   if (d.minDepth < 0 || d.minDepth > d.maxDepth)
-    throw InputError("octree options: minDepth: expected in [0, maxDepth = " + std::to_string(d.maxDepth) +
-                     "], got " + std::to_string(d.minDepth));
+    throw InputError("octree options: minDepth: expected in [0, maxDepth = " + std::to_string(d.maxDepth) + "], got " +
+                     std::to_string(d.minDepth));
   return d;
 }
 

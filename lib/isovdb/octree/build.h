@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file build.h
 /// @brief Top-down construction of a meta-cell's linear octree with the
 ///        topological criteria, regular or adaptive (paper 000, section 4.2.1).
@@ -39,10 +41,10 @@ enum class OctreeConstruction {
 /// has cells of S >> d voxels. Cell-size fields, when > 0, override the depths.
 struct OctreeOptions {
   OctreeConstruction construction = OctreeConstruction::Adaptive;  ///< regular or adaptive construction
-  int minDepth = 2;         ///< uniform subdivision down to this depth (CLI --min-level); larger = more small leaves
-  int maxDepth = -1;        ///< deepest depth (CLI --max-level); -1 = 1-voxel cells
-  int maxCellSize = 0;      ///< if > 0: largest leaf size in voxels (power of two), overrides minDepth
-  int finestCellSize = 0;   ///< if > 0: smallest leaf size in voxels (power of two), overrides maxDepth
+  int minDepth = 2;            ///< uniform subdivision down to this depth (CLI --min-level); larger = more small leaves
+  int maxDepth = -1;           ///< deepest depth (CLI --max-level); -1 = 1-voxel cells
+  int maxCellSize = 0;         ///< if > 0: largest leaf size in voxels (power of two), overrides minDepth
+  int finestCellSize = 0;      ///< if > 0: smallest leaf size in voxels (power of two), overrides maxDepth
   float qefTolerance = -1.0f;  ///< adaptive only: also subdivide a surface leaf whose dual vertex is farther
                                ///< than this RMS distance (voxels) from its tangent planes; < 0 = off
   float singularValueThreshold = 0.1f;  ///< QEF truncation used by the geometric criterion (see contour::QefOptions)
@@ -53,11 +55,11 @@ struct OctreeOptions {
   /// planes of a coarse leaf meet outside the rim, with an almost exact fit. Contouring must
   /// use the same setting (contour::AdaptiveContourOptions::sharpFeatures).
   bool sharpFeatures = false;
-  float featureTolerance = 0.05f;       ///< voxels; see sharpFeatures
-  float iso = 0.0f;                     ///< isovalue; a sample is inside iff value <= iso
-  bool detectInteriorComponents = true; ///< a cell with one-phase faces but a sample of the other phase inside
-                                        ///< is complex (catches blobs that touch no face; one pass over such cells)
-  bool parallel = true;                 ///< evaluate each level's cells with TBB (the result is the same)
+  float featureTolerance = 0.05f;        ///< voxels; see sharpFeatures
+  float iso = 0.0f;                      ///< isovalue; a sample is inside iff value <= iso
+  bool detectInteriorComponents = true;  ///< a cell with one-phase faces but a sample of the other phase inside
+                                         ///< is complex (catches blobs that touch no face; one pass over such cells)
+  bool parallel = true;                  ///< evaluate each level's cells with TBB (the result is the same)
 };
 
 /// Depths after resolving cell sizes against the meta-cell size.
@@ -73,18 +75,18 @@ OctreeDepths resolveDepths(const OctreeOptions& options, int metaCellSize);
 /// What the construction did (figures for statistics and tests).
 struct OctreeBuildStats {
   std::vector<std::size_t> cellsClassified;  ///< per depth: cells whose criteria were evaluated
-  std::size_t complexEdges = 0;          ///< complex cell edges found (an edge shared by k cells counts k times)
-  std::size_t complexFaces = 0;          ///< complex cell faces found (same)
-  std::size_t interiorComponents = 0;    ///< cells complex only through an interior component
-  std::size_t complexCells = 0;          ///< complex cells found (subdivided or left at the maximum depth)
-  std::size_t unresolvedComplexLeaves = 0;  ///< complex leaves at the maximum depth
-  std::size_t geometricSplits = 0;       ///< cells subdivided by the QEF criterion
-  std::size_t featureSplits = 0;         ///< of them, by the sharp-feature gap (OctreeOptions::sharpFeatures)
-  std::size_t multiSheetSplits = 0;      ///< adaptive: cells subdivided because their configuration has several
-                                         ///< DMC groups or a doubled ambiguous face (one vertex cannot stand for them)
-  std::size_t hiddenComponentSplits = 0; ///< adaptive: cells subdivided because a component of samples hides
-                                         ///< inside them (criteria.h, hasHiddenComponent)
-  std::size_t balanceSplits = 0;         ///< cells subdivided to restore 2:1 balance
+  std::size_t complexEdges = 0;              ///< complex cell edges found (an edge shared by k cells counts k times)
+  std::size_t complexFaces = 0;              ///< complex cell faces found (same)
+  std::size_t interiorComponents = 0;        ///< cells complex only through an interior component
+  std::size_t complexCells = 0;              ///< complex cells found (subdivided or left at the maximum depth)
+  std::size_t unresolvedComplexLeaves = 0;   ///< complex leaves at the maximum depth
+  std::size_t geometricSplits = 0;           ///< cells subdivided by the QEF criterion
+  std::size_t featureSplits = 0;             ///< of them, by the sharp-feature gap (OctreeOptions::sharpFeatures)
+  std::size_t multiSheetSplits = 0;          ///< adaptive: cells subdivided because their configuration has several
+                                     ///< DMC groups or a doubled ambiguous face (one vertex cannot stand for them)
+  std::size_t hiddenComponentSplits = 0;  ///< adaptive: cells subdivided because a component of samples hides
+                                          ///< inside them (criteria.h, hasHiddenComponent)
+  std::size_t balanceSplits = 0;          ///< cells subdivided to restore 2:1 balance
 };
 
 /// @brief Builds the octree of one meta-cell.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/octree/criteria.h"
 
 #include <algorithm>
@@ -61,8 +63,8 @@ bool floodReachesAll(const std::uint64_t* phase, std::uint64_t* reached, int row
 /// their border samples: true if some sample of either phase is not connected to
 /// the border. The border is the first and last row of each slice, the first and
 /// last slice when there are several, and the first and last bit of every row.
-bool hasUnreachedSamples(const std::vector<std::uint64_t>& rows, int n, int slices,
-                         std::vector<std::uint64_t>& phase, std::vector<std::uint64_t>& reached) {
+bool hasUnreachedSamples(const std::vector<std::uint64_t>& rows, int n, int slices, std::vector<std::uint64_t>& phase,
+                         std::vector<std::uint64_t>& reached) {
   const std::uint64_t full = SamplePhases::lowBits(n);
   const std::uint64_t ends = 1u | (std::uint64_t{1} << (n - 1));
   phase.resize(rows.size());
@@ -247,17 +249,16 @@ bool hasHiddenComponent(const SamplePhases& phases, std::array<int, 3> origin, i
       }
     }
   }
-  const std::size_t interior = static_cast<std::size_t>(size - 1) * static_cast<std::size_t>(size - 1) *
-                               static_cast<std::size_t>(size - 1);
+  const std::size_t interior =
+      static_cast<std::size_t>(size - 1) * static_cast<std::size_t>(size - 1) * static_cast<std::size_t>(size - 1);
   return queue.size() != interior;
 }
 
-std::uint8_t cellCornerSigns(const MetaCellSamples& samples, std::array<int, 3> origin, int size,
-                             float iso) noexcept {
+std::uint8_t cellCornerSigns(const MetaCellSamples& samples, std::array<int, 3> origin, int size, float iso) noexcept {
   std::uint8_t signs = 0;
   for (int c = 0; c < 8; ++c) {
-    const float v = samples.value(origin[0] + (c & 1) * size, origin[1] + ((c >> 1) & 1) * size,
-                                  origin[2] + ((c >> 2) & 1) * size);
+    const float v =
+        samples.value(origin[0] + (c & 1) * size, origin[1] + ((c >> 1) & 1) * size, origin[2] + ((c >> 2) & 1) * size);
     if (isInside(v, iso)) signs = static_cast<std::uint8_t>(signs | (1u << c));
   }
   return signs;
@@ -341,4 +342,3 @@ CellTopology classifyCell(const SamplePhases& phases, std::array<int, 3> origin,
 }
 
 }  // namespace isovdb::octree
-

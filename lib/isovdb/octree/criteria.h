@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file criteria.h
 /// @brief Topological subdivision criteria of an octree cell, evaluated on the
 ///        voxel samples of its edges and faces (paper 000, section 4.2.1, Fig. 4.3).
@@ -69,18 +71,18 @@ class FaceLabeller {
 
 /// Options of classifyCell.
 struct CellClassifyOptions {
-  bool detectInteriorComponents = true; ///< scan the interior of cells whose faces are all one phase
-                                        ///< (costs one pass over those cells' samples)
+  bool detectInteriorComponents = true;  ///< scan the interior of cells whose faces are all one phase
+                                         ///< (costs one pass over those cells' samples)
 };
 
 /// @brief Topological classification of one cell.
 struct CellTopology {
-  std::uint8_t cornerSigns = 0;      ///< bit c set iff corner c is inside
-  std::uint16_t complexEdges = 0;    ///< bit e set iff cell edge e is complex
-  std::uint8_t complexFaces = 0;     ///< bit f set iff face f is complex (only evaluated when no edge is complex)
-  bool boundaryUniform = false;      ///< all samples on the cell's faces are one phase
-  bool interiorComponent = false;    ///< boundary uniform but an interior sample has the other phase
-  bool facesEvaluated = false;       ///< faces were labelled (no complex edge)
+  std::uint8_t cornerSigns = 0;    ///< bit c set iff corner c is inside
+  std::uint16_t complexEdges = 0;  ///< bit e set iff cell edge e is complex
+  std::uint8_t complexFaces = 0;   ///< bit f set iff face f is complex (only evaluated when no edge is complex)
+  bool boundaryUniform = false;    ///< all samples on the cell's faces are one phase
+  bool interiorComponent = false;  ///< boundary uniform but an interior sample has the other phase
+  bool facesEvaluated = false;     ///< faces were labelled (no complex edge)
 
   /// Complex cell: a complex edge, a complex face, or (if detected) an interior component.
   bool isComplex() const noexcept { return complexEdges != 0 || complexFaces != 0 || interiorComponent; }
@@ -104,8 +106,7 @@ CellTopology classifyCell(const SamplePhases& phases, std::array<int, 3> origin,
 bool hasHiddenComponent(const SamplePhases& phases, std::array<int, 3> origin, int size);
 
 /// @brief 8-bit corner sign configuration of a cell (bit c set iff corner c inside).
-std::uint8_t cellCornerSigns(const MetaCellSamples& samples, std::array<int, 3> origin, int size,
-                             float iso) noexcept;
+std::uint8_t cellCornerSigns(const MetaCellSamples& samples, std::array<int, 3> origin, int size, float iso) noexcept;
 /// @brief The same, read from the phases.
 std::uint8_t cellCornerSigns(const SamplePhases& phases, std::array<int, 3> origin, int size) noexcept;
 

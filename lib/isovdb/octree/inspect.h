@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file inspect.h
 /// @brief Figures and a wireframe of an octree, for statistics, tests and debugging.
 #pragma once

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/octree/linear_octree.h"
 
 #include <algorithm>
@@ -17,9 +19,8 @@ LinearOctree::LinearOctree(int metaCellSize, std::array<int, 3> metaCellOrigin, 
   codes_.resize(leaves_.size());
   for (std::size_t i = 0; i < leaves_.size(); ++i) codes_[i] = zOrderCode(leaves_[i].key, fd);
   if (!std::is_sorted(codes_.begin(), codes_.end())) {  // the octree builder hands them in order already
-    std::sort(leaves_.begin(), leaves_.end(), [fd](const OctreeLeaf& a, const OctreeLeaf& b) {
-      return zOrderCode(a.key, fd) < zOrderCode(b.key, fd);
-    });
+    std::sort(leaves_.begin(), leaves_.end(),
+              [fd](const OctreeLeaf& a, const OctreeLeaf& b) { return zOrderCode(a.key, fd) < zOrderCode(b.key, fd); });
     for (std::size_t i = 0; i < leaves_.size(); ++i) codes_[i] = zOrderCode(leaves_[i].key, fd);
   }
 #ifndef NDEBUG

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file linear_octree.h
 /// @brief The linear (pointerless) octree of one meta-cell: its leaves sorted in
 ///        Z order, found by binary search on Morton keys (paper 000, section 4.2.1).
@@ -28,18 +30,18 @@ constexpr int depthForCellSize(int metaCellSize, int cellSize) noexcept {
 
 /// @brief One leaf cell.
 struct OctreeLeaf {
-  MortonKey key = kInvalidKey;        ///< Morton key (root = 1)
-  std::array<int, 3> origin{0, 0, 0}; ///< min corner, meta-cell offsets in voxels
-  int size = 0;                       ///< side in voxels (S >> depth)
-  std::uint8_t depth = 0;             ///< depth under the meta-cell root
-  std::uint8_t cornerSigns = 0;       ///< bit c set iff corner c is inside (value <= iso); corner bits as octants
-  bool surface = false;               ///< the surface crosses the leaf (its samples are not all one phase)
-  bool complex = false;               ///< still topologically complex (only at the maximum depth)
+  MortonKey key = kInvalidKey;         ///< Morton key (root = 1)
+  std::array<int, 3> origin{0, 0, 0};  ///< min corner, meta-cell offsets in voxels
+  int size = 0;                        ///< side in voxels (S >> depth)
+  std::uint8_t depth = 0;              ///< depth under the meta-cell root
+  std::uint8_t cornerSigns = 0;        ///< bit c set iff corner c is inside (value <= iso); corner bits as octants
+  bool surface = false;                ///< the surface crosses the leaf (its samples are not all one phase)
+  bool complex = false;                ///< still topologically complex (only at the maximum depth)
   /// The dual vertex the adaptive construction's geometric criterion placed (QEF of
   /// all bipolar edges, global voxel index coordinates), which contouring reuses.
   std::array<float, 3> vertex{0.0f, 0.0f, 0.0f};
-  float vertexTruncation = -1.0f;     ///< QEF truncation `vertex` was placed with; < 0: none placed
-  bool vertexSharpFeatures = false;   ///< `vertex` was placed with sharp features (crease_crossing.h)
+  float vertexTruncation = -1.0f;    ///< QEF truncation `vertex` was placed with; < 0: none placed
+  bool vertexSharpFeatures = false;  ///< `vertex` was placed with sharp features (crease_crossing.h)
 
   /// Edges whose two corners differ in sign (bit e, numbering of morton.h).
   std::uint16_t bipolarEdges() const noexcept { return bipolarEdgeMask(cornerSigns); }

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/octree/meta_cell_samples.h"
 
 #include <algorithm>
@@ -14,8 +16,7 @@ void MetaCellSamples::allocate(int newSize, std::array<int, 3> newOrigin, float 
 
 void MetaCellSamples::reshape(int newSize, std::array<int, 3> newOrigin, int newApron) {
   if (newSize < 1 || newSize > (1 << 16) || (newSize & (newSize - 1)) != 0)
-    throw InputError("meta-cell size: expected a power of two in [1, 65536], got " +
-                     std::to_string(newSize));
+    throw InputError("meta-cell size: expected a power of two in [1, 65536], got " + std::to_string(newSize));
   if (newApron < 1 || newApron > newSize)
     throw InputError("meta-cell apron: expected 1.." + std::to_string(newSize) + " samples, got " +
                      std::to_string(newApron));

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file meta_cell_samples.h
 /// @brief The dense sample block of one meta-cell, the only dense array the
 ///        contouring engine holds (paper 000, section 4.1–4.2).
@@ -27,10 +29,10 @@ inline bool isInside(float value, float iso) noexcept { return value <= iso; }
 
 /// @brief Dense samples of one meta-cell (S + 1 shared samples plus a 1-sample apron per side).
 struct MetaCellSamples {
-  int size = 0;                         ///< S, cells per axis (power of two); 0 = empty
-  int apron = 1;                        ///< A, samples beyond the shared ones on each side (>= 1)
-  std::array<int, 3> origin{0, 0, 0};   ///< index coordinate of the sample at offset (0,0,0)
-  std::vector<float> values;            ///< (S + 1 + 2A)^3 values, offsets -A..S+A, x fastest
+  int size = 0;                        ///< S, cells per axis (power of two); 0 = empty
+  int apron = 1;                       ///< A, samples beyond the shared ones on each side (>= 1)
+  std::array<int, 3> origin{0, 0, 0};  ///< index coordinate of the sample at offset (0,0,0)
+  std::vector<float> values;           ///< (S + 1 + 2A)^3 values, offsets -A..S+A, x fastest
 
   /// Samples per axis including the apron (S + 1 + 2A).
   int stride() const noexcept { return size + 1 + 2 * apron; }

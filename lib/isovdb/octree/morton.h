@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file morton.h
 /// @brief Morton keys of a linear octree: encode/decode, parent/child, and
 ///        neighbour lookup by dilated-integer arithmetic on the key itself.
@@ -68,9 +70,7 @@ constexpr MortonKey parentKey(MortonKey key) noexcept { return key >> 3; }
 constexpr int octantOf(MortonKey key) noexcept { return static_cast<int>(key & 7); }
 
 /// @brief Ancestor of `key` at depth `depth` (<= keyDepth(key)).
-constexpr MortonKey ancestorKey(MortonKey key, int depth) noexcept {
-  return key >> (3 * (keyDepth(key) - depth));
-}
+constexpr MortonKey ancestorKey(MortonKey key, int depth) noexcept { return key >> (3 * (keyDepth(key) - depth)); }
 
 /// @brief True if `ancestor` is `key` or one of its ancestors.
 constexpr bool isAncestorOrSelf(MortonKey ancestor, MortonKey key) noexcept {

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file sample_phases.h
 /// @brief The inside/outside bit of every sample of a meta-cell, the only thing
 ///        the octree's topological criteria read (criteria.h).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file surface_gap.h
 /// @brief How far a point must at least be from the zero level of a distance
 ///        field, judged from the samples of a cell (the refinement criterion

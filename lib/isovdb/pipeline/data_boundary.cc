@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/pipeline/data_boundary.h"
 
 #include <algorithm>
@@ -53,8 +55,7 @@ std::string_view boundaryModeName(BoundaryMode mode) { return mode == BoundaryMo
 
 std::int64_t applyDataBoundary(mesh::Mesh& mesh, const volume::IndexBox& box, BoundaryMode mode) {
   for (mesh::Vec3f& p : mesh.positions)
-    for (int a = 0; a < 3; ++a)
-      p[a] = std::clamp(p[a], static_cast<float>(box.min[a]), static_cast<float>(box.max[a]));
+    for (int a = 0; a < 3; ++a) p[a] = std::clamp(p[a], static_cast<float>(box.min[a]), static_cast<float>(box.max[a]));
   if (mode == BoundaryMode::Cap) return 0;
   const auto before = static_cast<std::int64_t>(mesh.triangles.size());
   std::erase_if(mesh.triangles, [&](const mesh::Triangle& tri) { return onOneFace(mesh, tri, box); });

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file data_boundary.h
 /// @brief What a mesh does where its surface reaches the boundary of the sampled data
 ///        (the survey boundary of a seismic cube, the faces of a dense volume).

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/pipeline/extract.h"
 
 #include <tbb/global_control.h>
@@ -36,9 +38,12 @@ contour::RegularTopology regularTopologyFor(const std::optional<contour::Regular
 
 std::string_view contourMethodName(ContourMethod method) {
   switch (method) {
-    case ContourMethod::Vdb: return "vdb";
-    case ContourMethod::Regular: return "regular";
-    case ContourMethod::Adaptive: return "adaptive";
+    case ContourMethod::Vdb:
+      return "vdb";
+    case ContourMethod::Regular:
+      return "regular";
+    case ContourMethod::Adaptive:
+      return "adaptive";
   }
   return "unknown";
 }
@@ -84,17 +89,17 @@ void indexToWorld(mesh::Mesh& mesh, const volume::Geometry& geometry) {
   });
 }
 
-void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::MeshSink& sink,
-                 Interrupter* interrupter, Statistics* stats) {
-  if (options.threads < 0) throw InputError("--threads: expected 0 (every core) or more, got " + std::to_string(options.threads));
+void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::MeshSink& sink, Interrupter* interrupter,
+                 Statistics* stats) {
+  if (options.threads < 0)
+    throw InputError("--threads: expected 0 (every core) or more, got " + std::to_string(options.threads));
   std::optional<tbb::global_control> threads;
   if (options.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, options.threads);
   const float deadBand = volume::deadBandOf(volume);
-  if (volume.kind() == volume::VolumeKind::Scalar && std::abs(options.iso) < deadBand)
-  {
+  if (volume.kind() == volume::VolumeKind::Scalar && std::abs(options.iso) < deadBand) {
     std::ostringstream message;
-    message << "'" << volume.name() << "': --iso " << options.iso << " lies inside the dead band |value| < "
-            << deadBand << " (--clip): choose |iso| >= clip or a smaller --clip";
+    message << "'" << volume.name() << "': --iso " << options.iso << " lies inside the dead band |value| < " << deadBand
+            << " (--clip): choose |iso| >= clip or a smaller --clip";
     throw InputError(message.str());
   }
   const volume::VolumeKind kind = volume.kind();

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file extract.h
 /// @brief The main job: a loaded volume → distance field → contour → mesh in world space.
 ///

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/pipeline/extract_to_file.h"
 
 #include "isovdb/errors.h"
@@ -8,10 +10,9 @@
 
 namespace isovdb::pipeline {
 
-std::uint64_t extractToFile(volume::Volume volume, const ExtractOptions& options,
-                            const std::filesystem::path& path, Interrupter* interrupter, Statistics* stats) {
-  if (!io::isMeshPath(path))
-    throw InputError("'" + path.string() + "': unknown mesh format, expected .ply or .obj");
+std::uint64_t extractToFile(volume::Volume volume, const ExtractOptions& options, const std::filesystem::path& path,
+                            Interrupter* interrupter, Statistics* stats) {
+  if (!io::isMeshPath(path)) throw InputError("'" + path.string() + "': unknown mesh format, expected .ply or .obj");
   io::AtomicFile::checkWritable(path);
   const bool stream = options.method != ContourMethod::Vdb && io::lowerExtension(path) == ".ply";
   if (stream) {

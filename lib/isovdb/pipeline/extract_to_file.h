@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file extract_to_file.h
 /// @brief The main job straight into a mesh file, as `isovdb extract -o` runs it (the CLI
 ///        and the Python bindings share it, so both write the same bytes).
@@ -18,8 +20,7 @@ namespace isovdb::pipeline {
 /// @return the number of triangles written
 /// @throw InputError for another extension or invalid options; IoError when the path
 ///        is not writable (checked before the work starts); Interrupted on cancellation.
-std::uint64_t extractToFile(volume::Volume volume, const ExtractOptions& options,
-                            const std::filesystem::path& path, Interrupter* interrupter = nullptr,
-                            Statistics* stats = nullptr);
+std::uint64_t extractToFile(volume::Volume volume, const ExtractOptions& options, const std::filesystem::path& path,
+                            Interrupter* interrupter = nullptr, Statistics* stats = nullptr);
 
 }  // namespace isovdb::pipeline

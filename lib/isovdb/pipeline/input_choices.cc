@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/pipeline/input_choices.h"
 
 #include <cmath>
@@ -29,8 +31,10 @@ InputOptions resolveInputChoices(const std::filesystem::path& path, const InputC
                        std::to_string(hi));
     options.rule = volume::MaskRule{.test = volume::MaskTest::Between, .threshold = lo, .upper = hi, .labels = {}};
   }
-  if (ownMask) options.denseAs = DenseAs::Mask;
-  else if (options.segy && !otherMask) options.denseAs = DenseAs::Scalar;
+  if (ownMask)
+    options.denseAs = DenseAs::Mask;
+  else if (options.segy && !otherMask)
+    options.denseAs = DenseAs::Scalar;
   return options;
 }
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file input_choices.h
 /// @brief How a front end's input choices (CLI flags, Python keyword arguments) become
 ///        InputOptions, so both resolve them the same way: SEG-Y by flag or extension,
@@ -16,15 +18,15 @@ namespace isovdb::pipeline {
 
 /// What a user said about an input, one field per CLI flag / Python keyword.
 struct InputChoices {
-  std::optional<io::RawOptions> raw;   ///< --dims/--type/...: a headerless raw file
-  std::optional<double> threshold;     ///< --threshold T: mask, inside = value > T
-  std::vector<double> labels;          ///< --labels: mask, inside = value is one of these
-  bool scalar = false;                 ///< --scalar: contour the samples directly
-  std::string grid;                    ///< --grid: .vdb grid name
-  bool segy = false;                   ///< --segy: SEG-Y whatever the extension
-  io::SegyOptions segyBytes;           ///< --inline-byte, --crossline-byte
-  float clip = 0.f;                    ///< --clip: scalars, |value| < clip inactive
-  std::string mask;                    ///< --mask "above A" | "below A"
+  std::optional<io::RawOptions> raw;               ///< --dims/--type/...: a headerless raw file
+  std::optional<double> threshold;                 ///< --threshold T: mask, inside = value > T
+  std::vector<double> labels;                      ///< --labels: mask, inside = value is one of these
+  bool scalar = false;                             ///< --scalar: contour the samples directly
+  std::string grid;                                ///< --grid: .vdb grid name
+  bool segy = false;                               ///< --segy: SEG-Y whatever the extension
+  io::SegyOptions segyBytes;                       ///< --inline-byte, --crossline-byte
+  float clip = 0.f;                                ///< --clip: scalars, |value| < clip inactive
+  std::string mask;                                ///< --mask "above A" | "below A"
   std::optional<std::array<double, 2>> maskRange;  ///< --mask-range LO,HI
 };
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file inspect_octree.h
 /// @brief `isovdb octree`: build the octree of one meta-cell and report it, so a
 ///        person can look at the tree (per-level counts, complex edges and faces,

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/pipeline/load_volume.h"
 
 #include <string>
@@ -34,7 +36,10 @@ void recordGridStats(const volume::Volume& volume, Statistics::Json& section) {
 namespace {
 
 Statistics::Json lineAxisJson(const io::SegyLineAxis& axis) {
-  return {{"first", axis.first}, {"last", axis.last()}, {"step", axis.step}, {"count", axis.count},
+  return {{"first", axis.first},
+          {"last", axis.last()},
+          {"step", axis.step},
+          {"count", axis.count},
           {"spacing", axis.spacing}};
 }
 
@@ -100,8 +105,8 @@ volume::Volume ingest(io::SliceStream& stream, const InputOptions& options, Inte
 
 }  // namespace
 
-volume::Volume loadVolume(const std::filesystem::path& path, const InputOptions& options,
-                          Interrupter* interrupter, Statistics* stats) {
+volume::Volume loadVolume(const std::filesystem::path& path, const InputOptions& options, Interrupter* interrupter,
+                          Statistics* stats) {
   Statistics::StageTimer timer(stats, "read");
   volume::Volume result;
   Statistics::Json input = Statistics::Json::object();

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file load_volume.h
 /// @brief Opens any supported input (raw, NRRD, MetaImage, SEG-Y, .vdb) as a sparse Volume.
 #pragma once
@@ -27,7 +29,7 @@ struct InputOptions {
   /// without it (with the default positions).
   std::optional<io::SegyOptions> segy;
   DenseAs denseAs = DenseAs::Mask;
-  volume::MaskRule rule;              ///< inside test for DenseAs::Mask
+  volume::MaskRule rule;  ///< inside test for DenseAs::Mask
   /// DenseAs::Scalar: clip value. Samples with |value| < clip stay inactive and the
   /// grid's background is the clip value (a quiet amplitude cube costs little).
   /// 0 keeps every sample.
@@ -35,7 +37,7 @@ struct InputOptions {
   /// Also record the samples' range, percentiles and the fraction |value| >= clip
   /// under "input.samples" (gathered during the same read; 12 MiB of histograms).
   bool sampleStatistics = false;
-  std::string gridName;               ///< .vdb: grid to read (empty: first float/bool grid)
+  std::string gridName;  ///< .vdb: grid to read (empty: first float/bool grid)
 };
 
 /// Reads `path` into a Volume, streaming dense files slab by slab and SEG-Y files

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file memory.h
 /// @brief Resident memory of this process, from /proc/self/status (Linux).
 #pragma once

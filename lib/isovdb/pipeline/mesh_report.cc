@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/pipeline/mesh_report.h"
 
 #include "isovdb/io/dense_volume.h"
@@ -57,10 +59,12 @@ std::int64_t solidEulerCharacteristic(const std::filesystem::path& path, const I
   }
   const volume::Volume volume = io::readVdb(path, options.gridName);
   switch (volume.kind()) {
-    case volume::VolumeKind::Mask: return volume::eulerCharacteristic(volume, interrupter, adjacency);
+    case volume::VolumeKind::Mask:
+      return volume::eulerCharacteristic(volume, interrupter, adjacency);
     case volume::VolumeKind::DistanceField:
       return volume::eulerCharacteristic(volume::interiorMask(volume), interrupter, adjacency);
-    case volume::VolumeKind::Scalar: break;
+    case volume::VolumeKind::Scalar:
+      break;
   }
   throw InputError("'" + path.string() + "': a scalar grid has no solid to compare with; use a mask or level set");
 }

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file mesh_report.h
 /// @brief The validator's figures as statistics, and the comparison of a mesh's
 ///        topology with the voxel object it claims to represent.

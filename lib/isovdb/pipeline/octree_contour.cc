@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/pipeline/octree_contour.h"
 
 #include <tbb/enumerable_thread_specific.h>
@@ -105,11 +107,12 @@ contour::MetaCellMesh contourBlock(const octree::MetaCellSamples& samples, const
     totals.seamCells += s.seamCells;
   } else {
     contour::AdaptiveContourStats s;
-    result = contour::contourAdaptiveMetaCell(
-        samples, tree,
-        {.iso = iso, .intersectionFree = options.intersectionFree, .manifoldFix = options.manifoldFix,
-         .sharpFeatures = options.sharpFeatures},
-        &s);
+    result = contour::contourAdaptiveMetaCell(samples, tree,
+                                              {.iso = iso,
+                                               .intersectionFree = options.intersectionFree,
+                                               .manifoldFix = options.manifoldFix,
+                                               .sharpFeatures = options.sharpFeatures},
+                                              &s);
     totals.manifoldFixes += s.manifoldFixes;
     totals.multiVertexCells += s.multiVertexCells;
     totals.boundaryEdges += s.boundaryEdges;
@@ -222,7 +225,8 @@ void contourMetaCells(const volume::Volume& field, const OctreeContourOptions& o
   }
   // Regular mode reads one finest cell beyond the meta-cell, for Wenger's fix across the seam.
   const octree::OctreeDepths depths = octree::resolveDepths(treeOptionsFor(options, s, options.iso), s);
-  const int apron = options.method == OctreeMethod::Regular ? std::max(1, octree::cellSizeAtDepth(s, depths.maxDepth)) : 1;
+  const int apron =
+      options.method == OctreeMethod::Regular ? std::max(1, octree::cellSizeAtDepth(s, depths.maxDepth)) : 1;
 
   const std::size_t tokens =
       std::max<std::size_t>(1, tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
@@ -236,46 +240,46 @@ void contourMetaCells(const volume::Volume& field, const OctreeContourOptions& o
   {
     Statistics::StageTimer timer(stats, "contour_meta_cells");
     ProgressStage progress(interrupter, "contouring meta-cells");
-    tbb::parallel_pipeline(
-        tokens,
-        tbb::make_filter<void, std::shared_ptr<MetaCellJob>>(
-            tbb::filter_mode::serial_in_order,
-            [&](tbb::flow_control& control) -> std::shared_ptr<MetaCellJob> {
-              if (next >= total) {
-                control.stop();
-                return nullptr;
-              }
-              auto job = std::make_shared<MetaCellJob>();
-              job->position = next++;
-              return job;
-            }) &
-            tbb::make_filter<std::shared_ptr<MetaCellJob>, std::shared_ptr<MetaCellJob>>(
-                tbb::filter_mode::parallel,
-                [&](std::shared_ptr<MetaCellJob> job) {
-                  const auto t0 = std::chrono::steady_clock::now();
-                  octree::MetaCellSamples& samples = sampleBlocks.local();
-                  volume::readMetaCell(field, partition.cells[job->position], s, samples, apron);
-                  const float iso = engineIso(field, options.iso, samples);
-                  job->totals.readSeconds += secondsSince(t0);
-                  job->contoured = volume::hasSignChange(samples, iso);
-                  if (job->contoured) job->result = contourBlock(samples, options, iso, job->totals, nullptr);
-                  return job;
-                }) &
-            tbb::make_filter<std::shared_ptr<MetaCellJob>, void>(
-                tbb::filter_mode::serial_in_order, [&](std::shared_ptr<MetaCellJob> job) {
-                  totals.add(job->totals);
-                  if (job->contoured) {
-                    ++contoured;
-                    const auto base = static_cast<std::uint32_t>(sink.vertexCount());
-                    for (mesh::Triangle& t : job->result.mesh.triangles)
-                      for (std::uint32_t& v : t) v += base;
-                    sink.addVertices(job->result.mesh.positions);
-                    sink.addTriangles(job->result.mesh.triangles);
-                    contour::rebaseSeam(job->result.seam, base);
-                    seams.add(partition.cells[job->position], std::move(job->result.seam));
-                  }
-                  progress.update(static_cast<double>(++done), static_cast<double>(total));
-                }));
+    tbb::parallel_pipeline(tokens, tbb::make_filter<void, std::shared_ptr<MetaCellJob>>(
+                                       tbb::filter_mode::serial_in_order,
+                                       [&](tbb::flow_control& control) -> std::shared_ptr<MetaCellJob> {
+                                         if (next >= total) {
+                                           control.stop();
+                                           return nullptr;
+                                         }
+                                         auto job = std::make_shared<MetaCellJob>();
+                                         job->position = next++;
+                                         return job;
+                                       }) &
+                                       tbb::make_filter<std::shared_ptr<MetaCellJob>, std::shared_ptr<MetaCellJob>>(
+                                           tbb::filter_mode::parallel,
+                                           [&](std::shared_ptr<MetaCellJob> job) {
+                                             const auto t0 = std::chrono::steady_clock::now();
+                                             octree::MetaCellSamples& samples = sampleBlocks.local();
+                                             volume::readMetaCell(field, partition.cells[job->position], s, samples,
+                                                                  apron);
+                                             const float iso = engineIso(field, options.iso, samples);
+                                             job->totals.readSeconds += secondsSince(t0);
+                                             job->contoured = volume::hasSignChange(samples, iso);
+                                             if (job->contoured)
+                                               job->result = contourBlock(samples, options, iso, job->totals, nullptr);
+                                             return job;
+                                           }) &
+                                       tbb::make_filter<std::shared_ptr<MetaCellJob>, void>(
+                                           tbb::filter_mode::serial_in_order, [&](std::shared_ptr<MetaCellJob> job) {
+                                             totals.add(job->totals);
+                                             if (job->contoured) {
+                                               ++contoured;
+                                               const auto base = static_cast<std::uint32_t>(sink.vertexCount());
+                                               for (mesh::Triangle& t : job->result.mesh.triangles)
+                                                 for (std::uint32_t& v : t) v += base;
+                                               sink.addVertices(job->result.mesh.positions);
+                                               sink.addTriangles(job->result.mesh.triangles);
+                                               contour::rebaseSeam(job->result.seam, base);
+                                               seams.add(partition.cells[job->position], std::move(job->result.seam));
+                                             }
+                                             progress.update(static_cast<double>(++done), static_cast<double>(total));
+                                           }));
   }
 
   stitch::StitchStats stitchStats;
@@ -320,12 +324,14 @@ void contourWithOctree(const volume::Volume& field, const OctreeContourOptions& 
                        Interrupter* interrupter, Statistics* stats) {
   if (field.kind() == volume::VolumeKind::Mask)
     throw InputError("'" + field.name() + "': octree contouring needs a distance field or a scalar field");
-  if (options.metaCellSize == 0) contourSingleBlock(field, options, sink, interrupter, stats);
-  else contourMetaCells(field, options, sink, interrupter, stats);
+  if (options.metaCellSize == 0)
+    contourSingleBlock(field, options, sink, interrupter, stats);
+  else
+    contourMetaCells(field, options, sink, interrupter, stats);
 }
 
-mesh::Mesh contourWithOctree(const volume::Volume& field, const OctreeContourOptions& options,
-                             Interrupter* interrupter, Statistics* stats) {
+mesh::Mesh contourWithOctree(const volume::Volume& field, const OctreeContourOptions& options, Interrupter* interrupter,
+                             Statistics* stats) {
   mesh::MeshCollector collector;
   contourWithOctree(field, options, collector, interrupter, stats);
   return std::move(collector.mesh);

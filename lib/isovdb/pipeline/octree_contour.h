@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file octree_contour.h
 /// @brief Our own contouring methods on a distance field: the field cut into
 ///        meta-cells, each contoured with its own octree (regular: manifold DMC;
@@ -33,26 +35,24 @@ enum class OctreeMethod {
 
 struct OctreeContourOptions {
   OctreeMethod method = OctreeMethod::Regular;
-  float iso = 0.f;          ///< isovalue (voxels on distance fields)
-  int metaCellSize = 128;   ///< S, voxels per meta-cell edge (power of two, 16..512; 128 = VDB level-1 nodes);
-                            ///< 0 = one meta-cell around the whole band (no stitching)
-  int minLevel = -1;        ///< uniform subdivision down to this depth under the meta-cell; -1: maxCellSize decides
-  int maxCellSize = 16;     ///< largest leaf in voxels when minLevel is -1 (coarser cells miss smooth detail:
-                            ///< the QEF residual hardly grows on cells with few crossings)
-  int maxLevel = -1;        ///< deepest level under the meta-cell; -1: finestCellSize decides
-  int finestCellSize = 1;   ///< smallest leaf in voxels (power of two) when maxLevel is -1
+  float iso = 0.f;         ///< isovalue (voxels on distance fields)
+  int metaCellSize = 128;  ///< S, voxels per meta-cell edge (power of two, 16..512; 128 = VDB level-1 nodes);
+                           ///< 0 = one meta-cell around the whole band (no stitching)
+  int minLevel = -1;       ///< uniform subdivision down to this depth under the meta-cell; -1: maxCellSize decides
+  int maxCellSize = 16;    ///< largest leaf in voxels when minLevel is -1 (coarser cells miss smooth detail:
+                           ///< the QEF residual hardly grows on cells with few crossings)
+  int maxLevel = -1;       ///< deepest level under the meta-cell; -1: finestCellSize decides
+  int finestCellSize = 1;  ///< smallest leaf in voxels (power of two) when maxLevel is -1
   /// adaptive: split leaves whose QEF residual (RMS voxels) exceeds it; <0 off. 0.15: on the
   /// interface distance field of a mask, as close to analytic solids as 0.25 was on
   /// topologyToLevelSet's noisier field, with as many vertices (bench/field_accuracy.py).
   float qefTolerance = 0.15f;
-                               ///< 0.25 gives 5.5x fewer triangles than regular at 0.12 voxel mean error
-                               ///< (salt body, 64^3); 0.5: 10x fewer, 0.19 voxel
   /// Regular: how ambiguous cells are read. Voxels (default) keeps the voxel object's topology
   /// (26-connected inside, 6-connected outside: chi(mesh) = 2 chi(object) on masks); Mdmc is
   /// Wenger's Manifold DMC (inside corners of ambiguous faces separated; adaptive mode's reading).
   contour::RegularTopology regularTopology = contour::RegularTopology::Voxels;
-  bool manifoldFix = true;  ///< Wenger's fix, both methods (regular voxels: split doubled faces); tests
-                            ///< switch it off to show it matters
+  bool manifoldFix = true;       ///< Wenger's fix, both methods (regular voxels: split doubled faces); tests
+                                 ///< switch it off to show it matters
   bool intersectionFree = true;  ///< adaptive: Ju–Udeshi fans (false: plain DC, for comparison)
   bool sharpFeatures = false;    ///< adaptive, exact distance fields: keep sharp edges and corners (crossings
                                  ///< near a crease from their own face, leaves refined until their vertex is

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/pipeline/reservoir_extract.h"
 
 #include "isovdb/reservoir/corner_point_grid.h"
@@ -45,8 +47,7 @@ mesh::Mesh extractReservoir(const ReservoirOptions& options, Statistics& stats) 
   section["warnings"] = warnings;
   if (options.maxTessellation <= 0) return std::move(contour.mesh);
   Statistics::StageTimer timer(&stats, "pn_tessellation");
-  reservoir::TessellationResult pn =
-      reservoir::tessellatePn(contour.mesh, {.maxFactor = options.maxTessellation});
+  reservoir::TessellationResult pn = reservoir::tessellatePn(contour.mesh, {.maxFactor = options.maxTessellation});
   section["tessellation_max_factor"] = options.maxTessellation;
   section["tessellation_mean_edge_factor"] = pn.meanFactor;
   section["pn_triangles"] = pn.mesh.triangleCount();

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file reservoir_extract.h
 /// @brief `isovdb reservoir`: GRDECL deck -> corner-point grid -> cell values
 /// averaged to corners -> Marching Cubes on hexahedra (+ optional PN tessellation).
@@ -15,7 +17,7 @@ struct ReservoirOptions {
   std::vector<std::filesystem::path> inputs;  ///< grid file first, then extra property files
   std::string property;                       ///< cell property keyword (PORO, FACIES, ...)
   double iso = 0.0;
-  int maxTessellation = 0;                    ///< 0: flat MC triangles; K: PN triangles, factors up to K
+  int maxTessellation = 0;  ///< 0: flat MC triangles; K: PN triangles, factors up to K
 };
 
 /// Runs the reservoir stages; figures (cells, triangles, warnings, timings) go to `stats`.

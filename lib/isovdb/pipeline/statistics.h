@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file statistics.h
 /// @brief Every figure a run shows (counts, timings per stage, memory), kept as
 ///        ordered JSON so `--stats OUT.json` writes exactly what was shown.

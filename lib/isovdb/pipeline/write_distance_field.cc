@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/pipeline/write_distance_field.h"
 
 #include "isovdb/io/leafwise_level_set_writer.h"
@@ -9,8 +11,8 @@
 namespace isovdb::pipeline {
 
 void writeDistanceFieldVdb(const volume::Volume& volume, const volume::DistanceFieldOptions& options,
-                           const std::filesystem::path& output, const std::string& gridName,
-                           Interrupter* interrupter, Statistics* stats) {
+                           const std::filesystem::path& output, const std::string& gridName, Interrupter* interrupter,
+                           Statistics* stats) {
   volume::checkDistanceFieldOptions(options);
   const bool wholeInMemory = options.chunkSize == 0 && options.method == volume::DistanceMethod::Tracker;
   if (volume.kind() != volume::VolumeKind::Mask || wholeInMemory) {
@@ -23,9 +25,8 @@ void writeDistanceFieldVdb(const volume::Volume& volume, const volume::DistanceF
                                     {.gridName = gridName, .source = volume.name()});
   {
     Statistics::StageTimer timer(stats, "distance_field");
-    volume::computeBandInChunks(volume::maskGrid(volume), options, [&writer](auto&& leaves) {
-      writer.add(std::move(leaves));
-    }, interrupter);
+    volume::computeBandInChunks(
+        volume::maskGrid(volume), options, [&writer](auto&& leaves) { writer.add(std::move(leaves)); }, interrupter);
   }
   io::LevelSetFileSummary summary;
   {

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file write_distance_field.h
 /// @brief `isovdb sdf`'s job: a volume's narrow-band distance field written to a
 ///        level-set .vdb. From a mask, the band goes to the file chunk by chunk

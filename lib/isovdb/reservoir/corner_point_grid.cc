@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/reservoir/corner_point_grid.h"
 
 #include <Eigen/Dense>
@@ -67,8 +69,8 @@ CornerPointGrid buildCornerPointGrid(const GrdeclDeck& deck, const GridOptions& 
         grid.active[cell] = deck.actnum.empty() || deck.actnum[cell] != 0;
         for (int c = 0; c < 8; ++c) {
           const int ix = c & 1, iy = (c >> 1) & 1, iz = (c >> 2) & 1;
-          const double z = deck.zcorn[((static_cast<std::size_t>(2 * k + iz) * 2 * ny + 2 * j + iy) * 2 * nx) +
-                                      2 * i + ix];
+          const double z =
+              deck.zcorn[((static_cast<std::size_t>(2 * k + iz) * 2 * ny + 2 * j + iy) * 2 * nx) + 2 * i + ix];
           const double* pillar = &deck.coord[6 * ((static_cast<std::size_t>(j + iy)) * (nx + 1) + i + ix)];
           const Vec3d top(pillar[0], pillar[1], pillar[2]), bottom(pillar[3], pillar[4], pillar[5]);
           const double dz = bottom.z() - top.z();
@@ -180,8 +182,8 @@ CornerField averageToCorners(const CornerPointGrid& grid, const GrdeclDeck& deck
   if (found == deck.properties.end()) {
     std::string names;
     for (const auto& [name, values] : deck.properties) names += (names.empty() ? "" : ", ") + name;
-    throw InputError(deck.path.string() + ": no property " + property + " (found: " +
-                     (names.empty() ? "none" : names) + ")");
+    throw InputError(deck.path.string() + ": no property " + property + " (found: " + (names.empty() ? "none" : names) +
+                     ")");
   }
   return averageToCorners(grid, found->second, deck.path.string() + ": property " + property);
 }

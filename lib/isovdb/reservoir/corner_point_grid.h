@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file corner_point_grid.h
 /// @brief The corner-point grid model: 8 corner positions per cell (cells need
 /// not share corners: faults), active flags, and the cell values of one
@@ -35,9 +37,7 @@ struct CornerPointGrid {
   std::vector<std::string> warnings;
 
   std::size_t cellCount() const { return corners.size(); }
-  std::size_t cellIndex(int i, int j, int k) const {
-    return (static_cast<std::size_t>(k) * dims[1] + j) * dims[0] + i;
-  }
+  std::size_t cellIndex(int i, int j, int k) const { return (static_cast<std::size_t>(k) * dims[1] + j) * dims[0] + i; }
 };
 
 struct GridOptions {

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/reservoir/grdecl_reader.h"
 
 #include <cctype>
@@ -16,9 +18,9 @@ namespace {
 
 // Keywords that carry no record.
 const std::set<std::string> kFlagKeywords = {
-    "RUNSPEC", "GRID",   "EDIT",   "NOECHO", "ECHO",   "OIL",    "WATER",   "GAS",     "DISGAS",
-    "VAPOIL",  "FIELD",  "METRIC", "LAB",    "UNIFOUT", "UNIFIN", "FMTOUT", "FMTIN",  "INIT",
-    "NOSIM",   "NEWTRAN", "OLDTRAN", "ENDBOX", "NONNC",  "NOGGF",  "GRIDFILE_OFF", "MULTOUT"};
+    "RUNSPEC", "GRID",    "EDIT",    "NOECHO", "ECHO",    "OIL",    "WATER",        "GAS",    "DISGAS",
+    "VAPOIL",  "FIELD",   "METRIC",  "LAB",    "UNIFOUT", "UNIFIN", "FMTOUT",       "FMTIN",  "INIT",
+    "NOSIM",   "NEWTRAN", "OLDTRAN", "ENDBOX", "NONNC",   "NOGGF",  "GRIDFILE_OFF", "MULTOUT"};
 // Sections after the grid: nothing there describes the grid, stop reading.
 const std::set<std::string> kStopKeywords = {"PROPS", "REGIONS", "SOLUTION", "SUMMARY", "SCHEDULE", "END"};
 // Keywords with one non-numeric (or defaulted) record that need no warning.
@@ -92,8 +94,8 @@ struct Parser {
       if (!ok || t[end].quoted) {
         if (looksLikeKeyword(t[end]))
           throw InputError(where(file, keyword.line) + ": keyword " + keyword.text +
-                           " has no terminating '/' (keyword " + s + " found at line " +
-                           std::to_string(t[end].line) + ")");
+                           " has no terminating '/' (keyword " + s + " found at line " + std::to_string(t[end].line) +
+                           ")");
         throw InputError(where(file, t[end].line) + ": keyword " + keyword.text + ": '" + s +
                          "' is not a number (expected a value or n*value)");
       }
@@ -111,8 +113,8 @@ struct Parser {
     double v;
     const std::string& s = t[i].text;
     const std::size_t star = s.find('*');
-    return !t[i].quoted && (star == std::string::npos ? parseDouble(s, v)
-                                                      : star + 1 < s.size() && parseDouble(s.substr(star + 1), v));
+    return !t[i].quoted &&
+           (star == std::string::npos ? parseDouble(s, v) : star + 1 < s.size() && parseDouble(s.substr(star + 1), v));
   }
 
   void readFile(const std::filesystem::path& file) {
@@ -146,8 +148,7 @@ struct Parser {
       }
       if (name == "INCLUDE") {
         const std::size_t end = recordEnd(t, i, file, keyword);
-        if (end != i + 1)
-          throw InputError(where(file, keyword.line) + ": INCLUDE expects one file name then '/'");
+        if (end != i + 1) throw InputError(where(file, keyword.line) + ": INCLUDE expects one file name then '/'");
         const std::filesystem::path included = file.parent_path() / t[i].text;
         if (!std::filesystem::exists(included))
           throw InputError(where(file, keyword.line) + ": INCLUDE file not found: " + included.string());

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file grdecl_reader.h
 /// @brief Reads an Eclipse GRDECL grid deck (SPECGRID/DIMENS, COORD, ZCORN,
 /// ACTNUM, MAPAXES and any numeric cell property such as PORO or PERMX).
@@ -16,18 +18,17 @@
 #include <string>
 #include <vector>
 
-
 namespace isovdb::reservoir {
 
 struct GrdeclDeck {
-  std::filesystem::path path;            ///< the file that was read (for messages)
-  std::array<int, 3> dims{0, 0, 0};      ///< SPECGRID or DIMENS: nx, ny, nz
-  std::vector<double> coord;             ///< 6 values per pillar, (nx+1)(ny+1) pillars
-  std::vector<double> zcorn;             ///< 8 values per cell
-  std::vector<double> actnum;            ///< empty (all active) or one per cell
-  std::vector<double> mapaxes;           ///< empty or 6 values (not applied)
+  std::filesystem::path path;                             ///< the file that was read (for messages)
+  std::array<int, 3> dims{0, 0, 0};                       ///< SPECGRID or DIMENS: nx, ny, nz
+  std::vector<double> coord;                              ///< 6 values per pillar, (nx+1)(ny+1) pillars
+  std::vector<double> zcorn;                              ///< 8 values per cell
+  std::vector<double> actnum;                             ///< empty (all active) or one per cell
+  std::vector<double> mapaxes;                            ///< empty or 6 values (not applied)
   std::map<std::string, std::vector<double>> properties;  ///< other numeric keywords
-  std::vector<std::string> warnings;     ///< one line each, naming file and line
+  std::vector<std::string> warnings;                      ///< one line each, naming file and line
 };
 
 /// Reads `path` and its INCLUDEs. @throw InputError naming the file and line

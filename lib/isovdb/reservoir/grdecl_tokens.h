@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file grdecl_tokens.h
 /// @brief Splits Eclipse GRDECL text into tokens: `--` comments dropped,
 /// quoted strings kept whole, `/` record terminators as their own token.
@@ -10,8 +12,8 @@
 namespace isovdb::reservoir {
 
 struct GrdeclToken {
-  std::string text;   ///< without quotes for a quoted string
-  int line = 0;       ///< 1-based line in the file
+  std::string text;  ///< without quotes for a quoted string
+  int line = 0;      ///< 1-based line in the file
   bool quoted = false;
   bool isSlash() const { return !quoted && text == "/"; }
 };

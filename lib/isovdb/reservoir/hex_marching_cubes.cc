@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/reservoir/hex_marching_cubes.h"
 
 #include <tbb/blocked_range.h>
@@ -133,9 +135,9 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
     if (t == 0.0) v.key = (std::uint64_t{1} << 62) | ids[a];
     if (t == 1.0) v.key = (std::uint64_t{1} << 62) | ids[b];
     v.position = (pa + t * (pb - pa)).cast<float>();
-    v.gradient = options.normals ? Vec3d((1 - t) * cornerGradient(grid, field, cell, a) +
-                                         t * cornerGradient(grid, field, cell, b))
-                                 : Vec3d::Zero();
+    v.gradient = options.normals
+                     ? Vec3d((1 - t) * cornerGradient(grid, field, cell, a) + t * cornerGradient(grid, field, cell, b))
+                     : Vec3d::Zero();
     vertexOf[edge] = static_cast<int>(out.vertices.size());
     out.vertices.push_back(v);
     return vertexOf[edge];

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file hex_marching_cubes.h
 /// @brief Marching Cubes on the hexahedra of a corner-point grid, in each
 /// cell's trilinear parameter space (paper 003 §5).
@@ -30,9 +32,9 @@ struct HexContourOptions {
 };
 
 struct HexContourResult {
-  mesh::Mesh mesh;                 ///< world (file) coordinates
-  std::int64_t cutCells = 0;       ///< usable cells the surface crosses
-  std::int64_t ambiguousFaces = 0; ///< faces resolved by the asymptotic decider (counted per cell)
+  mesh::Mesh mesh;                  ///< world (file) coordinates
+  std::int64_t cutCells = 0;        ///< usable cells the surface crosses
+  std::int64_t ambiguousFaces = 0;  ///< faces resolved by the asymptotic decider (counted per cell)
 };
 
 HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField& field,

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/reservoir/jacobian_normals.h"
 
 #include <Eigen/Dense>
@@ -36,8 +38,8 @@ Vec3d cornerGradient(const CornerPointGrid& grid, const CornerField& field, std:
     gradientU[a] = derivative;
   }
   const double det = jacobian.determinant();
-  if (!(std::abs(det) > 1e-12 * jacobian.cwiseAbs().maxCoeff() * jacobian.cwiseAbs().maxCoeff() *
-                            jacobian.cwiseAbs().maxCoeff()))
+  if (!(std::abs(det) >
+        1e-12 * jacobian.cwiseAbs().maxCoeff() * jacobian.cwiseAbs().maxCoeff() * jacobian.cwiseAbs().maxCoeff()))
     return Vec3d::Zero();
   return jacobian.transpose().inverse() * gradientU;
 }

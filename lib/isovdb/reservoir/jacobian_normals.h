@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file jacobian_normals.h
 /// @brief Gradient of the corner field at a cell corner (paper 003 Fig. 5.4–5.5):
 /// central differences in parameter space (i, j, k) with the corner of the

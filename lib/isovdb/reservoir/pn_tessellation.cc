@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/reservoir/pn_tessellation.h"
 
 #include <algorithm>
@@ -36,8 +38,7 @@ int edgeFactor(const Vec3d& ni, const Vec3d& nj, int maxFactor, FactorRule rule)
 }
 
 TessellationResult tessellatePn(const mesh::Mesh& input, const TessellationOptions& options) {
-  if (input.normals.size() != input.positions.size())
-    throw InputError("PN tessellation needs one normal per vertex");
+  if (input.normals.size() != input.positions.size()) throw InputError("PN tessellation needs one normal per vertex");
   if (options.maxFactor < 1 || options.maxFactor > 255)
     throw InputError("PN tessellation: the maximum factor must be between 1 and 255");
   TessellationResult result;
@@ -106,7 +107,7 @@ TessellationResult tessellatePn(const mesh::Mesh& input, const TessellationOptio
           const std::uint32_t a = t[c], b = t[(c + 1) % 3];
           const int fromLow = a < b ? w[(c + 1) % 3] : w[c];  // steps from the lower-index end
           const int fe = f[c];
-          const int q = (2 * fromLow * fe + n) / (2 * n);    // snapped to the edge's own factor
+          const int q = (2 * fromLow * fe + n) / (2 * n);  // snapped to the edge's own factor
           const std::uint32_t low = std::min(a, b), high = std::max(a, b);
           if (q == 0) {
             at(j, k) = low;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file pn_tessellation.h
 /// @brief Adaptive tessellation of a mesh into curved PN triangles (paper 003
 /// §4.3–4.4): a factor per edge from the angle between its two vertex normals
@@ -26,9 +28,9 @@ double edgeSubdivisions(double cosine, int maxFactor, FactorRule rule);
 int edgeFactor(const Vec3d& ni, const Vec3d& nj, int maxFactor, FactorRule rule);
 
 struct TessellationOptions {
-  int maxFactor = 8;                           ///< k, the most segments an edge is cut into
+  int maxFactor = 8;  ///< k, the most segments an edge is cut into
   FactorRule rule = FactorRule::Exponential;
-  double inflation = 0.25;                     ///< envelope offset, times the mean edge length
+  double inflation = 0.25;  ///< envelope offset, times the mean edge length
 };
 
 struct TessellationResult {

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/reservoir/pn_triangle.h"
 
 #include <Eigen/Geometry>
@@ -47,8 +49,8 @@ Vec3d PnTriangle::position(double u, double v, double w) const {
 }
 
 Vec3d PnTriangle::quadraticNormal(double u, double v, double w) const {
-  const Vec3d n = n_[0] * u * u + n_[1] * v * v + n_[2] * w * w + 2 * n_[3] * u * v + 2 * n_[4] * v * w +
-                  2 * n_[5] * w * u;
+  const Vec3d n =
+      n_[0] * u * u + n_[1] * v * v + n_[2] * w * w + 2 * n_[3] * u * v + 2 * n_[4] * v * w + 2 * n_[5] * w * u;
   const double length = n.norm();
   return length > 0 ? Vec3d(n / length) : n_[0];
 }

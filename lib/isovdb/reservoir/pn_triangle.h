@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file pn_triangle.h
 /// @brief Curved PN triangles (Vlachos et al., paper 003 §4.2–4.4): cubic
 /// Bézier geometry from the three vertices and normals, the corrected

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file edge_octree.h
 /// @brief The edge-octree of one seam: the kept cells of the meta-cells around
 ///        a meta-face (2) or a meta-edge (4) merged into one partial linear

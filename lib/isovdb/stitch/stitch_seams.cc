@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/stitch/stitch_seams.h"
 
 #include <cmath>
@@ -27,7 +29,8 @@ contour::VoxelEdgeCell voxelEdgeCell(const SeamCell& cell) {
   return out;
 }
 
-/// Regular mode: the quad (voxel topology: polygon) of every bipolar edge the seam owns, by its owner (the leaf in quadrant 3).
+/// Regular mode: the quad (voxel topology: polygon) of every bipolar edge the seam owns, by its owner (the leaf in
+/// quadrant 3).
 void stitchRegular(const Seam& seam, const EdgeOctree& edgeTree, int s, bool voxels, mesh::Mesh& out,
                    StitchStats& stats) {
   const LinearOctree& tree = edgeTree.tree;
@@ -43,7 +46,8 @@ void stitchRegular(const Seam& seam, const EdgeOctree& edgeTree, int s, bool vox
         for (int q = 0; q < 4 && complete; ++q) {
           const std::int64_t j = around[static_cast<std::size_t>(q)];
           complete = j != LinearOctree::kNone && edgeTree.cells[static_cast<std::size_t>(j)]->size == leaf.size;
-          if (complete) cells[static_cast<std::size_t>(q)] = voxelEdgeCell(*edgeTree.cells[static_cast<std::size_t>(j)]);
+          if (complete)
+            cells[static_cast<std::size_t>(q)] = voxelEdgeCell(*edgeTree.cells[static_cast<std::size_t>(j)]);
         }
         if (!complete) {
           ++stats.missingCells;
@@ -116,7 +120,8 @@ void stitchAdaptive(const Seam& seam, const EdgeOctree& edgeTree, int s, bool in
   const auto cellVertex = [&](std::int64_t leaf, int group) {
     SeamCell& cell = *edgeTree.cells[static_cast<std::size_t>(leaf)];
     std::uint32_t& vertex = cell.vertices[static_cast<std::size_t>(group)];
-    if (vertex == contour::kNoVertex) vertex = addVertex(cellPoints[firstVertex[static_cast<std::size_t>(leaf)] + static_cast<std::size_t>(group)]);
+    if (vertex == contour::kNoVertex)
+      vertex = addVertex(cellPoints[firstVertex[static_cast<std::size_t>(leaf)] + static_cast<std::size_t>(group)]);
     return vertex;
   };
   contour::LeafEdges edges;
@@ -169,7 +174,8 @@ void stitchSeams(SeamStore& store, const StitchOptions& options, std::uint32_t v
     const EdgeOctree edgeTree = buildEdgeOctree(seam, around, s);
     if (options.method == StitchMethod::Regular)
       stitchRegular(seam, edgeTree, s, options.regularTopology == contour::RegularTopology::Voxels, out, local);
-    else stitchAdaptive(seam, edgeTree, s, options.intersectionFree, addVertex, faceVertices, out, local);
+    else
+      stitchAdaptive(seam, edgeTree, s, options.intersectionFree, addVertex, faceVertices, out, local);
     ++(seam.kind == Seam::Kind::Face ? local.metaFaces : local.metaEdges);
   };
 

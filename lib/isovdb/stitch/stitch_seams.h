@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file stitch_seams.h
 /// @brief Closes the mesh between meta-cells: for every meta-face and meta-edge
 ///        between contoured meta-cells, the edge-octree of their kept cells
@@ -51,18 +53,18 @@ enum class StitchMethod { Regular, Adaptive };
 
 struct StitchOptions {
   StitchMethod method = StitchMethod::Regular;
-  int metaCellSize = 128;         ///< S of the partition
-  bool intersectionFree = true;   ///< adaptive: Ju–Udeshi fans (as the meta-cells)
+  int metaCellSize = 128;        ///< S of the partition
+  bool intersectionFree = true;  ///< adaptive: Ju–Udeshi fans (as the meta-cells)
   contour::RegularTopology regularTopology = contour::RegularTopology::Voxels;  ///< regular: as the meta-cells
 };
 
 struct StitchStats {
-  std::int64_t metaFaces = 0;       ///< meta-face seams contoured (both meta-cells present)
-  std::int64_t metaEdges = 0;       ///< meta-edge seams contoured (all four present)
-  std::int64_t seamCells = 0;       ///< kept cells over all meta-cells
-  std::int64_t edges = 0;           ///< sign-changing edges contoured by the stitcher
-  std::int64_t fannedEdges = 0;     ///< adaptive: of them, with a Ju–Udeshi fan
-  std::int64_t missingCells = 0;    ///< edges skipped because a cell around was not kept (must stay 0)
+  std::int64_t metaFaces = 0;     ///< meta-face seams contoured (both meta-cells present)
+  std::int64_t metaEdges = 0;     ///< meta-edge seams contoured (all four present)
+  std::int64_t seamCells = 0;     ///< kept cells over all meta-cells
+  std::int64_t edges = 0;         ///< sign-changing edges contoured by the stitcher
+  std::int64_t fannedEdges = 0;   ///< adaptive: of them, with a Ju–Udeshi fan
+  std::int64_t missingCells = 0;  ///< edges skipped because a cell around was not kept (must stay 0)
 };
 
 /// @brief Contours every seam of `store`.

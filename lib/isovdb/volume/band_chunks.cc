@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/volume/band_chunks.h"
 
 #include <openvdb/tools/FastSweeping.h>
@@ -65,8 +67,8 @@ namespace {
 
 /// The interface band of the mask, after the morphological closing asked for
 /// (OpenVDB's face-neighbour dilation then erosion, as topologyToLevelSet does).
-std::size_t interfaceBandInChunks(const MaskGrid& mask, const DistanceFieldOptions& options,
-                                  const BandLeafSink& sink, Interrupter* interrupter) {
+std::size_t interfaceBandInChunks(const MaskGrid& mask, const DistanceFieldOptions& options, const BandLeafSink& sink,
+                                  Interrupter* interrupter) {
   constexpr int kDefaultChunk = 64;
   const int chunk = options.chunkSize > 0 ? options.chunkSize : kDefaultChunk;
   if (options.closingSteps == 0) return computeInterfaceBand(mask, options.halfWidth, chunk, sink, interrupter);
@@ -106,28 +108,31 @@ std::size_t computeBandInChunks(const MaskGrid& mask, const DistanceFieldOptions
   // inside its own chunk, so what the sink receives does not depend on the order.
   std::mutex handOut;
   std::size_t done = 0;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks.size(), 1), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t c = r.begin(); c != r.end(); ++c) {
-      const openvdb::CoordBBox inner(chunks[c], chunks[c].offsetBy(chunk - 1));
-      openvdb::CoordBBox outer = inner;
-      outer.expand(halo);
-      MaskGrid region(false);
-      std::vector<std::unique_ptr<FieldLeaf>> leaves;
-      if (extractRegion(mask, outer, region)) {
-        FieldGrid::Ptr band = bandOf(region, options, nullptr);
-        std::vector<openvdb::Coord> origins;
-        for (auto leaf = band->tree().cbeginLeaf(); leaf; ++leaf)
-          if (inner.isInside(leaf->origin())) origins.push_back(leaf->origin());
-        for (const openvdb::Coord& origin : origins) {
-          leaves.emplace_back(band->tree().stealNode<FieldLeaf>(origin, band->background(), false));
-          fillLeaf(*leaves.back());
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, chunks.size(), 1),
+      [&](const tbb::blocked_range<std::size_t>& r) {
+        for (std::size_t c = r.begin(); c != r.end(); ++c) {
+          const openvdb::CoordBBox inner(chunks[c], chunks[c].offsetBy(chunk - 1));
+          openvdb::CoordBBox outer = inner;
+          outer.expand(halo);
+          MaskGrid region(false);
+          std::vector<std::unique_ptr<FieldLeaf>> leaves;
+          if (extractRegion(mask, outer, region)) {
+            FieldGrid::Ptr band = bandOf(region, options, nullptr);
+            std::vector<openvdb::Coord> origins;
+            for (auto leaf = band->tree().cbeginLeaf(); leaf; ++leaf)
+              if (inner.isInside(leaf->origin())) origins.push_back(leaf->origin());
+            for (const openvdb::Coord& origin : origins) {
+              leaves.emplace_back(band->tree().stealNode<FieldLeaf>(origin, band->background(), false));
+              fillLeaf(*leaves.back());
+            }
+          }
+          if (!leaves.empty()) sink(std::move(leaves));
+          const std::lock_guard<std::mutex> lock(handOut);
+          progress.update(static_cast<double>(++done), static_cast<double>(chunks.size()));
         }
-      }
-      if (!leaves.empty()) sink(std::move(leaves));
-      const std::lock_guard<std::mutex> lock(handOut);
-      progress.update(static_cast<double>(++done), static_cast<double>(chunks.size()));
-    }
-  }, tbb::simple_partitioner());
+      },
+      tbb::simple_partitioner());
   return chunks.size();
 }
 

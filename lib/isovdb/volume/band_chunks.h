@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file band_chunks.h
 /// @brief The narrow band of a mask computed chunk by chunk and handed out as
 ///        leaves, so a caller can either keep them (distanceField) or stream them
@@ -31,7 +33,7 @@ FieldGrid::Ptr bandOf(const MaskGrid& mask, const DistanceFieldOptions& options,
 /// active voxels are handed out too: whether they become tiles is the caller's
 /// pruning. Returns the number of chunks.
 /// @throw Interrupted on cancellation.
-std::size_t computeBandInChunks(const MaskGrid& mask, const DistanceFieldOptions& options,
-                                const BandLeafSink& sink, Interrupter* interrupter);
+std::size_t computeBandInChunks(const MaskGrid& mask, const DistanceFieldOptions& options, const BandLeafSink& sink,
+                                Interrupter* interrupter);
 
 }  // namespace isovdb::volume

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/volume/digital_topology.h"
 
 #include <algorithm>
@@ -27,7 +29,7 @@ constexpr std::array<std::int8_t, 256> makeEulerTable() {
   for (int config = 0; config < 256; ++config) {
     const auto any = [config](int bits) { return (config & bits) != 0 ? 1 : 0; };
     const int vertex = any(0xFF);
-    const int edges = any(0xAA) + any(0xCC) + any(0xF0);   // +x, +y, +z
+    const int edges = any(0xAA) + any(0xCC) + any(0xF0);    // +x, +y, +z
     const int squares = any(0x88) + any(0xA0) + any(0xC0);  // xy, xz, yz
     const int cube = any(0x80);
     table[config] = static_cast<std::int8_t>(vertex - edges + squares - cube);
@@ -148,11 +150,9 @@ void fillMaskRow(AccessorT& accessor, int x0, int x1, int y, int z, std::uint8_t
     const int blockEnd = std::min(x1, (x & ~(kLeafDim - 1)) + kLeafDim - 1);
     const openvdb::Coord xyz(x, y, z);
     if (const auto* leaf = accessor.probeConstLeaf(xyz)) {
-      for (int xi = x; xi <= blockEnd; ++xi)
-        out[xi - x0] = leaf->isValueOn(openvdb::Coord(xi, y, z)) ? 1 : 0;
+      for (int xi = x; xi <= blockEnd; ++xi) out[xi - x0] = leaf->isValueOn(openvdb::Coord(xi, y, z)) ? 1 : 0;
     } else {
-      std::fill(out + (x - x0), out + (blockEnd - x0) + 1,
-                static_cast<std::uint8_t>(accessor.isValueOn(xyz) ? 1 : 0));
+      std::fill(out + (x - x0), out + (blockEnd - x0) + 1, static_cast<std::uint8_t>(accessor.isValueOn(xyz) ? 1 : 0));
     }
     x = blockEnd + 1;
   }
@@ -160,8 +160,8 @@ void fillMaskRow(AccessorT& accessor, int x0, int x1, int y, int z, std::uint8_t
 
 }  // namespace
 
-std::int64_t eulerCharacteristic(io::SliceStream& stream, const MaskRule& rule,
-                                 Interrupter* interrupter, Adjacency adjacency) {
+std::int64_t eulerCharacteristic(io::SliceStream& stream, const MaskRule& rule, Interrupter* interrupter,
+                                 Adjacency adjacency) {
   const io::VolumeHeader& header = stream.header();
   const std::int64_t nx = header.dims[0], ny = header.dims[1], nz = header.dims[2];
   if (nx <= 0 || ny <= 0 || nz <= 0) return 0;
@@ -172,14 +172,13 @@ std::int64_t eulerCharacteristic(io::SliceStream& stream, const MaskRule& rule,
   for (std::int64_t z = stream.nextSlice(); z < nz; ++z) {
     stage.update(static_cast<double>(z), static_cast<double>(nz));
     stream.readSlice(values.data());
-    tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, ny, 16),
-                      [&](const tbb::blocked_range<std::int64_t>& rows) {
-                        for (std::int64_t y = rows.begin(); y != rows.end(); ++y) {
-                          const float* in = values.data() + y * nx;
-                          std::uint8_t* out = accumulator.row(y);
-                          for (std::int64_t x = 0; x < nx; ++x) out[x] = rule.inside(in[x]) ? 1 : 0;
-                        }
-                      });
+    tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, ny, 16), [&](const tbb::blocked_range<std::int64_t>& rows) {
+      for (std::int64_t y = rows.begin(); y != rows.end(); ++y) {
+        const float* in = values.data() + y * nx;
+        std::uint8_t* out = accumulator.row(y);
+        for (std::int64_t x = 0; x < nx; ++x) out[x] = rule.inside(in[x]) ? 1 : 0;
+      }
+    });
     accumulator.addSlice();
   }
   return accumulator.finish();
@@ -198,13 +197,11 @@ std::int64_t eulerCharacteristic(const Volume& mask, Interrupter* interrupter, A
   SlicePairAccumulator accumulator(nx, ny, eulerTable(adjacency));
   for (int z = lo.z(); z <= hi.z(); ++z) {
     stage.update(static_cast<double>(z - lo.z()), static_cast<double>(nz));
-    tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, ny, 16),
-                      [&](const tbb::blocked_range<std::int64_t>& rows) {
-                        MaskGrid::ConstAccessor accessor = grid.getConstAccessor();
-                        for (std::int64_t y = rows.begin(); y != rows.end(); ++y)
-                          fillMaskRow(accessor, lo.x(), hi.x(), lo.y() + static_cast<int>(y), z,
-                                      accumulator.row(y));
-                      });
+    tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, ny, 16), [&](const tbb::blocked_range<std::int64_t>& rows) {
+      MaskGrid::ConstAccessor accessor = grid.getConstAccessor();
+      for (std::int64_t y = rows.begin(); y != rows.end(); ++y)
+        fillMaskRow(accessor, lo.x(), hi.x(), lo.y() + static_cast<int>(y), z, accumulator.row(y));
+    });
     accumulator.addSlice();
   }
   return accumulator.finish();

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file digital_topology.h
 /// @brief Topological invariants of a voxel object, computed in one streaming pass.
 ///
@@ -53,8 +55,7 @@ enum class Adjacency {
 /// @throw InputError / IoError from the stream; Interrupted on cancellation.
 /// @note Memory: one float slice and two byte slices (O(slice)); slices are
 ///       processed in parallel by rows (TBB).
-std::int64_t eulerCharacteristic(io::SliceStream& stream, const MaskRule& rule,
-                                 Interrupter* interrupter = nullptr,
+std::int64_t eulerCharacteristic(io::SliceStream& stream, const MaskRule& rule, Interrupter* interrupter = nullptr,
                                  Adjacency adjacency = Adjacency::Foreground26);
 
 /// @brief Euler characteristic of a mask volume (BoolGrid, active voxel = inside),

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/volume/distance_field.h"
 
 #include <openvdb/tools/LevelSetUtil.h>
@@ -41,10 +43,13 @@ Volume distanceField(const Volume& mask, const DistanceFieldOptions& options, In
   } else {
     sdf = FieldGrid::create(static_cast<float>(options.halfWidth));
     std::mutex adding;
-    computeBandInChunks(grid, options, [&sdf, &adding](std::vector<std::unique_ptr<FieldLeaf>>&& leaves) {
-      const std::lock_guard<std::mutex> lock(adding);
-      for (auto& leaf : leaves) sdf->tree().addLeaf(leaf.release());
-    }, interrupter);
+    computeBandInChunks(
+        grid, options,
+        [&sdf, &adding](std::vector<std::unique_ptr<FieldLeaf>>&& leaves) {
+          const std::lock_guard<std::mutex> lock(adding);
+          for (auto& leaf : leaves) sdf->tree().addLeaf(leaf.release());
+        },
+        interrupter);
     // Inactive space between chunks' bands: negative inside, positive outside.
     openvdb::tools::signedFloodFill(sdf->tree());
     openvdb::tools::pruneLevelSet(sdf->tree());

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file distance_field.h
 /// @brief Binary mask → narrow-band signed distance field (paper 000 §4.1), with OpenVDB tools.
 ///
@@ -62,8 +64,7 @@ void checkDistanceFieldOptions(const DistanceFieldOptions& options);
 /// in flight per TBB thread (chunks run in parallel). The result does not depend on chunkSize (to float rounding).
 /// @pre `mask.kind() == VolumeKind::Mask`
 /// @throw InputError for another kind; Interrupted on cancellation.
-Volume distanceField(const Volume& mask, const DistanceFieldOptions& options = {},
-                     Interrupter* interrupter = nullptr);
+Volume distanceField(const Volume& mask, const DistanceFieldOptions& options = {}, Interrupter* interrupter = nullptr);
 
 /// The voxels of a distance field strictly below `iso` (its interior, tiles kept),
 /// as a mask volume with the same geometry.

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file grids.h
 /// @brief Typed access to a Volume's OpenVDB grid. Heavy (includes openvdb.h):
 ///        include it only from .cc files.
@@ -36,9 +38,7 @@ struct VdbInterrupter : openvdb::util::NullInterrupter {
   void end() override {
     if (target_) target_->end();
   }
-  bool wasInterrupted(int percent = -1) override {
-    return target_ && target_->wasInterrupted(percent);
-  }
+  bool wasInterrupted(int percent = -1) override { return target_ && target_->wasInterrupted(percent); }
 
  private:
   Interrupter* target_;

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/volume/ingest.h"
 
 #include <tbb/parallel_for.h>
@@ -17,7 +19,7 @@ namespace isovdb::volume {
 
 namespace {
 
-constexpr int kLeafDim = 8;  // OpenVDB leaf nodes are 8^3
+constexpr int kLeafDim = 8;       // OpenVDB leaf nodes are 8^3
 constexpr int kPruneEvery = 128;  // level-1 internal nodes span 128 voxels
 constexpr const char* kDeadBandKey = "isovdb_dead_band";
 
@@ -84,9 +86,8 @@ enum class BlockState : std::uint8_t { Empty, Tile, Leaf };
 /// Inserts a slab's classified blocks serially, in block order, so the tree is
 /// the same for any thread count. `tileValue(b)` is the value of a Tile block.
 template <typename TreeT, typename TileValue>
-void insertBlocks(TreeT& tree, const std::vector<BlockState>& state,
-                  std::vector<typename TreeT::LeafNodeType*>& leaves, int blocksX, std::int64_t z0,
-                  const AxisMap& toGrid, TileValue&& tileValue) {
+void insertBlocks(TreeT& tree, const std::vector<BlockState>& state, std::vector<typename TreeT::LeafNodeType*>& leaves,
+                  int blocksX, std::int64_t z0, const AxisMap& toGrid, TileValue&& tileValue) {
   for (std::size_t b = 0; b < state.size(); ++b) {
     const openvdb::Coord origin = toGrid(static_cast<int>(b % blocksX) * kLeafDim,
                                          static_cast<int>(b / blocksX) * kLeafDim, static_cast<int>(z0));
@@ -103,8 +104,8 @@ void checkDims(const io::SliceStream& stream) {
   constexpr std::int64_t kMaxDim = std::int64_t{1} << 30;  // openvdb::Coord is 32-bit
   for (int a = 0; a < 3; ++a)
     if (dims[a] <= 0 || dims[a] > kMaxDim)
-      throw InputError("'" + stream.source() + "': dimension " + std::to_string(a) + " is " +
-                       std::to_string(dims[a]) + ", expected 1.." + std::to_string(kMaxDim));
+      throw InputError("'" + stream.source() + "': dimension " + std::to_string(a) + " is " + std::to_string(dims[a]) +
+                       ", expected 1.." + std::to_string(kMaxDim));
   std::array<int, 3> axes = stream.header().gridAxis;
   std::sort(axes.begin(), axes.end());
   if (axes != std::array<int, 3>{0, 1, 2})
@@ -167,8 +168,7 @@ Volume ingestMask(io::SliceStream& stream, const MaskRule& rule, Interrupter* in
   return withSampledBox(Volume(VolumeKind::Mask, grid, geometryOf(header), stream.source()), header);
 }
 
-Volume ingestScalar(io::SliceStream& stream, const ScalarIngestOptions& options,
-                    Interrupter* interrupter) {
+Volume ingestScalar(io::SliceStream& stream, const ScalarIngestOptions& options, Interrupter* interrupter) {
   checkDims(stream);
   ProgressStage progress(interrupter, "ingest scalar");
   const io::VolumeHeader& header = stream.header();

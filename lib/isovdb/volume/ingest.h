@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file ingest.h
 /// @brief Streaming ingest of a dense volume into a sparse OpenVDB grid, slab by slab.
 ///

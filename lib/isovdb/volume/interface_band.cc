@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/volume/interface_band.h"
 
 #include <tbb/blocked_range.h>
@@ -106,7 +108,9 @@ VoxelBits dilateVoxels(const VoxelBits& w, const VoxelBits& below, const VoxelBi
       case 0:
         out[at] = v | (i > 0 ? w[at - 1] : below[kLeaf - 1]) | (i < kLeaf - 1 ? w[at + 1] : above[0]);
         break;
-      case 1: out[at] = v | (v << 8) | (v >> 8) | (below[at] >> 56) | (above[at] << 56); break;
+      case 1:
+        out[at] = v | (v << 8) | (v >> 8) | (below[at] >> 56) | (above[at] << 56);
+        break;
       default:
         out[at] = v | ((v << 1) & ~kByteLow) | ((v >> 1) & ~kByteHigh) | ((below[at] >> 7) & kByteLow) |
                   ((above[at] << 7) & kByteHigh);
@@ -176,17 +180,17 @@ struct Scratch {
     grown.resize(slotCount);
     rowBits.resize(slotCount);
   }
-  std::vector<std::uint8_t> mask;            ///< 1 inside
-  std::vector<std::uint8_t> site;            ///< 1 at an interface voxel within r of the chunk
+  std::vector<std::uint8_t> mask;  ///< 1 inside
+  std::vector<std::uint8_t> site;  ///< 1 at an interface voxel within r of the chunk
   /// Sites' tangent planes, one block of 512 per site slot (in a leaf's voxel order):
   /// only slots with an interface take this memory.
   std::vector<SitePlane> planes;
-  std::vector<std::int8_t> nearZ;            ///< offset along z to the nearest site (kNoSite)
-  std::vector<PlaneNearest> nearYZ;          ///< nearest site in the yz-plane
+  std::vector<std::int8_t> nearZ;    ///< offset along z to the nearest site (kNoSite)
+  std::vector<PlaneNearest> nearYZ;  ///< nearest site in the yz-plane
   std::vector<Slot> slots;
-  std::vector<VoxelBits> voxelBits;          ///< dilation buffer
+  std::vector<VoxelBits> voxelBits;                         ///< dilation buffer
   std::vector<VoxelBits> grownInside, grownOutside, grown;  ///< the face band's dilations
-  std::vector<RowBits> rowBits;              ///< dilation buffer
+  std::vector<RowBits> rowBits;                             ///< dilation buffer
   // Per site slot: the mask around it and its blur, window of 8 + 2 * kSiteStencil.
   static constexpr int kW = kLeaf + 2 * kSiteStencil;  // 14
   static constexpr int kS = kLeaf + 2;                 // 10: blurred values at the slot +-1
@@ -316,8 +320,8 @@ class ChunkBand {
           for (int axis = 0; axis < 3 && !border; ++axis)
             for (int side = 0; side < 2 && !border; ++side) {
               const int d = side ? 1 : -1;
-              border = faceDiffers(at, slot(s, sx + (axis == 0) * d, sy + (axis == 1) * d, sz + (axis == 2) * d),
-                                   axis, side);
+              border = faceDiffers(at, slot(s, sx + (axis == 0) * d, sy + (axis == 1) * d, sz + (axis == 2) * d), axis,
+                                   side);
             }
           if (!border) continue;
           at.flags |= kSites;
@@ -420,7 +424,7 @@ class ChunkBand {
     // Separable blur over the sites' bounding box and one voxel around it
     // (blurred index b <-> slot voxel b - 1 <-> window index b + off).
     constexpr int R = kBlurRadius, off = St - 1;
-    const int bLo[3] = {at.siteLo[0], at.siteLo[1], at.siteLo[2]};      // slot voxel lo - 1, + 1
+    const int bLo[3] = {at.siteLo[0], at.siteLo[1], at.siteLo[2]};  // slot voxel lo - 1, + 1
     const int bHi[3] = {at.siteHi[0] + 3, at.siteHi[1] + 3, at.siteHi[2] + 3};
     const int wLo[3] = {bLo[0] + off - R, bLo[1] + off - R, bLo[2] + off - R};
     const int wHi[3] = {bHi[0] + off + R, bHi[1] + off + R, bHi[2] + off + R};
@@ -487,7 +491,7 @@ class ChunkBand {
           }
           // The mask decides the side; the surface is within one voxel of an interface voxel.
           planes[(i << 6) | (j << 3) | k] = {inside ? std::clamp(d, -1.f, -kSiteFloor) : std::clamp(d, kSiteFloor, 1.f),
-                                              normal};
+                                             normal};
         }
     return true;
   }
@@ -651,9 +655,11 @@ class ChunkBand {
             std::fill_n(&row[static_cast<std::size_t>(from)], to - from, std::uint8_t{0});
         }
         int last = -4 * kMaxReach;
-        for (int t = 0; t < length; ++t) below[static_cast<std::size_t>(t)] = last = row[static_cast<std::size_t>(t)] ? t : last;
+        for (int t = 0; t < length; ++t)
+          below[static_cast<std::size_t>(t)] = last = row[static_cast<std::size_t>(t)] ? t : last;
         last = 4 * kMaxReach;
-        for (int t = length - 1; t >= 0; --t) above[static_cast<std::size_t>(t)] = last = row[static_cast<std::size_t>(t)] ? t : last;
+        for (int t = length - 1; t >= 0; --t)
+          above[static_cast<std::size_t>(t)] = last = row[static_cast<std::size_t>(t)] ? t : last;
         std::int8_t* out = &s.nearZ[layout_.voxel(x, y, z0)];
         for (int k = 0; k < kLeaf; ++k) {
           const int t = k + r;
@@ -739,7 +745,7 @@ class ChunkBand {
               s.planes[siteSlot.planes + static_cast<std::uint32_t>(((px & 7) << 6) | ((py & 7) << 3) | (pz & 7))];
           const std::array<float, 3>& normal = plane.normal;
           float d = plane.distance - (normal[0] * static_cast<float>(ox) + normal[1] * static_cast<float>(oy) +
-                                    normal[2] * static_cast<float>(oz));
+                                      normal[2] * static_cast<float>(oz));
           if (best > 0) d = inside ? std::min(d, -kInteriorFloor) : std::max(d, kInteriorFloor);
           if (std::abs(d) >= h) continue;
           values[index] = d;

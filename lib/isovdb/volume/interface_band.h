@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file interface_band.h
 /// @brief The narrow band of a mask built from its interface (the default distance
 ///        field, `--distance interface`). Heavy (includes openvdb.h through

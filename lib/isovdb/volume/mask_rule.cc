@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/volume/mask_rule.h"
 
 #include <cmath>
@@ -16,9 +18,15 @@ std::string MaskRule::describe() const {
     return out.str();
   }
   switch (test) {
-    case MaskTest::Above: out << "value > " << threshold; break;
-    case MaskTest::Below: out << "value < " << threshold; break;
-    case MaskTest::Between: out << "value in [" << threshold << ", " << upper << "]"; break;
+    case MaskTest::Above:
+      out << "value > " << threshold;
+      break;
+    case MaskTest::Below:
+      out << "value < " << threshold;
+      break;
+    case MaskTest::Between:
+      out << "value in [" << threshold << ", " << upper << "]";
+      break;
   }
   return out.str();
 }
@@ -32,9 +40,12 @@ MaskRule parseMaskText(const std::string& text) {
   if (!(in >> word >> bound) || (in >> rest) || !std::isfinite(bound)) throw fail();
   MaskRule rule;
   rule.threshold = bound;
-  if (word == "above") rule.test = MaskTest::Above;
-  else if (word == "below") rule.test = MaskTest::Below;
-  else throw fail();
+  if (word == "above")
+    rule.test = MaskTest::Above;
+  else if (word == "below")
+    rule.test = MaskTest::Below;
+  else
+    throw fail();
   return rule;
 }
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file mask_rule.h
 /// @brief Which samples of a dense volume are inside the object.
 #pragma once
@@ -24,12 +26,14 @@ struct MaskRule {
   std::vector<double> labels;  ///< label volumes: inside iff value is one of these
 
   bool inside(float value) const {
-    if (!labels.empty())
-      return std::find(labels.begin(), labels.end(), static_cast<double>(value)) != labels.end();
+    if (!labels.empty()) return std::find(labels.begin(), labels.end(), static_cast<double>(value)) != labels.end();
     switch (test) {
-      case MaskTest::Above: return value > threshold;
-      case MaskTest::Below: return value < threshold;
-      case MaskTest::Between: return value >= threshold && value <= upper;
+      case MaskTest::Above:
+        return value > threshold;
+      case MaskTest::Below:
+        return value < threshold;
+      case MaskTest::Between:
+        return value >= threshold && value <= upper;
     }
     return false;
   }

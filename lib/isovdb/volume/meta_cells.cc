@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/volume/meta_cells.h"
-
 
 #include <algorithm>
 #include <cmath>
@@ -59,8 +60,7 @@ MetaCellPartition partitionMetaCells(const Volume& field, int size, float iso) {
   return partition;
 }
 
-void readMetaCell(const Volume& field, const MetaCellIndex& index, int size, octree::MetaCellSamples& out,
-                  int apron) {
+void readMetaCell(const Volume& field, const MetaCellIndex& index, int size, octree::MetaCellSamples& out, int apron) {
   readBlock(field, {index[0] * size, index[1] * size, index[2] * size}, size, out, apron);
 }
 

@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file meta_cells.h
 /// @brief Partition of a distance field into meta-cells, and reading one meta-cell's
 ///        samples (paper 000 §4.2.1).
@@ -22,9 +24,9 @@ namespace isovdb::volume {
 using MetaCellIndex = std::array<int, 3>;
 
 struct MetaCellPartition {
-  int size = 128;                      ///< S, voxels per meta-cell edge
-  std::vector<MetaCellIndex> cells;    ///< meta-cells the surface may cross, sorted z, y, x
-  std::int64_t leavesScanned = 0;      ///< SDF leaves looked at (no voxel of a tile is read)
+  int size = 128;                    ///< S, voxels per meta-cell edge
+  std::vector<MetaCellIndex> cells;  ///< meta-cells the surface may cross, sorted z, y, x
+  std::int64_t leavesScanned = 0;    ///< SDF leaves looked at (no voxel of a tile is read)
 };
 
 /// Meta-cells of size `size` that may hold a sign change of `field` across `iso`.

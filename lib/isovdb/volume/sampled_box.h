@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file sampled_box.h
 /// @brief The index box a volume's file sampled (its dims), kept with the grid.
 ///

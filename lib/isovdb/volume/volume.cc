@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 #include "isovdb/volume/volume.h"
 
 #include <openvdb/tools/Count.h>
@@ -8,15 +10,17 @@ namespace isovdb::volume {
 
 std::string_view volumeKindName(VolumeKind kind) {
   switch (kind) {
-    case VolumeKind::Mask: return "mask";
-    case VolumeKind::Scalar: return "scalar";
-    case VolumeKind::DistanceField: return "distance field";
+    case VolumeKind::Mask:
+      return "mask";
+    case VolumeKind::Scalar:
+      return "scalar";
+    case VolumeKind::DistanceField:
+      return "distance field";
   }
   return "unknown";
 }
 
-Volume::Volume(VolumeKind kind, std::shared_ptr<openvdb::GridBase> grid, Geometry geometry,
-               std::string name)
+Volume::Volume(VolumeKind kind, std::shared_ptr<openvdb::GridBase> grid, Geometry geometry, std::string name)
     : kind_(kind), grid_(std::move(grid)), geometry_(geometry), name_(std::move(name)) {}
 
 const MaskGrid& maskGrid(const Volume& volume) {

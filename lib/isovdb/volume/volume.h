@@ -1,3 +1,5 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
 /// @file volume.h
 /// @brief The sparse volume every stage after ingest works on: an OpenVDB grid
 ///        in voxel index space plus the transform to world space.
@@ -46,10 +48,10 @@ struct Geometry {
 
 /// Figures `isovdb info` and the statistics report about a grid.
 struct GridStats {
-  std::int64_t activeVoxels = 0;  ///< voxels inside (mask) or stored (scalar, SDF band), tiles expanded
-  std::int64_t leafCount = 0;     ///< 8^3 leaf nodes
-  std::int64_t tileCount = 0;     ///< active tiles at any level (homogeneous blocks)
-  std::int64_t memoryBytes = 0;   ///< openvdb's memUsage() of the tree
+  std::int64_t activeVoxels = 0;        ///< voxels inside (mask) or stored (scalar, SDF band), tiles expanded
+  std::int64_t leafCount = 0;           ///< 8^3 leaf nodes
+  std::int64_t tileCount = 0;           ///< active tiles at any level (homogeneous blocks)
+  std::int64_t memoryBytes = 0;         ///< openvdb's memUsage() of the tree
   std::array<int, 3> bboxMin{0, 0, 0};  ///< active bounding box, index space, inclusive
   std::array<int, 3> bboxMax{-1, -1, -1};
   float minValue = 0.f, maxValue = 0.f;  ///< value range (Scalar and DistanceField only)
@@ -60,8 +62,7 @@ struct GridStats {
 class Volume {
  public:
   Volume() = default;
-  Volume(VolumeKind kind, std::shared_ptr<openvdb::GridBase> grid, Geometry geometry,
-         std::string name);
+  Volume(VolumeKind kind, std::shared_ptr<openvdb::GridBase> grid, Geometry geometry, std::string name);
 
   VolumeKind kind() const { return kind_; }
   const Geometry& geometry() const { return geometry_; }
