@@ -7,8 +7,8 @@
 #include "input_flags.h"
 #include "isovdb/errors.h"
 #include "isovdb/io/atomic_file.h"
-#include "isovdb/io/dense_writer.h"
-#include "isovdb/io/vdb_file.h"
+#include "isovdb/store/dense_writer.h"
+#include "isovdb/store/vdb_file.h"
 #include "isovdb/pipeline/load_volume.h"
 
 namespace isovdb::cli {
@@ -33,7 +33,7 @@ void addConvertCommand(CLI::App& app, Context& context) {
   state->flags.add(*command);
   command->callback([state, &context] {
     const bool toVdb = pipeline::isVdbPath(state->output);
-    if (!toVdb && !io::isDenseOutputPath(state->output))
+    if (!toVdb && !store::isDenseOutputPath(state->output))
       throw InputError("'" + state->output + "': unknown output format, expected .vdb, .nrrd or .raw");
     io::AtomicFile::checkWritable(state->output);
     if (!state->statsPath.empty()) io::AtomicFile::checkWritable(state->statsPath);
@@ -44,9 +44,9 @@ void addConvertCommand(CLI::App& app, Context& context) {
       pipeline::Statistics::StageTimer timer(&stats, "write");
       stats["output"]["path"] = state->output;
       if (toVdb) {
-        io::writeVdb(state->output, input, {.gridName = state->gridName});
+        store::writeVdb(state->output, input, {.gridName = state->gridName});
       } else {
-        const io::DenseWriteResult written = io::writeDenseVolume(state->output, input);
+        const store::DenseWriteResult written = store::writeDenseVolume(state->output, input);
         stats["output"]["dims"] = written.dims;
         stats["output"]["sample_type"] = "float32 little-endian";
         stats["output"]["header"] = written.header.string();

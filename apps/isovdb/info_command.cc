@@ -3,7 +3,7 @@
 // `isovdb info IN`: what a volume file holds and what its sparse grid costs.
 #include "commands.h"
 #include "input_flags.h"
-#include "isovdb/io/vdb_file.h"
+#include "isovdb/store/vdb_file.h"
 #include "isovdb/pipeline/load_volume.h"
 
 namespace isovdb::cli {
@@ -28,7 +28,7 @@ void addInfoCommand(CLI::App& app, Context& context) {
     if (pipeline::isVdbPath(state->input)) {
       auto& grids = stats["grids"];
       grids = pipeline::Statistics::Json::array();
-      for (const io::VdbGridInfo& grid : io::listVdbGrids(state->input))
+      for (const store::VdbGridInfo& grid : store::listVdbGrids(state->input))
         grids.push_back({{"name", grid.name}, {"value_type", grid.valueType}, {"class", grid.gridClass}});
     }
     pipeline::InputOptions options = state->flags.toOptions(state->input);

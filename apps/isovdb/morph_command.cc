@@ -14,7 +14,7 @@
 #include "isovdb/errors.h"
 #include "isovdb/io/atomic_file.h"
 #include "isovdb/io/mesh_file.h"
-#include "isovdb/io/vdb_file.h"
+#include "isovdb/store/vdb_file.h"
 #include "isovdb/morph/reconstruct.h"
 #include "isovdb/morph/reconstruction_report.h"
 #include "isovdb/morph/slice_image.h"
@@ -151,7 +151,7 @@ void addMorphCommand(CLI::App& app, Context& context) {
       std::fprintf(stderr, "isovdb: warning: '%s': the slices hold no object (empty mesh)\n", state->input.c_str());
     {
       pipeline::Statistics::StageTimer timer(&stats, "write");
-      if (!state->vdbPath.empty()) io::writeVdb(state->vdbPath, result.volume, {.gridName = "sdf"});
+      if (!state->vdbPath.empty()) store::writeVdb(state->vdbPath, result.volume, {.gridName = "sdf"});
       io::writeMesh(state->output, mesh);
       if (!state->saveSlices.empty()) {
         std::filesystem::create_directories(state->saveSlices);

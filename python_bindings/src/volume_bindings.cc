@@ -10,9 +10,9 @@
 #include "array_slice_stream.h"
 #include "bindings.h"
 #include "isovdb/errors.h"
-#include "isovdb/io/dense_array.h"
-#include "isovdb/io/dense_writer.h"
-#include "isovdb/io/vdb_file.h"
+#include "isovdb/store/dense_array.h"
+#include "isovdb/store/dense_writer.h"
+#include "isovdb/store/vdb_file.h"
 #include "isovdb/pipeline/input_choices.h"
 #include "isovdb/pipeline/load_volume.h"
 #include "isovdb/pipeline/write_distance_field.h"
@@ -125,7 +125,7 @@ PyVolume readVolume(const std::filesystem::path& path, const py::object& dims, c
 py::array toNumpy(const PyVolume& self, const py::object& bbox) {
   volume::IndexBox box;
   if (bbox.is_none()) {
-    box = io::defaultDenseBox(self.volume);
+    box = store::defaultDenseBox(self.volume);
   } else {
     const auto corners = bbox.cast<std::pair<std::array<int, 3>, std::array<int, 3>>>();
     box = {.min = corners.first, .max = corners.second};
@@ -142,13 +142,13 @@ py::array toNumpy(const PyVolume& self, const py::object& bbox) {
     py::array_t<bool> out(shape);
     bool* data = out.mutable_data();
     py::gil_scoped_release release;
-    io::copyToDense(self.volume, box, data);
+    store::copyToDense(self.volume, box, data);
     return out;
   }
   py::array_t<float> out(shape);
   float* data = out.mutable_data();
   py::gil_scoped_release release;
-  io::copyToDense(self.volume, box, data);
+  store::copyToDense(self.volume, box, data);
   return out;
 }
 
@@ -167,9 +167,9 @@ py::dict info(const PyVolume& self) {
 void write(const PyVolume& self, const std::filesystem::path& path, const std::string& gridName) {
   py::gil_scoped_release release;
   if (pipeline::isVdbPath(path))
-    io::writeVdb(path, self.volume, {.gridName = gridName});
-  else if (io::isDenseOutputPath(path))
-    io::writeDenseVolume(path, self.volume);
+    store::writeVdb(path, self.volume, {.gridName = gridName});
+  else if (store::isDenseOutputPath(path))
+    store::writeDenseVolume(path, self.volume);
   else
     throw InputError("'" + path.string() + "': unknown volume format, expected .vdb, .raw or .nrrd");
 }
@@ -260,7 +260,7 @@ read_volume(), read_segy(), from_numpy() or distance_field().)doc")
       .def_property_readonly(
           "shape",
           [](const PyVolume& v) {
-            const volume::IndexBox box = io::defaultDenseBox(v.volume);
+            const volume::IndexBox box = store::defaultDenseBox(v.volume);
             return py::make_tuple(box.max[0] - box.min[0] + 1, box.max[1] - box.min[1] + 1,
                                   box.max[2] - box.min[2] + 1);
           },

@@ -32,9 +32,9 @@
 namespace isovdb::contour {
 namespace {
 
+using cell::makeMetaCellSamples;
+using cell::MetaCellSamples;
 using octree::LinearOctree;
-using octree::makeMetaCellSamples;
-using octree::MetaCellSamples;
 using V3 = std::array<double, 3>;
 
 V3 sub(const V3& a, const V3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
@@ -56,17 +56,17 @@ double boxSdf(const V3& p, const V3& c, const V3& half) {
 using test::cylinderSdf;
 
 /// The sample shape's distance field (mask -> OpenVDB SDF), in a padded whole-volume meta-cell.
-MetaCellSamples shapeSamples(samples::ShapeKind kind, int shapeSize, int metaCellSize, int pad) {
+cell::MetaCellSamples shapeSamples(samples::ShapeKind kind, int shapeSize, int metaCellSize, int pad) {
   auto stream = samples::makeShapeStream(kind, samples::ShapeOptions{.size = shapeSize});
   const volume::Volume mask = volume::ingestMask(*stream, volume::MaskRule{});
   const volume::Volume sdf = volume::distanceField(mask);
   auto accessor = volume::fieldGrid(sdf).getConstAccessor();
-  return makeMetaCellSamples(metaCellSize, {-pad, -pad, -pad},
-                             [&](int x, int y, int z) { return accessor.getValue(openvdb::Coord(x, y, z)); });
+  return cell::makeMetaCellSamples(metaCellSize, {-pad, -pad, -pad},
+                                   [&](int x, int y, int z) { return accessor.getValue(openvdb::Coord(x, y, z)); });
 }
 
 /// Trilinear interpolation of the samples at a global position.
-double trilinear(const MetaCellSamples& s, const V3& p) {
+double trilinear(const cell::MetaCellSamples& s, const V3& p) {
   V3 q = sub(p, {double(s.origin[0]), double(s.origin[1]), double(s.origin[2])});
   std::array<int, 3> i0;
   V3 f;
@@ -112,7 +112,7 @@ struct ContourRun {
   mesh::MeshReport report;
 };
 
-ContourRun contourAndValidate(const MetaCellSamples& samples, const LinearOctree& tree, bool intersectionFree) {
+ContourRun contourAndValidate(const cell::MetaCellSamples& samples, const LinearOctree& tree, bool intersectionFree) {
   ContourRun run;
   run.mesh = contourAdaptive(samples, tree, AdaptiveContourOptions{.intersectionFree = intersectionFree}, &run.stats);
   run.report = mesh::validateMesh(run.mesh);
@@ -129,7 +129,7 @@ std::size_t complexLeavesAtMaxLevel(const LinearOctree& tree) {
 
 TEST(AdaptiveContour, SphereIsClosedOutwardAndIntersectionFree) {
   const V3 c{32.3, 31.8, 32.1};
-  const MetaCellSamples s = makeMetaCellSamples(64, {0, 0, 0}, [&](int x, int y, int z) {
+  const cell::MetaCellSamples s = cell::makeMetaCellSamples(64, {0, 0, 0}, [&](int x, int y, int z) {
     return sphereSdf({double(x), double(y), double(z)}, c, 20.4);
   });
   // minDepth 4 (4-voxel cells): on a smooth sphere the QEF criterion alone barely refines.
@@ -177,7 +177,7 @@ constexpr ShapeCase kShapes[] = {{samples::ShapeKind::Sphere, "sphere"},
                                  {samples::ShapeKind::GyroidSlab, "gyroid-slab"},
                                  {samples::ShapeKind::SaltDome, "salt-dome"}};
 
-double meanDistance(const mesh::Mesh& m, const MetaCellSamples& s) {
+double meanDistance(const mesh::Mesh& m, const cell::MetaCellSamples& s) {
   double sum = 0;
   for (const auto& p : m.positions) sum += std::abs(trilinear(s, toV3(p)));
   return m.positions.empty() ? 0.0 : sum / static_cast<double>(m.positions.size());
@@ -187,7 +187,7 @@ TEST(AdaptiveContour, ShapesClosedIntersectionFreeWithFewFans) {
   std::int64_t plainIntersections = 0;
   for (const ShapeCase& shape : kShapes) {
     SCOPED_TRACE(shape.name);
-    const MetaCellSamples s = shapeSamples(shape.kind, 64, 128, 32);
+    const cell::MetaCellSamples s = shapeSamples(shape.kind, 64, 128, 32);
     octree::OctreeBuildStats buildStats;
     const LinearOctree tree = octree::buildOctree(s, adaptiveTree(testTolerance()), &buildStats);
     const ContourRun fans = contourAndValidate(s, tree, true);
@@ -224,7 +224,7 @@ TEST(AdaptiveContour, ShapesClosedIntersectionFreeWithFewFans) {
 }
 
 TEST(AdaptiveContour, SaltDomeThreeTimesFewerTrianglesThanRegularWithinHalfAVoxel) {
-  const MetaCellSamples s = shapeSamples(samples::ShapeKind::SaltDome, 64, 128, 32);
+  const cell::MetaCellSamples s = shapeSamples(samples::ShapeKind::SaltDome, 64, 128, 32);
   const LinearOctree adaptive = octree::buildOctree(s, adaptiveTree(testTolerance()));
   octree::OctreeOptions regularOptions = adaptiveTree();
   regularOptions.construction = octree::OctreeConstruction::Regular;
@@ -314,7 +314,7 @@ struct FeatureRun {
   ContourRun run;
 };
 
-FeatureRun contourFeatures(const MetaCellSamples& samples, bool sharp) {
+FeatureRun contourFeatures(const cell::MetaCellSamples& samples, bool sharp) {
   FeatureRun f;
   f.tree = octree::buildOctree(samples, featureTree(sharp), &f.build);
   f.run.mesh = contourAdaptive(samples, f.tree, AdaptiveContourOptions{.sharpFeatures = sharp}, &f.run.stats);
@@ -331,7 +331,7 @@ using test::levelSetVolume;
 TEST(AdaptiveContour, SharpCubeKeepsEdgesAndCornersUnlikeMarchingCubes) {
   const V3 c{32.37, 31.71, 32.23}, h{12.3, 11.6, 10.9};
   auto sdf = [&](const V3& p) { return boxSdf(p, c, h); };
-  const MetaCellSamples s = makeMetaCellSamples(64, {0, 0, 0}, [&](int x, int y, int z) {
+  const cell::MetaCellSamples s = cell::makeMetaCellSamples(64, {0, 0, 0}, [&](int x, int y, int z) {
     return sdf({double(x), double(y), double(z)});
   });
   const mesh::Mesh mc = contourWithOpenVdb(levelSetVolume(64, sdf));
@@ -406,7 +406,7 @@ TEST(AdaptiveContour, SharpCylinderKeepsItsRimsWithSharpFeatures) {
   const V3 c{32.41, 31.63, 32.27};
   const double r = 14.3, hh = 11.2;
   auto sdf = [&](const V3& p) { return cylinderSdf(p, c, r, hh); };
-  const MetaCellSamples s = makeMetaCellSamples(size, {0, 0, 0}, [&](int x, int y, int z) {
+  const cell::MetaCellSamples s = cell::makeMetaCellSamples(size, {0, 0, 0}, [&](int x, int y, int z) {
     return sdf({double(x), double(y), double(z)});
   });
   const mesh::Mesh mc = contourWithOpenVdb(levelSetVolume(size, sdf));
@@ -459,7 +459,7 @@ TEST(AdaptiveContour, SharpCylinderKeepsItsRimsWithSharpFeatures) {
 // ---- topology: several sheets in one cell, hidden components ------------------
 
 /// Adaptive tree down to 1-voxel cells from the root (no QEF criterion), contoured and validated.
-ContourRun contourRandom(const MetaCellSamples& samples, bool manifoldFix,
+ContourRun contourRandom(const cell::MetaCellSamples& samples, bool manifoldFix,
                          octree::OctreeBuildStats* buildStats = nullptr) {
   const LinearOctree tree = octree::buildOctree(
       samples, octree::OctreeOptions{.construction = octree::OctreeConstruction::Adaptive, .minDepth = 0}, buildStats);
@@ -477,7 +477,7 @@ TEST(AdaptiveContour, RandomSignFieldsGiveClosedManifoldMeshes) {
   for (int trial = 0; trial < 30; ++trial) {
     std::bernoulli_distribution inside(trial % 2 ? 0.3 : 0.5);
     std::uniform_real_distribution<float> magnitude(0.1f, 1.0f);
-    const MetaCellSamples s = makeMetaCellSamples(16, {0, 0, 0}, [&](int x, int y, int z) {
+    const cell::MetaCellSamples s = cell::makeMetaCellSamples(16, {0, 0, 0}, [&](int x, int y, int z) {
       if (x < 1 || y < 1 || z < 1 || x > 15 || y > 15 || z > 15) return 1.0f;
       return inside(rng) ? -magnitude(rng) : magnitude(rng);
     });
@@ -507,7 +507,7 @@ TEST(AdaptiveContour, RandomSignFieldsGiveClosedManifoldMeshes) {
 TEST(AdaptiveContour, BubbleHiddenInACoarseCellIsKept) {
   // A sphere whose inside holds a 1-voxel outside bubble away from every coarse face:
   // without the hidden-component criterion the coarse leaf around it swallows it.
-  MetaCellSamples s = makeMetaCellSamples(64, {0, 0, 0}, [](int x, int y, int z) {
+  cell::MetaCellSamples s = cell::makeMetaCellSamples(64, {0, 0, 0}, [](int x, int y, int z) {
     return static_cast<float>(std::sqrt((x - 30.3) * (x - 30.3) + (y - 31.1) * (y - 31.1) + (z - 29.7) * (z - 29.7)) -
                               20.0);
   });
@@ -539,7 +539,7 @@ TEST(AdaptiveContour, BubbleHiddenInACoarseCellIsKept) {
 // ---- determinism, options, boundary -------------------------------------------
 
 TEST(AdaptiveContour, DeterministicForOneAndEightThreads) {
-  const MetaCellSamples s = shapeSamples(samples::ShapeKind::GyroidSlab, 64, 128, 32);
+  const cell::MetaCellSamples s = shapeSamples(samples::ShapeKind::GyroidSlab, 64, 128, 32);
   const LinearOctree tree = octree::buildOctree(s, adaptiveTree(testTolerance()));
   mesh::Mesh meshes[2];
   AdaptiveContourStats stats[2];
@@ -555,16 +555,16 @@ TEST(AdaptiveContour, DeterministicForOneAndEightThreads) {
 }
 
 TEST(AdaptiveContour, SizeMismatchThrows) {
-  const MetaCellSamples s = makeMetaCellSamples(16, {0, 0, 0}, [](int x, int, int) { return x - 7.5; });
-  const MetaCellSamples t = makeMetaCellSamples(32, {0, 0, 0}, [](int x, int, int) { return x - 7.5; });
+  const cell::MetaCellSamples s = cell::makeMetaCellSamples(16, {0, 0, 0}, [](int x, int, int) { return x - 7.5; });
+  const cell::MetaCellSamples t = cell::makeMetaCellSamples(32, {0, 0, 0}, [](int x, int, int) { return x - 7.5; });
   const LinearOctree tree = octree::buildOctree(t, adaptiveTree());
   EXPECT_THROW(contourAdaptive(s, tree), InputError);
 }
 
 TEST(AdaptiveContour, EdgesOnTheMetaCellBoundaryAreSkipped) {
   // A plane crossing the whole meta-cell: its polygons along the boundary are left to stitching.
-  const MetaCellSamples s =
-      makeMetaCellSamples(16, {0, 0, 0}, [](int x, int y, int z) { return 0.3 * x + 0.2 * y + 0.1 * z - 4.1; });
+  const cell::MetaCellSamples s =
+      cell::makeMetaCellSamples(16, {0, 0, 0}, [](int x, int y, int z) { return 0.3 * x + 0.2 * y + 0.1 * z - 4.1; });
   AdaptiveContourStats stats;
   const mesh::Mesh m = contourAdaptive(s, octree::buildOctree(s, adaptiveTree()), {}, &stats);
   EXPECT_GT(stats.boundaryEdges, 0);

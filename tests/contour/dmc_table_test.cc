@@ -3,7 +3,7 @@
 // Tests of lib/isovdb/contour/dmc_table.h: the generated Dual Marching Cubes
 // table and Wenger's alternative groupings (2B-I / 3B-I); and voxel_dmc.h's
 // reading of the same cells (joined faces, split faces, tube sectors).
-#include "isovdb/contour/dmc_table.h"
+#include "isovdb/cell/dmc_table.h"
 #include "isovdb/contour/voxel_dmc.h"
 
 #include <gtest/gtest.h>
@@ -25,7 +25,7 @@ std::uint8_t corners(std::initializer_list<int> list) {
   return static_cast<std::uint8_t>(c);
 }
 
-void expectConsistent(std::uint8_t config, const DmcEntry& entry) {
+void expectConsistent(std::uint8_t config, const cell::DmcEntry& entry) {
   const std::uint16_t bipolar = bipolarEdgeMask(config);
   std::uint16_t all = 0;
   for (int g = 0; g < entry.vertexCount; ++g) {
@@ -52,63 +52,64 @@ TEST(DmcTable, EveryEntryPartitionsTheBipolarEdgesIntoCycles) {
   int vertices = 0, maxVertices = 0;
   for (int c = 0; c < 256; ++c) {
     const auto config = static_cast<std::uint8_t>(c);
-    expectConsistent(config, dmcEntry(config));
-    expectConsistent(config, dmcEntry(config, true));
-    vertices += dmcEntry(config).vertexCount;
-    maxVertices = std::max<int>(maxVertices, dmcEntry(config).vertexCount);
-    EXPECT_EQ(dmcEntry(config).vertexCount == 0, config == 0 || config == 255);
+    expectConsistent(config, cell::dmcEntry(config));
+    expectConsistent(config, cell::dmcEntry(config, true));
+    vertices += cell::dmcEntry(config).vertexCount;
+    maxVertices = std::max<int>(maxVertices, cell::dmcEntry(config).vertexCount);
+    EXPECT_EQ(cell::dmcEntry(config).vertexCount == 0, config == 0 || config == 255);
   }
   EXPECT_EQ(maxVertices, 4);
-  EXPECT_EQ(dmcEntry(corners({0, 3, 5, 6})).vertexCount, 4);  // four isolated inside corners
+  EXPECT_EQ(cell::dmcEntry(corners({0, 3, 5, 6})).vertexCount, 4);  // four isolated inside corners
   // The generated table equals a copy built again from scratch.
   for (int c = 0; c < 256; ++c) {
-    const DmcEntry e = detail::buildDmcEntry(static_cast<std::uint8_t>(c), 0);
-    EXPECT_EQ(e.groups, dmcEntry(static_cast<std::uint8_t>(c)).groups);
+    const cell::DmcEntry e = cell::detail::buildDmcEntry(static_cast<std::uint8_t>(c), 0);
+    EXPECT_EQ(e.groups, cell::dmcEntry(static_cast<std::uint8_t>(c)).groups);
   }
   RecordProperty("vertices", vertices);
 }
 
 TEST(DmcTable, KnownCases) {
   // One inside corner: one triangle-like patch over its three edges.
-  const DmcEntry& one = dmcEntry(corners({0}));
+  const cell::DmcEntry& one = cell::dmcEntry(corners({0}));
   ASSERT_EQ(one.vertexCount, 1);
   EXPECT_EQ(one.groups[0], bipolarEdgeMask(corners({0})));
   // Two inside corners on a face diagonal: inside corners are separated -> two vertices.
-  EXPECT_EQ(dmcEntry(corners({0, 3})).vertexCount, 2);
-  EXPECT_EQ(dmcEntry(corners({0, 3})).doubleFace, -1);
+  EXPECT_EQ(cell::dmcEntry(corners({0, 3})).vertexCount, 2);
+  EXPECT_EQ(cell::dmcEntry(corners({0, 3})).doubleFace, -1);
   // Two opposite corners of the cube: two vertices.
-  EXPECT_EQ(dmcEntry(corners({0, 7})).vertexCount, 2);
+  EXPECT_EQ(cell::dmcEntry(corners({0, 7})).vertexCount, 2);
   // An edge of two inside corners: one quad-like patch of 4 edges.
-  ASSERT_EQ(dmcEntry(corners({0, 1})).vertexCount, 1);
-  EXPECT_EQ(std::popcount(dmcEntry(corners({0, 1})).groups[0]), 4);
+  ASSERT_EQ(cell::dmcEntry(corners({0, 1})).vertexCount, 1);
+  EXPECT_EQ(std::popcount(cell::dmcEntry(corners({0, 1})).groups[0]), 4);
   // 2B-I: two OUTSIDE corners on the diagonal of face z-min (face 4): one vertex over 6 edges,
   // passing twice through face 4; the alternative splits it into the two corners' triangles.
   const auto twoB = static_cast<std::uint8_t>(~corners({0, 3}));
-  ASSERT_EQ(dmcEntry(twoB).vertexCount, 1);
-  EXPECT_EQ(dmcEntry(twoB).doubleFace, 4);
-  ASSERT_EQ(dmcEntry(twoB, true).vertexCount, 2);
-  EXPECT_EQ(std::popcount(dmcEntry(twoB, true).groups[0]), 3);
-  EXPECT_EQ(std::popcount(dmcEntry(twoB, true).groups[1]), 3);
+  ASSERT_EQ(cell::dmcEntry(twoB).vertexCount, 1);
+  EXPECT_EQ(cell::dmcEntry(twoB).doubleFace, 4);
+  ASSERT_EQ(cell::dmcEntry(twoB, true).vertexCount, 2);
+  EXPECT_EQ(std::popcount(cell::dmcEntry(twoB, true).groups[0]), 3);
+  EXPECT_EQ(std::popcount(cell::dmcEntry(twoB, true).groups[1]), 3);
   // 3B-I: outside {0, 3, 7}: one vertex, alternative = a triangle + a quad.
   const auto threeB = static_cast<std::uint8_t>(~corners({0, 3, 7}));
-  ASSERT_EQ(dmcEntry(threeB).vertexCount, 1);
-  EXPECT_EQ(dmcEntry(threeB).doubleFace, 4);
-  ASSERT_EQ(dmcEntry(threeB, true).vertexCount, 2);
-  EXPECT_EQ(std::popcount(dmcEntry(threeB, true).groups[0]) + std::popcount(dmcEntry(threeB, true).groups[1]), 7);
+  ASSERT_EQ(cell::dmcEntry(threeB).vertexCount, 1);
+  EXPECT_EQ(cell::dmcEntry(threeB).doubleFace, 4);
+  ASSERT_EQ(cell::dmcEntry(threeB, true).vertexCount, 2);
+  EXPECT_EQ(
+      std::popcount(cell::dmcEntry(threeB, true).groups[0]) + std::popcount(cell::dmcEntry(threeB, true).groups[1]), 7);
 }
 
 TEST(DmcTable, DoubledFacesAreExactlyWengers2BAnd3BConfigurations) {
   int twoB = 0, threeB = 0;
   for (int c = 0; c < 256; ++c) {
     const auto config = static_cast<std::uint8_t>(c);
-    const DmcEntry& base = dmcEntry(config);
-    const DmcEntry& alt = dmcEntry(config, true);
+    const cell::DmcEntry& base = cell::dmcEntry(config);
+    const cell::DmcEntry& alt = cell::dmcEntry(config, true);
     if (base.doubleFace < 0) {
       EXPECT_EQ(alt.groups, base.groups);
       continue;
     }
     const int f = base.doubleFace;
-    EXPECT_TRUE(isAmbiguousFace(config, f));
+    EXPECT_TRUE(cell::isAmbiguousFace(config, f));
     const int outside = 8 - std::popcount(unsigned(config));
     if (outside == 2) ++twoB;
     if (outside == 3) ++threeB;
@@ -127,8 +128,8 @@ TEST(DmcTable, InsideOutsideDualityFlipsEveryAmbiguousFace) {
   // Resolving every face with the outside separated is the table of the complement.
   for (int c = 0; c < 256; ++c) {
     const auto config = static_cast<std::uint8_t>(c);
-    const DmcEntry flipped = detail::buildDmcEntry(config, 0x3f);
-    const DmcEntry& complement = dmcEntry(static_cast<std::uint8_t>(~config));
+    const cell::DmcEntry flipped = cell::detail::buildDmcEntry(config, 0x3f);
+    const cell::DmcEntry& complement = cell::dmcEntry(static_cast<std::uint8_t>(~config));
     EXPECT_EQ(flipped.vertexCount, complement.vertexCount) << c;
     EXPECT_EQ(flipped.groups, complement.groups) << c;
   }
@@ -140,8 +141,8 @@ TEST(DmcTable, FaceDecisionDependsOnlyOnTheFace) {
   for (int f = 0; f < 6; ++f)
     for (int c = 0; c < 256; ++c) {
       const auto config = static_cast<std::uint8_t>(c);
-      if (!isAmbiguousFace(config, f)) continue;
-      const DmcEntry& e = dmcEntry(config);
+      if (!cell::isAmbiguousFace(config, f)) continue;
+      const cell::DmcEntry& e = cell::dmcEntry(config);
       if (e.doubleFace == f) continue;
       // Edges of face f grouped in pairs: each pair shares an inside corner.
       const std::uint16_t onFace = static_cast<std::uint16_t>(bipolarEdgeMask(config) & cellFaceEdgeMask(f));
@@ -163,11 +164,11 @@ TEST(DmcTable, FaceDecisionDependsOnlyOnTheFace) {
 TEST(VoxelDmc, JoinedFacesAreTheComplementsTableAndEveryEntryIsConsistent) {
   for (int c = 0; c < 256; ++c) {
     const auto config = static_cast<std::uint8_t>(c);
-    const DmcEntry& voxels = voxelDmcEntry(config);
+    const cell::DmcEntry& voxels = voxelDmcEntry(config);
     expectConsistent(config, voxels);
-    EXPECT_EQ(voxels.groups, dmcEntry(static_cast<std::uint8_t>(~config)).groups) << c;
+    EXPECT_EQ(voxels.groups, cell::dmcEntry(static_cast<std::uint8_t>(~config)).groups) << c;
     // The doubled face of the joined reading is the complement's: outside corners on its diagonal.
-    EXPECT_EQ(voxels.doubleFace, dmcEntry(static_cast<std::uint8_t>(~config)).doubleFace) << c;
+    EXPECT_EQ(voxels.doubleFace, cell::dmcEntry(static_cast<std::uint8_t>(~config)).doubleFace) << c;
   }
 }
 
@@ -218,7 +219,7 @@ TEST(VoxelDmc, TubesAreTheFourBodyDiagonalPairsAndTheirSectorsCutEveryEdge) {
 TEST(VoxelDmc, SplitVerticesTakeTheTwoEdgesAtEachOutsideCorner) {
   // Corners 0 and 3 inside on face z = 0 (an ambiguous face), corners 1 and 2 outside.
   const std::uint8_t config = corners({0, 3, 4, 5, 6, 7});
-  ASSERT_TRUE(isAmbiguousFace(config, 4));
+  ASSERT_TRUE(cell::isAmbiguousFace(config, 4));
   const auto edges = splitVertexEdges(config, 4);
   for (int slot = 0; slot < 2; ++slot) {
     const int outside = slot == 0 ? 1 : 2;

@@ -2,7 +2,7 @@
 // Copyright Contributors to the isovdb project.
 // Tests of lib/isovdb/contour/dual_vertex.h, gradient.h and edge_intersection.h
 // on planes, sharp edges and corners sampled on a grid.
-#include "isovdb/contour/dual_vertex.h"
+#include "isovdb/cell/dual_vertex.h"
 #include "isovdb/contour/leaf_groups.h"
 
 #include <gtest/gtest.h>
@@ -13,15 +13,16 @@
 #include <cstdio>
 #include <random>
 
-#include "isovdb/contour/edge_intersection.h"
-#include "isovdb/contour/gradient.h"
+#include "isovdb/cell/edge_intersection.h"
+#include "isovdb/cell/gradient.h"
 #include "isovdb/octree/build.h"
 
 namespace isovdb::contour {
 namespace {
 
-using octree::makeMetaCellSamples;
-using octree::MetaCellSamples;
+using cell::makeMetaCellSamples;
+using cell::MetaCellSamples;
+using cell::Vec3f;
 using V3 = std::array<double, 3>;
 
 V3 unit(V3 v) {
@@ -36,8 +37,8 @@ V3 cross(const V3& a, const V3& b) {
 V3 toV3(const Vec3f& v) { return {v[0], v[1], v[2]}; }
 
 /// Signed distance-like field of the intersection of half-spaces n_i . (x - c) <= 0.
-MetaCellSamples halfSpaces(const std::vector<V3>& normals, const V3& c, std::array<int, 3> origin) {
-  return makeMetaCellSamples(16, origin, [&](int x, int y, int z) {
+cell::MetaCellSamples halfSpaces(const std::vector<V3>& normals, const V3& c, std::array<int, 3> origin) {
+  return cell::makeMetaCellSamples(16, origin, [&](int x, int y, int z) {
     double v = -1e9;
     for (const V3& n : normals) v = std::max(v, dot(n, sub({double(x), double(y), double(z)}, c)));
     return v;
@@ -51,30 +52,30 @@ bool insideCell(const Vec3f& p, std::array<int, 3> lo, int size) {
 }
 
 TEST(Gradient, PrewittIsExactOnLinearFields) {
-  const MetaCellSamples s =
-      makeMetaCellSamples(8, {3, -2, 5}, [](int x, int y, int z) { return 0.5 * x - 2.0 * y + 0.25 * z; });
+  const cell::MetaCellSamples s =
+      cell::makeMetaCellSamples(8, {3, -2, 5}, [](int x, int y, int z) { return 0.5 * x - 2.0 * y + 0.25 * z; });
   for (int k = 0; k <= 8; k += 4) {
-    const Vec3f g = prewittGradient(s, 4, 8, k);
+    const Vec3f g = cell::prewittGradient(s, 4, 8, k);
     EXPECT_NEAR(g[0], 0.5f, 1e-5f);
     EXPECT_NEAR(g[1], -2.0f, 1e-5f);
     EXPECT_NEAR(g[2], 0.25f, 1e-5f);
   }
-  const Vec3f n = normalized(prewittGradientOnEdge(s, {0, 0, 0}, 0, 0.3f));
+  const Vec3f n = cell::normalized(cell::prewittGradientOnEdge(s, {0, 0, 0}, 0, 0.3f));
   EXPECT_NEAR(n[1], -2.0f / std::sqrt(0.25f + 4.0f + 0.0625f), 1e-5f);
 }
 
 TEST(EdgeIntersection, InterpolatesBetweenTheTransitionSamples) {
-  MetaCellSamples s = makeMetaCellSamples(8, {0, 0, 0}, [](int x, int, int) { return x - 2.25; });
-  EdgeIntersection hit;
-  ASSERT_TRUE(intersectEdge(s, {0, 1, 1}, 0, 8, 0.0f, hit));
+  cell::MetaCellSamples s = cell::makeMetaCellSamples(8, {0, 0, 0}, [](int x, int, int) { return x - 2.25; });
+  cell::EdgeIntersection hit;
+  ASSERT_TRUE(cell::intersectEdge(s, {0, 1, 1}, 0, 8, 0.0f, hit));
   EXPECT_NEAR(hit.point[0], 2.25f, 1e-6f);
   EXPECT_EQ(hit.point[1], 1.0f);
   EXPECT_NEAR(hit.normal[0], 1.0f, 1e-6f);
   EXPECT_EQ(hit.transitions, 1);
-  EXPECT_FALSE(intersectEdge(s, {4, 0, 0}, 1, 8, 0.0f, hit));  // all outside
+  EXPECT_FALSE(cell::intersectEdge(s, {4, 0, 0}, 1, 8, 0.0f, hit));  // all outside
   // An exact-iso sample is inside: the crossing is at that sample.
   s.value(5, 0, 0) = 0.0f;
-  ASSERT_TRUE(intersectEdge(s, {3, 0, 0}, 0, 4, 0.0f, hit));
+  ASSERT_TRUE(cell::intersectEdge(s, {3, 0, 0}, 0, 4, 0.0f, hit));
   EXPECT_NEAR(hit.point[0], 5.0f, 1e-6f);
   EXPECT_EQ(hit.transitions, 2);
 }
@@ -90,8 +91,8 @@ TEST(DualVertex, PlaneSharpEdgeAndCornerWithin005Voxel) {
     // Plane.
     {
       const V3 n = unit({0.3 + jitter(rng), 0.5, 0.8});
-      const MetaCellSamples s = halfSpaces({n}, c, origin);
-      const DualVertex v = computeDualVertex(s, cell, 8);
+      const cell::MetaCellSamples s = halfSpaces({n}, c, origin);
+      const cell::DualVertex v = cell::computeDualVertex(s, cell, 8);
       ASSERT_TRUE(v.valid());
       const V3 p = toV3(v.position);
       const double d = std::abs(dot(n, sub(p, c)));
@@ -104,8 +105,8 @@ TEST(DualVertex, PlaneSharpEdgeAndCornerWithin005Voxel) {
     {
       const V3 n1 = unit({1.0, 0.15 + 0.2 * jitter(rng), 0.1});
       const V3 n2 = unit({0.1 * jitter(rng), 1.0, -0.2});
-      const MetaCellSamples s = halfSpaces({n1, n2}, c, origin);
-      const DualVertex v = computeDualVertex(s, cell, 8);
+      const cell::MetaCellSamples s = halfSpaces({n1, n2}, c, origin);
+      const cell::DualVertex v = cell::computeDualVertex(s, cell, 8);
       ASSERT_TRUE(v.valid());
       const V3 dir = unit(cross(n1, n2));
       const V3 w = sub(toV3(v.position), c);
@@ -120,8 +121,8 @@ TEST(DualVertex, PlaneSharpEdgeAndCornerWithin005Voxel) {
       const V3 n1 = unit({1.0, 0.1 * jitter(rng), 0.2});
       const V3 n2 = unit({-0.1, 1.0, 0.1 * jitter(rng)});
       const V3 n3 = unit({0.2 * jitter(rng), 0.1, 1.0});
-      const MetaCellSamples s = halfSpaces({n1, n2, n3}, c, origin);
-      const DualVertex v = computeDualVertex(s, cell, 8);
+      const cell::MetaCellSamples s = halfSpaces({n1, n2, n3}, c, origin);
+      const cell::DualVertex v = cell::computeDualVertex(s, cell, 8);
       ASSERT_TRUE(v.valid());
       const V3 w = sub(toV3(v.position), c);
       const double d = std::sqrt(dot(w, w));
@@ -137,8 +138,8 @@ TEST(DualVertex, PlaneSharpEdgeAndCornerWithin005Voxel) {
 
 TEST(DualVertex, DegenerateSystemGivesAPointOnThePlaneInsideTheCell) {
   // Axis-aligned plane z = 5.3: all normals equal.
-  const MetaCellSamples s = makeMetaCellSamples(16, {0, 0, 0}, [](int, int, int z) { return z - 5.3; });
-  const DualVertex v = computeDualVertex(s, {0, 0, 4}, 4);
+  const cell::MetaCellSamples s = cell::makeMetaCellSamples(16, {0, 0, 0}, [](int, int, int z) { return z - 5.3; });
+  const cell::DualVertex v = cell::computeDualVertex(s, {0, 0, 4}, 4);
   ASSERT_TRUE(v.valid());
   EXPECT_EQ(v.rank, 1);
   EXPECT_NEAR(v.position[2], 5.3f, 1e-5f);
@@ -152,30 +153,31 @@ TEST(DualVertex, MinimiserOutsideTheCellFallsBackToTheMassPoint) {
   const V3 c{8.2, 8.1, 8.4};
   const V3 n1 = unit({0.05, 0.0, 1.0}), n2 = unit({-0.05, 0.0, 1.0});
   // Crease at x = c.x; the cell [0,4] in x is far from it along a flat wedge.
-  const MetaCellSamples s = halfSpaces({n1, n2}, c, {0, 0, 0});
-  const DualVertex v = computeDualVertex(s, {0, 4, 6}, 4, 0x0fff, {.iso = 0.0f, .singularValueThreshold = 0.0f});
+  const cell::MetaCellSamples s = halfSpaces({n1, n2}, c, {0, 0, 0});
+  const cell::DualVertex v =
+      cell::computeDualVertex(s, {0, 4, 6}, 4, 0x0fff, {.iso = 0.0f, .singularValueThreshold = 0.0f});
   ASSERT_TRUE(v.valid());
   EXPECT_TRUE(insideCell(v.position, {0, 4, 6}, 4));
   EXPECT_TRUE(v.massPointFallback);
 }
 
 TEST(DualVertex, EdgeSubsetUsesOnlyThoseEdges) {
-  const MetaCellSamples s = makeMetaCellSamples(16, {0, 0, 0}, [](int x, int y, int z) {
+  const cell::MetaCellSamples s = cell::makeMetaCellSamples(16, {0, 0, 0}, [](int x, int y, int z) {
     return std::sqrt((x - 0.5) * (x - 0.5) + (y - 0.4) * (y - 0.4) + (z - 0.6) * (z - 0.6)) - 2.5;
   });
-  const DualVertex all = computeDualVertex(s, {0, 0, 0}, 4);
+  const cell::DualVertex all = cell::computeDualVertex(s, {0, 0, 0}, 4);
   ASSERT_TRUE(all.valid());
   const std::uint16_t bipolar = all.edges;
   const std::uint16_t first = static_cast<std::uint16_t>(bipolar & (~bipolar + 1));  // lowest bipolar edge
-  const DualVertex one = computeDualVertex(s, {0, 0, 0}, 4, first);
+  const cell::DualVertex one = cell::computeDualVertex(s, {0, 0, 0}, 4, first);
   EXPECT_EQ(one.edges, first);
   EXPECT_EQ(one.intersections, 1);
-  EXPECT_FALSE(computeDualVertex(s, {0, 0, 0}, 4, static_cast<std::uint16_t>(~bipolar & 0x0fff)).valid());
+  EXPECT_FALSE(cell::computeDualVertex(s, {0, 0, 0}, 4, static_cast<std::uint16_t>(~bipolar & 0x0fff)).valid());
 }
 
 TEST(DualVertex, GroupVerticesAreInsideTheirCellsAndDeterministic) {
   // placeGroupVertices (leaf_groups.h): one vertex per DMC group of every leaf, both modes.
-  const MetaCellSamples s = makeMetaCellSamples(64, {64, 0, 0}, [](int x, int y, int z) {
+  const cell::MetaCellSamples s = cell::makeMetaCellSamples(64, {64, 0, 0}, [](int x, int y, int z) {
     return 2.5 * std::sin(0.3 * x) + 2.0 * std::cos(0.23 * y) + 1.5 * std::sin(0.19 * z + 0.1 * y) + 0.2;
   });
   std::vector<std::vector<mesh::Vec3f>> runs;

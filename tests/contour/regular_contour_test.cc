@@ -25,7 +25,7 @@
 namespace isovdb::contour {
 namespace {
 
-using octree::MetaCellSamples;
+using cell::MetaCellSamples;
 
 struct ContourRun {
   mesh::Mesh mesh;
@@ -34,8 +34,8 @@ struct ContourRun {
 };
 
 /// Regular octree down to 1-voxel cells, then manifold DMC, then validation.
-ContourRun contour(const MetaCellSamples& samples, float iso = 0.0f, bool manifoldFix = true, bool parallel = true,
-                   bool selfIntersections = false, int minDepth = 0,
+ContourRun contour(const cell::MetaCellSamples& samples, float iso = 0.0f, bool manifoldFix = true,
+                   bool parallel = true, bool selfIntersections = false, int minDepth = 0,
                    RegularTopology topology = RegularTopology::Voxels) {
   octree::OctreeOptions treeOptions;
   treeOptions.construction = octree::OctreeConstruction::Regular;
@@ -88,8 +88,8 @@ double signedVolume(const mesh::Mesh& m) {
 struct Block {
   std::array<float, 27> interior{};
   float& at(int i, int j, int k) { return interior[static_cast<std::size_t>((k * 3 + j) * 3 + i)]; }
-  MetaCellSamples samples() const {
-    return octree::makeMetaCellSamples(4, {0, 0, 0}, [&](int x, int y, int z) {
+  cell::MetaCellSamples samples() const {
+    return cell::makeMetaCellSamples(4, {0, 0, 0}, [&](int x, int y, int z) {
       if (x < 1 || y < 1 || z < 1 || x > 3 || y > 3 || z > 3) return 1.0f;
       return interior[static_cast<std::size_t>(((z - 1) * 3 + (y - 1)) * 3 + (x - 1))];
     });
@@ -151,7 +151,7 @@ TEST_P(RegularTopologies, ExhaustivePairsOfConfigurationsAcrossEverySharedFace) 
               in = fill == 0 ? false : fill == 1 ? true : (rng() & 1) != 0;
             block.interior[static_cast<std::size_t>(idx)] = phaseValue(in, rng);
           }
-          const MetaCellSamples samples = block.samples();
+          const cell::MetaCellSamples samples = block.samples();
           const ContourRun r = contour(samples, 0.0f, true, false, false, 0, topology);
           ++meshes;
           fixesUsed += r.stats.manifoldFixes;
@@ -184,7 +184,7 @@ TEST_P(RegularTopologies, RandomSignFieldsWithExactIsoSamplesStayClosedAndManifo
   std::int64_t fixes = 0, brokenWithoutFix = 0, triangles = 0;
   for (int trial = 0; trial < 40; ++trial) {
     std::uniform_int_distribution<int> d(-1, 1);
-    const MetaCellSamples samples = octree::makeMetaCellSamples(16, {0, 0, 0}, [&](int x, int y, int z) {
+    const cell::MetaCellSamples samples = cell::makeMetaCellSamples(16, {0, 0, 0}, [&](int x, int y, int z) {
       if (x < 1 || y < 1 || z < 1 || x > 15 || y > 15 || z > 15) return 1.0f;
       return float(d(rng));
     });
@@ -232,8 +232,8 @@ class RegularContourAnalytic : public ::testing::TestWithParam<AnalyticCase> {};
 
 TEST_P(RegularContourAnalytic, ClosedManifoldRightEulerAndOnTheZeroLevel) {
   const AnalyticCase& c = GetParam();
-  const MetaCellSamples samples =
-      octree::makeMetaCellSamples(64, {0, 0, 0}, [&](int x, int y, int z) { return c.sdf(x, y, z); });
+  const cell::MetaCellSamples samples =
+      cell::makeMetaCellSamples(64, {0, 0, 0}, [&](int x, int y, int z) { return c.sdf(x, y, z); });
   const ContourRun r = contour(samples, 0.0f, true, true, true);
   EXPECT_TRUE(good(r)) << describe(r);
   EXPECT_EQ(r.report.eulerCharacteristic, 2 * c.euler) << describe(r);  // surface chi = 2 * solid chi
@@ -258,7 +258,7 @@ INSTANTIATE_TEST_SUITE_P(Shapes, RegularContourAnalytic,
 TEST(RegularContour, IsoOnIntegerSamplesCountsThemInside) {
   // A sphere SDF rounded to integers: a whole shell of samples equals the isovalue.
   for (const float iso : {0.0f, 2.0f}) {
-    const MetaCellSamples samples = octree::makeMetaCellSamples(
+    const cell::MetaCellSamples samples = cell::makeMetaCellSamples(
         64, {0, 0, 0}, [](int x, int y, int z) { return float(std::round(sphereSdf(x, y, z))); });
     const ContourRun r = contour(samples, iso);
     EXPECT_TRUE(good(r)) << "iso " << iso << ": " << describe(r);
@@ -267,8 +267,8 @@ TEST(RegularContour, IsoOnIntegerSamplesCountsThemInside) {
 }
 
 TEST(RegularContour, DeterministicForOneAndEightThreads) {
-  const MetaCellSamples samples =
-      octree::makeMetaCellSamples(64, {-3, 5, 2}, [](int x, int y, int z) { return torusSdf(x + 3, y - 5, z - 2); });
+  const cell::MetaCellSamples samples =
+      cell::makeMetaCellSamples(64, {-3, 5, 2}, [](int x, int y, int z) { return torusSdf(x + 3, y - 5, z - 2); });
   auto once = [&](int threads) {
     tbb::task_arena arena(threads);
     mesh::Mesh m;
@@ -290,8 +290,8 @@ TEST(RegularContour, DeterministicForOneAndEightThreads) {
 
 TEST(RegularContour, BoundaryEdgesAreSkippedAndMismatchedIsoThrows) {
   // A plane crossing the whole meta-cell: its edges on the boundary are skipped -> open mesh.
-  const MetaCellSamples samples =
-      octree::makeMetaCellSamples(8, {0, 0, 0}, [](int x, int, int) { return float(x) - 3.5f; });
+  const cell::MetaCellSamples samples =
+      cell::makeMetaCellSamples(8, {0, 0, 0}, [](int x, int, int) { return float(x) - 3.5f; });
   const ContourRun r = contour(samples);
   EXPECT_FALSE(r.report.closed);
   EXPECT_TRUE(r.report.manifold);
@@ -307,20 +307,20 @@ TEST(RegularContour, BoundaryEdgesAreSkippedAndMismatchedIsoThrows) {
 
 class RegularContourGenerated : public ::testing::TestWithParam<samples::ShapeKind> {};
 
-MetaCellSamples shapeSamples(samples::ShapeKind kind, int size) {
+cell::MetaCellSamples shapeSamples(samples::ShapeKind kind, int size) {
   auto stream = samples::makeShapeStream(kind, {.size = size});
   const volume::Volume sdf = volume::distanceField(volume::ingestMask(*stream, {}));
   auto acc = volume::fieldGrid(sdf).getConstAccessor();
   // One whole-volume meta-cell padded by at least 8 voxels on every side.
   int s = 1;
   while (s < size + 16) s *= 2;
-  return octree::makeMetaCellSamples(s, {-8, -8, -8},
-                                     [&](int x, int y, int z) { return acc.getValue(openvdb::Coord(x, y, z)); });
+  return cell::makeMetaCellSamples(s, {-8, -8, -8},
+                                   [&](int x, int y, int z) { return acc.getValue(openvdb::Coord(x, y, z)); });
 }
 
 TEST_P(RegularContourGenerated, ClosedManifoldWithTheObjectsEulerCharacteristic) {
   const samples::ShapeKind kind = GetParam();
-  const MetaCellSamples samples = shapeSamples(kind, 64);
+  const cell::MetaCellSamples samples = shapeSamples(kind, 64);
   const ContourRun r = contour(samples);
   EXPECT_TRUE(good(r)) << describe(r);
   EXPECT_EQ(r.report.nonManifoldEdges, 0);
@@ -355,7 +355,7 @@ TEST(RegularContour, FixOffShowsNonManifoldOnNoisyGeneratedVolumes) {
   // non-manifold, with it closed and manifold.
   std::int64_t brokenWithoutFix = 0;
   for (const samples::ShapeKind kind : samples::shapesOfKnownTopology()) {
-    MetaCellSamples samples = shapeSamples(kind, 64);
+    cell::MetaCellSamples samples = shapeSamples(kind, 64);
     std::mt19937 rng(static_cast<unsigned>(kind) + 1);
     std::uniform_real_distribution<float> noise(-0.6f, 0.6f);
     for (float& v : samples.values) v += noise(rng);

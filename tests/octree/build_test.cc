@@ -18,19 +18,20 @@
 namespace isovdb::octree {
 namespace {
 
-MetaCellSamples sphere(int size, double cx, double cy, double cz, double r, std::array<int, 3> origin = {0, 0, 0}) {
-  return makeMetaCellSamples(size, origin, [=](int x, int y, int z) {
+cell::MetaCellSamples sphere(int size, double cx, double cy, double cz, double r,
+                             std::array<int, 3> origin = {0, 0, 0}) {
+  return cell::makeMetaCellSamples(size, origin, [=](int x, int y, int z) {
     return std::sqrt((x - cx) * (x - cx) + (y - cy) * (y - cy) + (z - cz) * (z - cz)) - r;
   });
 }
 
 /// True if the samples of the leaf's closed box are not all one phase.
-bool crossedBySurface(const MetaCellSamples& s, const OctreeLeaf& l, float iso = 0.0f) {
-  const bool first = isInside(s.value(l.origin), iso);
+bool crossedBySurface(const cell::MetaCellSamples& s, const OctreeLeaf& l, float iso = 0.0f) {
+  const bool first = cell::isInside(s.value(l.origin), iso);
   for (int k = 0; k <= l.size; ++k)
     for (int j = 0; j <= l.size; ++j)
       for (int i = 0; i <= l.size; ++i)
-        if (isInside(s.value(l.origin[0] + i, l.origin[1] + j, l.origin[2] + k), iso) != first) return true;
+        if (cell::isInside(s.value(l.origin[0] + i, l.origin[1] + j, l.origin[2] + k), iso) != first) return true;
   return false;
 }
 
@@ -47,14 +48,14 @@ TEST(BuildOctree, ResolveDepthsFromDepthsOrCellSizes) {
 
 class SphereR40 : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() { samples_ = new MetaCellSamples(sphere(128, 64.3, 63.7, 64.2, 40.0)); }
+  static void SetUpTestSuite() { samples_ = new cell::MetaCellSamples(sphere(128, 64.3, 63.7, 64.2, 40.0)); }
   static void TearDownTestSuite() {
     delete samples_;
     samples_ = nullptr;
   }
-  static MetaCellSamples* samples_;
+  static cell::MetaCellSamples* samples_;
 };
-MetaCellSamples* SphereR40::samples_ = nullptr;
+cell::MetaCellSamples* SphereR40::samples_ = nullptr;
 
 TEST_F(SphereR40, RegularPutsEverySurfaceLeafAtTheMaximumDepth) {
   OctreeBuildStats stats;
@@ -107,7 +108,8 @@ TEST_F(SphereR40, AdaptiveIsBalancedAndThreeTimesSmaller) {
 
 TEST(BuildOctree, ThinSheetForcesTheMaximumDepth) {
   // A sheet one voxel thick at z = 9 (odd, so no cell boundary above size 1 lies on it).
-  const MetaCellSamples s = makeMetaCellSamples(32, {0, 0, 0}, [](int, int, int z) { return std::abs(z - 9.0) - 0.5; });
+  const cell::MetaCellSamples s =
+      cell::makeMetaCellSamples(32, {0, 0, 0}, [](int, int, int z) { return std::abs(z - 9.0) - 0.5; });
   for (auto construction : {OctreeConstruction::Adaptive, OctreeConstruction::Regular}) {
     OctreeBuildStats stats;
     const LinearOctree tree = buildOctree(s, {.construction = construction}, &stats);
@@ -135,7 +137,7 @@ TEST(BuildOctree, ThinSheetForcesTheMaximumDepth) {
 
 TEST(BuildOctree, SmallTunnelForcesTheMaximumDepth) {
   // Solid everywhere except a tunnel one sample wide along z through (9, 9).
-  const MetaCellSamples s = makeMetaCellSamples(
+  const cell::MetaCellSamples s = cell::makeMetaCellSamples(
       32, {0, 0, 0}, [](int x, int y, int) { return 0.8 - std::sqrt((x - 9.0) * (x - 9.0) + (y - 9.0) * (y - 9.0)); });
   for (auto construction : {OctreeConstruction::Adaptive, OctreeConstruction::Regular}) {
     OctreeBuildStats stats;
@@ -155,7 +157,7 @@ TEST(BuildOctree, SmallTunnelForcesTheMaximumDepth) {
 }
 
 TEST(BuildOctree, AdaptiveKeepsUnsubdividedFarFromTheSurface) {
-  const MetaCellSamples s = sphere(64, 8.5, 8.5, 8.5, 4.0);
+  const cell::MetaCellSamples s = sphere(64, 8.5, 8.5, 8.5, 4.0);
   const LinearOctree tree = buildOctree(s, {.minDepth = 1});
   const OctreeSummary sum = summarizeOctree(tree);
   EXPECT_TRUE(isBalanced(tree));
@@ -165,7 +167,7 @@ TEST(BuildOctree, AdaptiveKeepsUnsubdividedFarFromTheSurface) {
 
 TEST(BuildOctree, DeterministicFor1And2And8Threads) {
   // A bumpy field with many complex cells.
-  const MetaCellSamples s = makeMetaCellSamples(64, {64, 0, -64}, [](int x, int y, int z) {
+  const cell::MetaCellSamples s = cell::makeMetaCellSamples(64, {64, 0, -64}, [](int x, int y, int z) {
     return 3.0 * std::sin(0.45 * x) * std::cos(0.31 * y) + 2.0 * std::sin(0.27 * z + 0.2 * x) + 0.3;
   });
   std::vector<std::vector<OctreeLeaf>> results;
@@ -194,7 +196,7 @@ TEST(BuildOctree, DeterministicFor1And2And8Threads) {
 
 TEST(BuildOctree, IsoValueAndExactIsoSamples) {
   // A constant field equal to iso is all inside: no surface anywhere.
-  const MetaCellSamples flat = makeMetaCellSamples(16, {0, 0, 0}, [](int, int, int) { return 0.0; });
+  const cell::MetaCellSamples flat = cell::makeMetaCellSamples(16, {0, 0, 0}, [](int, int, int) { return 0.0; });
   const LinearOctree tree = buildOctree(flat, {.minDepth = 0});
   EXPECT_EQ(tree.leafCount(), 1u);
   EXPECT_EQ(tree.leaf(0).cornerSigns, 0xff);

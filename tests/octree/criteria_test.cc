@@ -18,19 +18,19 @@ constexpr float kIn = -1.0f;
 
 /// A 16^3 block all outside; the cell under test is (0,0,0) with side 8, and
 /// its bottom face (z = 0, face index 4) is painted by the tests.
-MetaCellSamples outsideBlock() {
-  MetaCellSamples s;
+cell::MetaCellSamples outsideBlock() {
+  cell::MetaCellSamples s;
   s.allocate(16, {0, 0, 0}, kOut);
   return s;
 }
 
 /// The samples' phases at iso 0, what the criteria read.
-SamplePhases phasesOf(const MetaCellSamples& s) { return SamplePhases(s, 0.0f); }
+SamplePhases phasesOf(const cell::MetaCellSamples& s) { return SamplePhases(s, 0.0f); }
 
 constexpr int kBottomFace = 4;  // 2 * axis(z) + side(min)
 
 TEST(Criteria, CountSignChanges) {
-  MetaCellSamples s = outsideBlock();
+  cell::MetaCellSamples s = outsideBlock();
   EXPECT_EQ(countSignChanges(phasesOf(s), {0, 0, 0}, 0, 8), 0);
   s.value(8, 0, 0) = kIn;
   EXPECT_EQ(countSignChanges(phasesOf(s), {0, 0, 0}, 0, 8), 1);
@@ -40,7 +40,7 @@ TEST(Criteria, CountSignChanges) {
 }
 
 TEST(Criteria, EdgeCrossedThreeTimesIsComplex) {
-  MetaCellSamples s = outsideBlock();
+  cell::MetaCellSamples s = outsideBlock();
   // Along the x edge at y = z = 0: out out in in out out in in in -> 3 changes.
   for (int x : {2, 3, 6, 7, 8}) s.value(x, 0, 0) = kIn;
   EXPECT_EQ(countSignChanges(phasesOf(s), {0, 0, 0}, 0, 8), 3);
@@ -54,7 +54,7 @@ TEST(Criteria, EdgeCrossedThreeTimesIsComplex) {
 }
 
 TEST(Criteria, IsolatedIslandMakesAComplexFace) {
-  MetaCellSamples s = outsideBlock();
+  cell::MetaCellSamples s = outsideBlock();
   for (int y = 3; y <= 4; ++y)
     for (int x = 3; x <= 5; ++x) s.value(x, y, 0) = kIn;
   FaceLabeller labeller;
@@ -72,7 +72,7 @@ TEST(Criteria, IsolatedIslandMakesAComplexFace) {
 }
 
 /// Paints a square ring (Chebyshev radius 2) centred at (cx, cy) on face z = 0.
-void paintRing(MetaCellSamples& s, int cx, int cy) {
+void paintRing(cell::MetaCellSamples& s, int cx, int cy) {
   for (int y = cy - 2; y <= cy + 2; ++y)
     for (int x = cx - 2; x <= cx + 2; ++x)
       if (std::max(std::abs(x - cx), std::abs(y - cy)) == 2) s.value(x, y, 0) = kIn;
@@ -81,7 +81,7 @@ void paintRing(MetaCellSamples& s, int cx, int cy) {
 TEST(Criteria, RingTouchingOneEdgeHasAComplexEdge) {
   // Ring x in [0, 4], y in [2, 6]: it lies along the edge x = 0 (y axis) in
   // the middle of it, so that edge changes sign twice; its hole is isolated.
-  MetaCellSamples s = outsideBlock();
+  cell::MetaCellSamples s = outsideBlock();
   paintRing(s, 2, 4);
   EXPECT_EQ(countSignChanges(phasesOf(s), {0, 0, 0}, 1, 8), 2);
   FaceLabeller labeller;
@@ -97,7 +97,7 @@ TEST(Criteria, RingTouchingEdgesOnceHasAComplexFaceThroughItsHole) {
   // Ring x, y in [0, 4] around the corner: each of the two edges it touches
   // changes sign once (no complex edge), but the hole is an isolated outside
   // component, a closed contour loop that the edges cannot see.
-  MetaCellSamples s = outsideBlock();
+  cell::MetaCellSamples s = outsideBlock();
   paintRing(s, 2, 2);
   EXPECT_EQ(countSignChanges(phasesOf(s), {0, 0, 0}, 0, 8), 1);
   EXPECT_EQ(countSignChanges(phasesOf(s), {0, 0, 0}, 1, 8), 1);
@@ -115,7 +115,7 @@ TEST(Criteria, RingTouchingEdgesOnceHasAComplexFaceThroughItsHole) {
 }
 
 TEST(Criteria, InteriorBlobIsDetectedOnlyWhenAsked) {
-  MetaCellSamples s = outsideBlock();
+  cell::MetaCellSamples s = outsideBlock();
   s.value(4, 4, 4) = kIn;
   FaceLabeller labeller;
   const CellTopology with = classifyCell(phasesOf(s), {0, 0, 0}, 8, {.detectInteriorComponents = true}, labeller);
@@ -130,7 +130,7 @@ TEST(Criteria, InteriorBlobIsDetectedOnlyWhenAsked) {
 TEST(Criteria, BubbleInACellCrossedByTheSurfaceIsHidden) {
   // A plane crosses the 8-cell (its faces are not one phase, so classifyCell does not
   // look inside); a 1-voxel outside bubble below it touches no face.
-  MetaCellSamples s = makeMetaCellSamples(16, {0, 0, 0}, [](int, int, int z) { return z - 5.5f; });
+  cell::MetaCellSamples s = cell::makeMetaCellSamples(16, {0, 0, 0}, [](int, int, int z) { return z - 5.5f; });
   FaceLabeller labeller;
   const CellTopology plane = classifyCell(phasesOf(s), {0, 0, 0}, 8, {}, labeller);
   EXPECT_FALSE(plane.isComplex());
@@ -150,7 +150,7 @@ TEST(Criteria, BubbleInACellCrossedByTheSurfaceIsHidden) {
 }
 
 TEST(Criteria, UniformCellIsSimpleAndHomogeneous) {
-  const MetaCellSamples s = outsideBlock();
+  const cell::MetaCellSamples s = outsideBlock();
   FaceLabeller labeller;
   const CellTopology t = classifyCell(phasesOf(s), {8, 8, 8}, 8, {}, labeller);
   EXPECT_FALSE(t.isComplex());
@@ -160,7 +160,7 @@ TEST(Criteria, UniformCellIsSimpleAndHomogeneous) {
 
 /// The criteria written out the slow way, on the float samples: a reference
 /// for classifyCell's shortcuts (size-1 and size-2 cells, one-phase cells).
-CellTopology referenceTopology(const MetaCellSamples& s, std::array<int, 3> o, int size) {
+CellTopology referenceTopology(const cell::MetaCellSamples& s, std::array<int, 3> o, int size) {
   auto in = [&](int i, int j, int k) { return s.value(o[0] + i, o[1] + j, o[2] + k) <= 0.0f; };
   CellTopology t;
   for (int c = 0; c < 8; ++c)
@@ -227,7 +227,7 @@ CellTopology referenceTopology(const MetaCellSamples& s, std::array<int, 3> o, i
 }
 
 /// Hidden component, the slow way: breadth-first flood of each phase from the cell's faces.
-bool referenceHidden(const MetaCellSamples& s, std::array<int, 3> o, int size) {
+bool referenceHidden(const cell::MetaCellSamples& s, std::array<int, 3> o, int size) {
   const int n = size + 1;
   auto in = [&](int i, int j, int k) { return s.value(o[0] + i, o[1] + j, o[2] + k) <= 0.0f; };
   std::vector<char> reached(static_cast<std::size_t>(n) * n * n, 0);
@@ -262,7 +262,7 @@ struct BranchCounts {
 BranchCounts compareWithReferences(int blockSize, double insideFraction, std::initializer_list<int> sizes,
                                    unsigned seed) {
   std::mt19937 rng(seed);
-  MetaCellSamples s;
+  cell::MetaCellSamples s;
   s.allocate(blockSize, {0, 0, 0}, kOut);
   std::bernoulli_distribution speck(insideFraction);
   for (float& v : s.values) v = speck(rng) ? kIn : kOut;

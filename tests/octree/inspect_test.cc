@@ -15,7 +15,7 @@ namespace isovdb::octree {
 namespace {
 
 TEST(Inspect, SummaryAndWireframe) {
-  const MetaCellSamples s = makeMetaCellSamples(16, {16, 0, 0}, [](int x, int y, int z) {
+  const cell::MetaCellSamples s = cell::makeMetaCellSamples(16, {16, 0, 0}, [](int x, int y, int z) {
     return std::sqrt((x - 24.2) * (x - 24.2) + (y - 8.1) * (y - 8.1) + (z - 7.9) * (z - 7.9)) - 4.0;
   });
   const LinearOctree tree = buildOctree(s, {.minDepth = 1});

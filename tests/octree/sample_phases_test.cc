@@ -13,17 +13,17 @@ namespace isovdb::octree {
 namespace {
 
 /// A random block: stride 131 samples, so rows span three words and runs cross word boundaries.
-MetaCellSamples randomBlock(unsigned seed, double insideFraction) {
+cell::MetaCellSamples randomBlock(unsigned seed, double insideFraction) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> u(0.0f, 1.0f);
-  MetaCellSamples s;
+  cell::MetaCellSamples s;
   s.allocate(128, {-64, 3, 1000});
   for (float& v : s.values) v = u(rng) < insideFraction ? -0.5f : 0.5f;
   return s;
 }
 
 TEST(SamplePhases, EveryBitIsItsSamplesPhaseApronIncluded) {
-  MetaCellSamples s = randomBlock(1, 0.5);
+  cell::MetaCellSamples s = randomBlock(1, 0.5);
   s.value(5, 5, 5) = 0.0f;  // exactly iso is inside
   const SamplePhases phases(s, 0.0f);
   EXPECT_EQ(phases.size(), 128);
@@ -35,7 +35,7 @@ TEST(SamplePhases, EveryBitIsItsSamplesPhaseApronIncluded) {
 
 TEST(SamplePhases, RunsAgreeWithTheSamplesAcrossWordBoundaries) {
   for (const double fraction : {0.0, 0.02, 0.5, 0.98, 1.0}) {
-    const MetaCellSamples s = randomBlock(7, fraction);
+    const cell::MetaCellSamples s = randomBlock(7, fraction);
     const SamplePhases phases(s, 0.0f);
     std::mt19937 rng(11);
     std::uniform_int_distribution<int> start(-1, 129);
@@ -64,7 +64,7 @@ TEST(SamplePhases, RunsAgreeWithTheSamplesAcrossWordBoundaries) {
 }
 
 TEST(SamplePhases, SignChangesAlongEveryAxisMatchTheSamples) {
-  const MetaCellSamples s = randomBlock(3, 0.3);
+  const cell::MetaCellSamples s = randomBlock(3, 0.3);
   const SamplePhases phases(s, 0.0f);
   std::mt19937 rng(5);
   std::uniform_int_distribution<int> start(0, 64);

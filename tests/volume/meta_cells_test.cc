@@ -32,7 +32,7 @@ TEST(MetaCells, PartitionFindsExactlyTheCellsWithASignChange) {
   const MetaCellPartition partition = partitionMetaCells(sdf, 32);
   // Brute force: read every meta-cell of the box and test for a sign change.
   std::vector<MetaCellIndex> expected;
-  octree::MetaCellSamples samples;
+  cell::MetaCellSamples samples;
   for (int k = -1; k <= 2; ++k)
     for (int j = -1; j <= 2; ++j)
       for (int i = -1; i <= 3; ++i) {
@@ -54,7 +54,7 @@ TEST(MetaCells, ReadMetaCellMatchesTheGridIncludingApronAndSharedBoundary) {
   const Volume sdf = twoBalls();
   const FieldGrid& grid = fieldGrid(sdf);
   auto acc = grid.getConstAccessor();
-  octree::MetaCellSamples a, b;
+  cell::MetaCellSamples a, b;
   readMetaCell(sdf, {0, 0, 0}, 32, a);
   readMetaCell(sdf, {1, 0, 0}, 32, b);
   for (int k = -1; k <= 33; ++k)

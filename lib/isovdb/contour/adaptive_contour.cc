@@ -11,15 +11,15 @@
 #include <vector>
 
 #include "isovdb/contour/adaptive_edges.h"
-#include "isovdb/contour/dual_vertex.h"
-#include "isovdb/contour/edge_intersection.h"
+#include "isovdb/cell/dual_vertex.h"
+#include "isovdb/cell/edge_intersection.h"
 #include "isovdb/contour/leaf_groups.h"
 #include "isovdb/errors.h"
 #include "isovdb/octree/morton.h"
 
 namespace isovdb::contour {
 
-MetaCellMesh contourAdaptiveMetaCell(const octree::MetaCellSamples& samples, const octree::LinearOctree& tree,
+MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
                                      const AdaptiveContourOptions& options, AdaptiveContourStats* stats) {
   if (tree.metaCellSize() != samples.size)
     throw InputError("contourAdaptive: octree meta-cell size " + std::to_string(tree.metaCellSize()) +
@@ -36,9 +36,9 @@ MetaCellMesh contourAdaptiveMetaCell(const octree::MetaCellSamples& samples, con
   const LeafGroups groups = groupLeaves(samples, tree, std::move(configs), options.iso, options.manifoldFix);
   const std::vector<mesh::Vec3f> positions =
       placeGroupVertices(samples, tree, groups,
-                         DualVertexOptions{.iso = options.iso,
-                                           .singularValueThreshold = options.singularValueThreshold,
-                                           .sharpFeatures = options.sharpFeatures});
+                         cell::DualVertexOptions{.iso = options.iso,
+                                                 .singularValueThreshold = options.singularValueThreshold,
+                                                 .sharpFeatures = options.sharpFeatures});
   std::vector<Vec3d> cellPoints(positions.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leafCount, 256), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i)
@@ -52,8 +52,8 @@ MetaCellMesh contourAdaptiveMetaCell(const octree::MetaCellSamples& samples, con
     const int axis = octree::cellEdgeAxis(e);
     std::array<int, 3> start = leaf.origin;
     for (int a = 0; a < 3; ++a) start[a] += ((c0 >> a) & 1) * leaf.size;
-    EdgeIntersection ix;
-    if (!intersectEdge(samples, start, axis, leaf.size, options.iso, ix, options.sharpFeatures))
+    cell::EdgeIntersection ix;
+    if (!cell::intersectEdge(samples, start, axis, leaf.size, options.iso, ix, options.sharpFeatures))
       return std::numeric_limits<double>::quiet_NaN();
     return static_cast<double>(ix.point[axis] - static_cast<float>(start[axis]));
   };
@@ -149,7 +149,7 @@ MetaCellMesh contourAdaptiveMetaCell(const octree::MetaCellSamples& samples, con
   return result;
 }
 
-mesh::Mesh contourAdaptive(const octree::MetaCellSamples& samples, const octree::LinearOctree& tree,
+mesh::Mesh contourAdaptive(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
                            const AdaptiveContourOptions& options, AdaptiveContourStats* stats) {
   return contourAdaptiveMetaCell(samples, tree, options, stats).mesh;
 }

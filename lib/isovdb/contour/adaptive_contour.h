@@ -43,7 +43,7 @@
 /// the salt body at 64^3, mean vertex distance 0.12 voxel.
 ///
 /// Output: global voxel index coordinates (meta-cell offsets plus
-/// MetaCellSamples::origin), triangles oriented outwards (from inside,
+/// cell::MetaCellSamples::origin), triangles oriented outwards (from inside,
 /// value <= iso, to outside), vertices shared (indexed), no unused vertex.
 /// Deterministic: independent of the number of TBB threads.
 /// Memory: O(leaves + output) beside the samples.
@@ -54,7 +54,7 @@
 #include "isovdb/contour/seam_cell.h"
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/octree/linear_octree.h"
-#include "isovdb/octree/meta_cell_samples.h"
+#include "isovdb/cell/meta_cell_samples.h"
 
 namespace isovdb::contour {
 
@@ -63,10 +63,10 @@ struct AdaptiveContourOptions {
   float iso = 0.0f;              ///< isovalue; inside iff value <= iso (must match the octree's)
   bool intersectionFree = true;  ///< Ju–Udeshi fans where needed; false (--no-intersection-free) = plain DC
   bool manifoldFix = true;       ///< Wenger's fix on doubled ambiguous faces (leaf_groups.h); false only in tests
-  float singularValueThreshold = 0.1f;  ///< QEF truncation of the dual vertices (see QefOptions); larger = smoother,
-                                        ///< smaller = sharper features but noisier vertices
-  bool sharpFeatures = false;           ///< crossings near a crease from the face they lie on (crease_crossing.h);
-                                        ///< the octree should be built with the same OctreeOptions::sharpFeatures
+  float singularValueThreshold = 0.1f;  ///< QEF truncation of the dual vertices (see cell::QefOptions); larger =
+                                        ///< smoother, smaller = sharper features but noisier vertices
+  bool sharpFeatures = false;  ///< crossings near a crease from the face they lie on (crease_crossing.h);
+                               ///< the octree should be built with the same OctreeOptions::sharpFeatures
 };
 
 /// What contourAdaptive did (figures for statistics, tests and paper 000's Tables 5.1–5.2).
@@ -94,13 +94,13 @@ struct AdaptiveContourStats {
 /// @return the mesh (global voxel index coordinates, outward, indexed; no normals).
 /// @pre `tree` was built from `samples` with the same iso; tree.metaCellSize() == samples.size.
 /// @throw InputError if the sizes differ.
-mesh::Mesh contourAdaptive(const octree::MetaCellSamples& samples, const octree::LinearOctree& tree,
+mesh::Mesh contourAdaptive(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
                            const AdaptiveContourOptions& options = {}, AdaptiveContourStats* stats = nullptr);
 
 /// @brief contourAdaptive plus the seam (seam_cell.h): leaves with a sign change
 ///        that touch the meta-cell boundary, and the face points made into
 ///        vertices on faces that touch it.
-MetaCellMesh contourAdaptiveMetaCell(const octree::MetaCellSamples& samples, const octree::LinearOctree& tree,
+MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
                                      const AdaptiveContourOptions& options = {}, AdaptiveContourStats* stats = nullptr);
 
 }  // namespace isovdb::contour

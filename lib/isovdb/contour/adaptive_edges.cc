@@ -6,7 +6,7 @@
 #include <bit>
 #include <cmath>
 
-#include "isovdb/contour/dmc_table.h"
+#include "isovdb/cell/dmc_table.h"
 #include "isovdb/octree/morton.h"
 
 namespace isovdb::contour {
@@ -101,7 +101,7 @@ void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool
       const auto l = static_cast<std::size_t>(cells[static_cast<std::size_t>(i)]);
       const OctreeLeaf& cell = tree.leaf(l);
       const int quadrant = std::countr_zero(static_cast<unsigned>(quadrantsOf(cells[static_cast<std::size_t>(i)])));
-      const int g = cell.size == s ? dmcVertexOfEdge(cell.cornerSigns, alternative[l] != 0, axis, quadrant) : 0;
+      const int g = cell.size == s ? cell::dmcVertexOfEdge(cell.cornerSigns, alternative[l] != 0, axis, quadrant) : 0;
       haveVertices = g >= 0 && static_cast<std::uint32_t>(g) < firstVertex[l + 1] - firstVertex[l];
       groups[static_cast<std::size_t>(i)] = static_cast<std::int8_t>(g);
     }

@@ -16,8 +16,7 @@ namespace {
 constexpr std::size_t kGrain = 256;
 
 /// Configuration of the cell [origin, origin + size], or -1 if it leaves the samples' apron.
-int cellConfigAt(const octree::MetaCellSamples& samples, const std::array<int, 3>& origin, int size,
-                 float iso) noexcept {
+int cellConfigAt(const cell::MetaCellSamples& samples, const std::array<int, 3>& origin, int size, float iso) noexcept {
   for (int a = 0; a < 3; ++a)
     if (origin[a] < -samples.apron || origin[a] + size > samples.size + samples.apron) return -1;
   return octree::cellCornerSigns(samples, origin, size, iso);
@@ -30,11 +29,11 @@ namespace {
 /// The fix of doubled faces. MDMC (Wenger): a doubled leaf takes the alternative grouping
 /// when the cell across its doubled face is doubled on it too. Voxels: such a face is split,
 /// recorded by the leaf on its min side.
-void fixDoubledFaces(const octree::MetaCellSamples& samples, const octree::LinearOctree& tree, float iso,
+void fixDoubledFaces(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree, float iso,
                      LeafGroups& groups, std::vector<char>& beyondApron) {
-  const auto entryOf = [&](int config) -> const DmcEntry& {
+  const auto entryOf = [&](int config) -> const cell::DmcEntry& {
     const auto c = static_cast<std::uint8_t>(config);
-    return groups.voxels ? voxelDmcEntry(c) : dmcEntry(c);
+    return groups.voxels ? voxelDmcEntry(c) : cell::dmcEntry(c);
   };
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, tree.leafCount(), kGrain),
                     [&](const tbb::blocked_range<std::size_t>& r) {
@@ -60,7 +59,7 @@ void fixDoubledFaces(const octree::MetaCellSamples& samples, const octree::Linea
 
 }  // namespace
 
-LeafGroups groupLeaves(const octree::MetaCellSamples& samples, const octree::LinearOctree& tree,
+LeafGroups groupLeaves(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
                        std::vector<std::uint8_t> configs, float iso, bool manifoldFix, RegularTopology topology) {
   const std::size_t n = tree.leafCount();
   LeafGroups groups;
@@ -80,13 +79,13 @@ LeafGroups groupLeaves(const octree::MetaCellSamples& samples, const octree::Lin
   return groups;
 }
 
-std::vector<mesh::Vec3f> placeGroupVertices(const octree::MetaCellSamples& samples, const octree::LinearOctree& tree,
-                                            const LeafGroups& groups, const DualVertexOptions& options) {
+std::vector<mesh::Vec3f> placeGroupVertices(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
+                                            const LeafGroups& groups, const cell::DualVertexOptions& options) {
   std::vector<mesh::Vec3f> positions(groups.totalVertices());
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, tree.leafCount(), kGrain / 4), [&](const tbb::blocked_range<std::size_t>& r) {
         for (std::size_t i = r.begin(); i != r.end(); ++i) {
-          const DmcEntry& entry = groups.entry(i);
+          const cell::DmcEntry& entry = groups.entry(i);
           const octree::OctreeLeaf& leaf = tree.leaf(i);
           const bool hasSplits = groups.voxels && groups.splitFaces[i] != 0;
           if (entry.vertexCount == 1 && !hasSplits && !options.massPointOnly &&
@@ -99,7 +98,7 @@ std::vector<mesh::Vec3f> placeGroupVertices(const octree::MetaCellSamples& sampl
           // Several sheets in one cell: each vertex at its group's mass point, which stays
           // among its own crossings (a QEF minimiser may wander towards the other sheet).
           // Tube sectors and split faces are pieces of a sheet: their mass points too.
-          DualVertexOptions groupOptions = options;
+          cell::DualVertexOptions groupOptions = options;
           groupOptions.massPointOnly = entry.vertexCount > 1;
           const std::uint8_t config = groups.configs[i];
           const bool tube = groups.voxels && isTubeConfig(config);
@@ -119,10 +118,10 @@ std::vector<mesh::Vec3f> placeGroupVertices(const octree::MetaCellSamples& sampl
                 for (const std::uint16_t edges : splitVertexEdges(config, 2 * axis + 1))
                   vertexEdges[static_cast<std::size_t>(count++)] = edges;
           for (int k = 0; k < count; ++k) {
-            DualVertexOptions vertexOptions = groupOptions;
+            cell::DualVertexOptions vertexOptions = groupOptions;
             vertexOptions.massPointOnly = groupOptions.massPointOnly || k >= groupVertices;  // a tube has 2 groups
-            const DualVertex v = computeDualVertex(samples, leaf.origin, leaf.size,
-                                                   vertexEdges[static_cast<std::size_t>(k)], vertexOptions);
+            const cell::DualVertex v = cell::computeDualVertex(samples, leaf.origin, leaf.size,
+                                                               vertexEdges[static_cast<std::size_t>(k)], vertexOptions);
             mesh::Vec3f p = v.position;
             if (!v.valid())  // cannot happen for bipolar edges; keep the cell centre rather than garbage
               for (std::size_t a = 0; a < 3; ++a)

@@ -28,12 +28,12 @@
 #include <cstdint>
 #include <vector>
 
-#include "isovdb/contour/dmc_table.h"
-#include "isovdb/contour/dual_vertex.h"
+#include "isovdb/cell/dmc_table.h"
+#include "isovdb/cell/dual_vertex.h"
 #include "isovdb/contour/voxel_dmc.h"
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/octree/linear_octree.h"
-#include "isovdb/octree/meta_cell_samples.h"
+#include "isovdb/cell/meta_cell_samples.h"
 
 namespace isovdb::contour {
 
@@ -47,8 +47,8 @@ struct LeafGroups {
   std::int64_t manifoldFixes = 0;          ///< leaves with the alternative grouping (voxels: split faces)
   std::int64_t fixesBeyondApron = 0;       ///< doubled faces whose neighbour lies beyond the apron (left unfixed)
 
-  const DmcEntry& entry(std::size_t leaf) const noexcept {
-    return voxels ? voxelDmcEntry(configs[leaf]) : dmcEntry(configs[leaf], alternative[leaf] != 0);
+  const cell::DmcEntry& entry(std::size_t leaf) const noexcept {
+    return voxels ? voxelDmcEntry(configs[leaf]) : cell::dmcEntry(configs[leaf], alternative[leaf] != 0);
   }
   /// Vertices of the leaf's groups (a tube's sectors), without its split vertices.
   int cellVertexCount(std::size_t leaf) const noexcept {
@@ -65,7 +65,7 @@ struct LeafGroups {
 
 /// @brief Groups the leaves with configurations `configs` (one per leaf of `tree`).
 /// @param manifoldFix apply Wenger's fix, or split doubled faces with `topology` Voxels (false only in tests).
-LeafGroups groupLeaves(const octree::MetaCellSamples& samples, const octree::LinearOctree& tree,
+LeafGroups groupLeaves(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
                        std::vector<std::uint8_t> configs, float iso, bool manifoldFix,
                        RegularTopology topology = RegularTopology::Mdmc);
 
@@ -74,7 +74,7 @@ LeafGroups groupLeaves(const octree::MetaCellSamples& samples, const octree::Lin
 ///        no usable crossing), of every tube sector and split face (the mass
 ///        point of their crossings), numbered by LeafGroups::firstVertex.
 ///        Parallel with TBB; deterministic. Global voxel index coordinates.
-std::vector<mesh::Vec3f> placeGroupVertices(const octree::MetaCellSamples& samples, const octree::LinearOctree& tree,
-                                            const LeafGroups& groups, const DualVertexOptions& options);
+std::vector<mesh::Vec3f> placeGroupVertices(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
+                                            const LeafGroups& groups, const cell::DualVertexOptions& options);
 
 }  // namespace isovdb::contour

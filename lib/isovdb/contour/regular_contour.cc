@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "isovdb/contour/dmc_table.h"
-#include "isovdb/contour/dual_vertex.h"
+#include "isovdb/cell/dmc_table.h"
+#include "isovdb/cell/dual_vertex.h"
 #include "isovdb/contour/leaf_groups.h"
 #include "isovdb/contour/voxel_dmc.h"
 #include "isovdb/errors.h"
@@ -24,8 +24,8 @@ namespace isovdb::contour {
 
 namespace {
 
+using cell::MetaCellSamples;
 using octree::LinearOctree;
-using octree::MetaCellSamples;
 using octree::OctreeLeaf;
 
 constexpr std::size_t kGrain = 256;
@@ -86,7 +86,7 @@ std::array<mesh::Triangle, 2> regularEdgeQuad(const std::array<std::uint32_t, 4>
   return {mesh::Triangle{V(0), V(1), V(3)}, mesh::Triangle{V(1), V(2), V(3)}};
 }
 
-MetaCellMesh contourRegularMetaCell(const MetaCellSamples& samples, const LinearOctree& regularTree,
+MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const LinearOctree& regularTree,
                                     const RegularContourOptions& options, RegularContourStats* stats) {
   if (samples.size != regularTree.metaCellSize())
     throw InputError("contourRegular: samples.size " + std::to_string(samples.size) +
@@ -123,7 +123,7 @@ MetaCellMesh contourRegularMetaCell(const MetaCellSamples& samples, const Linear
   mesh::Mesh& out = result.mesh;
   out.positions = placeGroupVertices(
       samples, regularTree, groups,
-      DualVertexOptions{.iso = options.iso, .singularValueThreshold = options.singularValueThreshold});
+      cell::DualVertexOptions{.iso = options.iso, .singularValueThreshold = options.singularValueThreshold});
 
   // 4. Quads (voxel topology: polygons): each interior bipolar edge by its owner leaf (the edge is
   // the owner's local edge 4 * axis, the owner in quadrant 3); edges on the meta-cell boundary are
@@ -165,7 +165,7 @@ MetaCellMesh contourRegularMetaCell(const MetaCellSamples& samples, const Linear
           std::array<mesh::Vec3f, 4> p{};
           for (int q = 0; q < 4; ++q) {
             const auto j = static_cast<std::size_t>(around[static_cast<std::size_t>(q)]);
-            const int g = dmcVertexOfEdge(config[j], alternative[j] != 0, axis, q);
+            const int g = cell::dmcVertexOfEdge(config[j], alternative[j] != 0, axis, q);
             assert(g >= 0);
             v[static_cast<std::size_t>(q)] = vertexBase[j] + static_cast<std::uint32_t>(g);
             p[static_cast<std::size_t>(q)] = out.positions[v[static_cast<std::size_t>(q)]];
@@ -188,7 +188,7 @@ MetaCellMesh contourRegularMetaCell(const MetaCellSamples& samples, const Linear
   // 5. Seam: leaves with dual vertices on the meta-cell boundary, in key (Z) order.
   for (std::size_t i = 0; i < n; ++i) {
     const OctreeLeaf& leaf = leaves[i];
-    const DmcEntry& entry = groups.entry(i);
+    const cell::DmcEntry& entry = groups.entry(i);
     if (entry.vertexCount == 0 || !touchesMetaCellBoundary(leaf.origin, leaf.size, metaSize)) continue;
     SeamCell cell;
     cell.key = leaf.key;
@@ -222,7 +222,7 @@ MetaCellMesh contourRegularMetaCell(const MetaCellSamples& samples, const Linear
   return result;
 }
 
-mesh::Mesh contourRegular(const MetaCellSamples& samples, const LinearOctree& regularTree,
+mesh::Mesh contourRegular(const cell::MetaCellSamples& samples, const LinearOctree& regularTree,
                           const RegularContourOptions& options, RegularContourStats* stats) {
   return contourRegularMetaCell(samples, regularTree, options, stats).mesh;
 }

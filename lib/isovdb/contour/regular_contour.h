@@ -40,7 +40,7 @@
 #include "isovdb/contour/voxel_dmc.h"
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/octree/linear_octree.h"
-#include "isovdb/octree/meta_cell_samples.h"
+#include "isovdb/cell/meta_cell_samples.h"
 
 namespace isovdb::contour {
 
@@ -49,10 +49,11 @@ struct RegularContourOptions {
   float iso = 0.0f;  ///< isovalue; inside iff value <= iso. Must be the one the octree was built with
   /// Reading of ambiguous cells: the voxel object's (26, 6) topology (voxel_dmc.h) or Wenger's MDMC.
   RegularTopology topology = RegularTopology::Voxels;
-  bool manifoldFix = true;              ///< Wenger's MDMC correction (voxels: split doubled faces); false only in
-                                        ///< tests (then the output can be non-manifold)
-  float singularValueThreshold = 0.1f;  ///< QEF truncation, relative to the largest singular value (see QefOptions);
-                                        ///< higher = smoother vertices, lower = sharper but less stable
+  bool manifoldFix = true;  ///< Wenger's MDMC correction (voxels: split doubled faces); false only in
+                            ///< tests (then the output can be non-manifold)
+  float singularValueThreshold =
+      0.1f;  ///< QEF truncation, relative to the largest singular value (see cell::QefOptions);
+             ///< higher = smoother vertices, lower = sharper but less stable
 };
 
 /// Figures of one contourRegular call.
@@ -78,12 +79,12 @@ struct RegularContourStats {
 ///      (true for a regular construction).
 /// @throw InputError if `samples.size` differs from the tree's meta-cell size or a leaf's corner
 ///        signs differ from the samples at `options.iso` (tree built with another isovalue).
-mesh::Mesh contourRegular(const octree::MetaCellSamples& samples, const octree::LinearOctree& regularTree,
+mesh::Mesh contourRegular(const cell::MetaCellSamples& samples, const octree::LinearOctree& regularTree,
                           const RegularContourOptions& options = {}, RegularContourStats* stats = nullptr);
 
 /// @brief contourRegular plus the seam: the leaves with dual vertices that touch
 ///        the meta-cell boundary, in key order (see seam_cell.h).
-MetaCellMesh contourRegularMetaCell(const octree::MetaCellSamples& samples, const octree::LinearOctree& regularTree,
+MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const octree::LinearOctree& regularTree,
                                     const RegularContourOptions& options = {}, RegularContourStats* stats = nullptr);
 
 /// @brief The two triangles of one bipolar edge's quad (Algorithm 4.1), oriented

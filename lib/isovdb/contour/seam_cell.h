@@ -43,7 +43,7 @@ struct SeamCell {
   std::uint8_t cornerSigns = 0;                 ///< bit c set iff corner c is inside
 
   /// Wenger's alternative grouping was used (both modes group a leaf's bipolar
-  /// edges by dmcEntry(cornerSigns, alternative); see leaf_groups.h).
+  /// edges by cell::dmcEntry(cornerSigns, alternative); see leaf_groups.h).
   bool alternative = false;
   /// Mesh id of the dual vertex of each group. Regular: all set. Adaptive:
   /// kNoVertex until a polygon uses it (the stitcher then adds positions[g]).

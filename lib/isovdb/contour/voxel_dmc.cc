@@ -32,13 +32,13 @@ std::array<int, 2> outsideCornersOf(std::uint8_t config, int face) noexcept {
 }
 
 struct VoxelTables {
-  std::array<DmcEntry, 256> entries;
+  std::array<cell::DmcEntry, 256> entries;
   std::array<TubeSectors, 256> tubes;
 
   VoxelTables() {
     for (int c = 0; c < 256; ++c) {
       const auto config = static_cast<std::uint8_t>(c);
-      entries[static_cast<std::size_t>(c)] = detail::buildDmcEntry(config, 0x3f);
+      entries[static_cast<std::size_t>(c)] = cell::detail::buildDmcEntry(config, 0x3f);
       if (!isTubeConfig(config)) continue;
       // Inside corners a and a ^ 7: sector k = the face along axis k at a, and the face along
       // axis k + 1 at a ^ 7. Each pair is 60 degrees apart around the diagonal, all slanted the
@@ -84,7 +84,7 @@ std::uint32_t vertexOnFace(const VoxelEdgeCell& cell, int edge, int face) noexce
 
 }  // namespace
 
-const DmcEntry& voxelDmcEntry(std::uint8_t config) noexcept { return tables().entries[config]; }
+const cell::DmcEntry& voxelDmcEntry(std::uint8_t config) noexcept { return tables().entries[config]; }
 
 bool isTubeConfig(std::uint8_t config) noexcept {
   if (std::popcount(static_cast<unsigned>(config)) != 2) return false;

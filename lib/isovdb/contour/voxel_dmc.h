@@ -38,7 +38,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "isovdb/contour/dmc_table.h"
+#include "isovdb/cell/dmc_table.h"
 #include "isovdb/mesh/mesh.h"
 
 namespace isovdb::contour {
@@ -51,7 +51,7 @@ enum class RegularTopology {
 
 /// @brief The DMC entry of `config` with ambiguous faces joining the inside
 ///        corners; `doubleFace` as in dmc_table.h.
-const DmcEntry& voxelDmcEntry(std::uint8_t config) noexcept;
+const cell::DmcEntry& voxelDmcEntry(std::uint8_t config) noexcept;
 
 /// @brief True for the four configurations whose only inside corners are the two ends of a body diagonal.
 bool isTubeConfig(std::uint8_t config) noexcept;

@@ -10,8 +10,8 @@
 #include <bit>
 #include <string>
 
-#include "isovdb/contour/dmc_table.h"
-#include "isovdb/contour/dual_vertex.h"
+#include "isovdb/cell/dmc_table.h"
+#include "isovdb/cell/dual_vertex.h"
 #include "isovdb/errors.h"
 #include "isovdb/octree/criteria.h"
 #include "isovdb/octree/surface_gap.h"
@@ -83,7 +83,7 @@ struct Evaluation {
 
 class Builder {
  public:
-  Builder(const MetaCellSamples& samples, const OctreeOptions& options, OctreeDepths depths)
+  Builder(const cell::MetaCellSamples& samples, const OctreeOptions& options, OctreeDepths depths)
       : samples_(samples),
         options_(options),
         depths_(depths),
@@ -130,7 +130,7 @@ class Builder {
       ev.split = true;
     } else if (options_.construction == OctreeConstruction::Regular) {
       ev.split = ev.leaf.surface;
-    } else if (const contour::DmcEntry& entry = contour::dmcEntry(ev.leaf.cornerSigns);
+    } else if (const cell::DmcEntry& entry = cell::dmcEntry(ev.leaf.cornerSigns);
                entry.vertexCount > 1 || entry.doubleFace >= 0) {
       // Dual contouring gives a coarse leaf one vertex: a configuration with several
       // sheets (DMC groups) or one sheet through an ambiguous face twice would make it
@@ -138,11 +138,11 @@ class Builder {
       // gets its vertex (contour/leaf_groups.h).
       ev.split = ev.multiSheet = true;
     } else if (options_.qefTolerance >= 0.0f && ev.leaf.surface) {
-      const contour::DualVertex v = contour::computeDualVertex(
-          samples_, ev.leaf.origin, size, ev.leaf.bipolarEdges(),
-          contour::DualVertexOptions{.iso = options_.iso,
-                                     .singularValueThreshold = options_.singularValueThreshold,
-                                     .sharpFeatures = options_.sharpFeatures});
+      const cell::DualVertex v =
+          cell::computeDualVertex(samples_, ev.leaf.origin, size, ev.leaf.bipolarEdges(),
+                                  cell::DualVertexOptions{.iso = options_.iso,
+                                                          .singularValueThreshold = options_.singularValueThreshold,
+                                                          .sharpFeatures = options_.sharpFeatures});
       ev.split = ev.geometric = v.valid() && v.rmsError() > options_.qefTolerance;
       if (!ev.split && options_.sharpFeatures && v.valid() && v.minNormalDot < kFeatureCone) {
         // A few tangent planes of a curved crease meet off it while fitting almost exactly.
@@ -343,7 +343,7 @@ class Builder {
     map_.assign(ev.leaf.key, index);
   }
 
-  const MetaCellSamples& samples_;
+  const cell::MetaCellSamples& samples_;
   const OctreeOptions& options_;
   OctreeDepths depths_;
   SamplePhases phases_;  // what the criteria read
@@ -384,7 +384,7 @@ OctreeDepths resolveDepths(const OctreeOptions& options, int metaCellSize) {
   return d;
 }
 
-LinearOctree buildOctree(const MetaCellSamples& samples, const OctreeOptions& options, OctreeBuildStats* stats,
+LinearOctree buildOctree(const cell::MetaCellSamples& samples, const OctreeOptions& options, OctreeBuildStats* stats,
                          Interrupter* interrupter) {
   const OctreeDepths depths = resolveDepths(options, samples.size);
   Builder builder(samples, options, depths);

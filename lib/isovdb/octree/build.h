@@ -16,7 +16,7 @@
 ///   one depth); optionally a geometric criterion (QEF error above a
 ///   tolerance; with sharp features, a vertex off a curved crease) refines
 ///   further. For octree dual contouring + Ju–Udeshi.
-/// Memory: O(leaves) beside the dense MetaCellSamples block. Deterministic:
+/// Memory: O(leaves) beside the dense cell::MetaCellSamples block. Deterministic:
 /// the result does not depend on the number of threads.
 #pragma once
 
@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "isovdb/octree/linear_octree.h"
-#include "isovdb/octree/meta_cell_samples.h"
+#include "isovdb/cell/meta_cell_samples.h"
 #include "isovdb/progress.h"
 
 namespace isovdb::octree {
@@ -47,8 +47,8 @@ struct OctreeOptions {
   int finestCellSize = 0;      ///< if > 0: smallest leaf size in voxels (power of two), overrides maxDepth
   float qefTolerance = -1.0f;  ///< adaptive only: also subdivide a surface leaf whose dual vertex is farther
                                ///< than this RMS distance (voxels) from its tangent planes; < 0 = off
-  float singularValueThreshold = 0.1f;  ///< QEF truncation used by the geometric criterion (see contour::QefOptions)
-  /// Adaptive, with the QEF criterion on: sharp features (contour::DualVertexOptions::sharpFeatures
+  float singularValueThreshold = 0.1f;  ///< QEF truncation used by the geometric criterion (see cell::QefOptions)
+  /// Adaptive, with the QEF criterion on: sharp features (cell::DualVertexOptions::sharpFeatures
   /// for the criterion's vertices), and also subdivide a surface leaf whose crossing normals are
   /// more than 60 degrees apart and whose dual vertex is at least `featureTolerance` voxels off
   /// the zero level by the field's Lipschitz bound (surface_gap.h): on a curved rim the tangent
@@ -95,7 +95,7 @@ struct OctreeBuildStats {
 /// @param[out] stats optional figures of the construction.
 /// @param[in] interrupter optional; checked once per depth.
 /// @throw InputError for invalid options (see resolveDepths); Interrupted on cancellation.
-LinearOctree buildOctree(const MetaCellSamples& samples, const OctreeOptions& options = {},
+LinearOctree buildOctree(const cell::MetaCellSamples& samples, const OctreeOptions& options = {},
                          OctreeBuildStats* stats = nullptr, Interrupter* interrupter = nullptr);
 
 /// @brief True if no two leaves that share a face, an edge or a corner differ by more than one depth.

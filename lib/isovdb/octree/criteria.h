@@ -18,7 +18,7 @@
 ///   bubble touching no face) is complex too, so no component is lost.
 ///
 /// Sign convention: inside iff value <= iso. Coordinates are offsets in the
-/// meta-cell (voxel index space minus MetaCellSamples::origin). The criteria
+/// meta-cell (voxel index space minus cell::MetaCellSamples::origin). The criteria
 /// read the samples' phases only (sample_phases.h), never their values.
 #pragma once
 
@@ -26,7 +26,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "isovdb/octree/meta_cell_samples.h"
+#include "isovdb/cell/meta_cell_samples.h"
 #include "isovdb/octree/morton.h"
 #include "isovdb/octree/sample_phases.h"
 
@@ -106,7 +106,8 @@ CellTopology classifyCell(const SamplePhases& phases, std::array<int, 3> origin,
 bool hasHiddenComponent(const SamplePhases& phases, std::array<int, 3> origin, int size);
 
 /// @brief 8-bit corner sign configuration of a cell (bit c set iff corner c inside).
-std::uint8_t cellCornerSigns(const MetaCellSamples& samples, std::array<int, 3> origin, int size, float iso) noexcept;
+std::uint8_t cellCornerSigns(const cell::MetaCellSamples& samples, std::array<int, 3> origin, int size,
+                             float iso) noexcept;
 /// @brief The same, read from the phases.
 std::uint8_t cellCornerSigns(const SamplePhases& phases, std::array<int, 3> origin, int size) noexcept;
 

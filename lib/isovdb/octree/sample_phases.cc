@@ -11,7 +11,7 @@
 
 namespace isovdb::octree {
 
-void SamplePhases::compute(const MetaCellSamples& samples, float iso) {
+void SamplePhases::compute(const cell::MetaCellSamples& samples, float iso) {
   size_ = samples.size;
   apron_ = samples.apron;
   stride_ = static_cast<std::size_t>(samples.stride());
@@ -31,7 +31,7 @@ void SamplePhases::compute(const MetaCellSamples& samples, float iso) {
       for (; t + 4 <= count; t += 4)
         word |= static_cast<std::uint64_t>(_mm_movemask_ps(_mm_cmple_ps(_mm_loadu_ps(value + t), threshold))) << t;
 #endif
-      for (; t < count; ++t) word |= static_cast<std::uint64_t>(isInside(value[t], iso)) << t;
+      for (; t < count; ++t) word |= static_cast<std::uint64_t>(cell::isInside(value[t], iso)) << t;
       value += count;
       *out++ = word;
     }

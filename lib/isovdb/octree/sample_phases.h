@@ -16,17 +16,17 @@
 #include <cstdint>
 #include <vector>
 
-#include "isovdb/octree/meta_cell_samples.h"
+#include "isovdb/cell/meta_cell_samples.h"
 
 namespace isovdb::octree {
 
 class SamplePhases {
  public:
   SamplePhases() = default;
-  SamplePhases(const MetaCellSamples& samples, float iso) { compute(samples, iso); }
+  SamplePhases(const cell::MetaCellSamples& samples, float iso) { compute(samples, iso); }
 
   /// @brief Sets the bits from `samples` (inside iff value <= iso), apron included.
-  void compute(const MetaCellSamples& samples, float iso);
+  void compute(const cell::MetaCellSamples& samples, float iso);
 
   /// S, cells per axis of the meta-cell (0 before compute).
   int size() const noexcept { return size_; }

@@ -7,8 +7,8 @@
 
 namespace isovdb::octree {
 
-float surfaceGap(const MetaCellSamples& samples, std::array<int, 3> origin, int size, const std::array<float, 3>& x,
-                 float iso) noexcept {
+float surfaceGap(const cell::MetaCellSamples& samples, std::array<int, 3> origin, int size,
+                 const std::array<float, 3>& x, float iso) noexcept {
   // The cell's samples and kGapMargin beyond (within the block): a vertex on the cell's
   // boundary needs samples past it to be seen off the surface.
   std::array<int, 3> lo{}, hi{};

@@ -20,7 +20,7 @@
 
 #include <array>
 
-#include "isovdb/octree/meta_cell_samples.h"
+#include "isovdb/cell/meta_cell_samples.h"
 
 namespace isovdb::octree {
 
@@ -30,7 +30,7 @@ inline constexpr int kGapMargin = 2;
 /// @brief gap(x) over the samples of the cell with min corner `origin` and side `size`,
 ///        grown by kGapMargin on each side (clipped to the block, apron included).
 /// @pre the cell lies in [0, S]^3.
-float surfaceGap(const MetaCellSamples& samples, std::array<int, 3> origin, int size, const std::array<float, 3>& x,
-                 float iso) noexcept;
+float surfaceGap(const cell::MetaCellSamples& samples, std::array<int, 3> origin, int size,
+                 const std::array<float, 3>& x, float iso) noexcept;
 
 }  // namespace isovdb::octree

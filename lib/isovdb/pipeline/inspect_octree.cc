@@ -23,7 +23,7 @@ void inspectOctree(const volume::Volume& input, const InspectOctreeOptions& opti
   if (partition.cells.empty()) throw InputError("'" + input.name() + "': no meta-cell holds the surface");
   // The partition is conservative: by default take the first candidate whose
   // samples really change sign.
-  octree::MetaCellSamples samples;
+  cell::MetaCellSamples samples;
   volume::MetaCellIndex index = partition.cells.front();
   if (options.metaCell) {
     index = *options.metaCell;

@@ -8,8 +8,8 @@
 #include "isovdb/io/dense_volume.h"
 #include "isovdb/io/path_util.h"
 #include "isovdb/io/sample_statistics.h"
-#include "isovdb/io/segy_metadata.h"
-#include "isovdb/io/vdb_file.h"
+#include "isovdb/store/segy_metadata.h"
+#include "isovdb/store/vdb_file.h"
 #include "isovdb/volume/ingest.h"
 
 namespace isovdb::pipeline {
@@ -113,13 +113,13 @@ volume::Volume loadVolume(const std::filesystem::path& path, const InputOptions&
   input["path"] = path.string();
   if (isVdbPath(path)) {
     input["format"] = "vdb";
-    result = io::readVdb(path, options.gridName);
+    result = store::readVdb(path, options.gridName);
   } else if (options.segy || io::isSegyPath(path)) {
     const std::unique_ptr<io::SegyStream> stream = io::openSegy(path, options.segy.value_or(io::SegyOptions{}));
     input["format"] = "segy";
     input["segy"] = segyJson(stream->geometry());
     result = ingest(*stream, options, interrupter, input);
-    io::recordSegyMetadata(result, stream->geometry());
+    store::recordSegyMetadata(result, stream->geometry());
   } else {
     std::unique_ptr<io::SliceStream> stream = io::openDenseVolume(path, options.raw);
     const io::VolumeHeader& header = stream->header();

@@ -3,7 +3,7 @@
 #include "isovdb/pipeline/mesh_report.h"
 
 #include "isovdb/io/dense_volume.h"
-#include "isovdb/io/vdb_file.h"
+#include "isovdb/store/vdb_file.h"
 #include "isovdb/volume/digital_topology.h"
 #include "isovdb/volume/distance_field.h"
 
@@ -57,7 +57,7 @@ std::int64_t solidEulerCharacteristic(const std::filesystem::path& path, const I
     std::unique_ptr<io::SliceStream> stream = io::openDenseVolume(path, options.raw);
     return volume::eulerCharacteristic(*stream, options.rule, interrupter, adjacency);
   }
-  const volume::Volume volume = io::readVdb(path, options.gridName);
+  const volume::Volume volume = store::readVdb(path, options.gridName);
   switch (volume.kind()) {
     case volume::VolumeKind::Mask:
       return volume::eulerCharacteristic(volume, interrupter, adjacency);

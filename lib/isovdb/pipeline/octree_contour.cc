@@ -81,8 +81,8 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 }
 
 /// Builds the octree of one block of samples and contours it (edges inside the block; the seam kept).
-contour::MetaCellMesh contourBlock(const octree::MetaCellSamples& samples, const OctreeContourOptions& options,
-                                   float iso, MetaCellTotals& totals, Interrupter* interrupter) {
+contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const OctreeContourOptions& options, float iso,
+                                   MetaCellTotals& totals, Interrupter* interrupter) {
   auto t0 = std::chrono::steady_clock::now();
   octree::OctreeBuildStats buildStats;
   const octree::LinearOctree tree =
@@ -126,7 +126,7 @@ contour::MetaCellMesh contourBlock(const octree::MetaCellSamples& samples, const
 }
 
 /// The engine's inside is value <= iso; a scalar's inside is above the isovalue.
-float engineIso(const volume::Volume& field, float iso, octree::MetaCellSamples& samples) {
+float engineIso(const volume::Volume& field, float iso, cell::MetaCellSamples& samples) {
   if (field.kind() != volume::VolumeKind::Scalar) return iso;
   for (float& v : samples.values) v = -v;
   return -iso;
@@ -180,7 +180,7 @@ void contourSingleBlock(const volume::Volume& field, const OctreeContourOptions&
                      std::to_string(static_cast<long long>(blockBytes / (1 << 20))) +
                      " MiB, more than half of this machine's memory (use --meta-cell 128)");
   MetaCellTotals totals;
-  octree::MetaCellSamples samples;
+  cell::MetaCellSamples samples;
   float iso = options.iso;
   {
     Statistics::StageTimer timer(stats, "read_meta_cells");
@@ -236,7 +236,7 @@ void contourMetaCells(const volume::Volume& field, const OctreeContourOptions& o
   const std::size_t total = partition.cells.size();
   // One sample block per thread, reused meta-cell after meta-cell: a fresh 9 MB
   // block per meta-cell had every page faulted in again.
-  tbb::enumerable_thread_specific<octree::MetaCellSamples> sampleBlocks;
+  tbb::enumerable_thread_specific<cell::MetaCellSamples> sampleBlocks;
   {
     Statistics::StageTimer timer(stats, "contour_meta_cells");
     ProgressStage progress(interrupter, "contouring meta-cells");
@@ -255,7 +255,7 @@ void contourMetaCells(const volume::Volume& field, const OctreeContourOptions& o
                                            tbb::filter_mode::parallel,
                                            [&](std::shared_ptr<MetaCellJob> job) {
                                              const auto t0 = std::chrono::steady_clock::now();
-                                             octree::MetaCellSamples& samples = sampleBlocks.local();
+                                             cell::MetaCellSamples& samples = sampleBlocks.local();
                                              volume::readMetaCell(field, partition.cells[job->position], s, samples,
                                                                   apron);
                                              const float iso = engineIso(field, options.iso, samples);

@@ -2,8 +2,8 @@
 // Copyright Contributors to the isovdb project.
 #include "isovdb/pipeline/write_distance_field.h"
 
-#include "isovdb/io/leafwise_level_set_writer.h"
-#include "isovdb/io/vdb_file.h"
+#include "isovdb/store/leafwise_level_set_writer.h"
+#include "isovdb/store/vdb_file.h"
 #include "isovdb/pipeline/extract.h"
 #include "isovdb/pipeline/load_volume.h"
 #include "isovdb/volume/band_chunks.h"
@@ -18,17 +18,17 @@ void writeDistanceFieldVdb(const volume::Volume& volume, const volume::DistanceF
   if (volume.kind() != volume::VolumeKind::Mask || wholeInMemory) {
     const volume::Volume sdf = toContourable(volume, options, interrupter, stats);
     Statistics::StageTimer timer(stats, "write");
-    io::writeVdb(output, sdf, {.gridName = gridName});
+    store::writeVdb(output, sdf, {.gridName = gridName});
     return;
   }
-  io::LeafwiseLevelSetWriter writer(output, static_cast<float>(options.halfWidth), volume.geometry(),
-                                    {.gridName = gridName, .source = volume.name()});
+  store::LeafwiseLevelSetWriter writer(output, static_cast<float>(options.halfWidth), volume.geometry(),
+                                       {.gridName = gridName, .source = volume.name()});
   {
     Statistics::StageTimer timer(stats, "distance_field");
     volume::computeBandInChunks(
         volume::maskGrid(volume), options, [&writer](auto&& leaves) { writer.add(std::move(leaves)); }, interrupter);
   }
-  io::LevelSetFileSummary summary;
+  store::LevelSetFileSummary summary;
   {
     Statistics::StageTimer timer(stats, "write");
     summary = writer.commit(interrupter);

@@ -3,7 +3,7 @@
 /// @file write_distance_field.h
 /// @brief `isovdb sdf`'s job: a volume's narrow-band distance field written to a
 ///        level-set .vdb. From a mask, the band goes to the file chunk by chunk
-///        (io::LeafwiseLevelSetWriter), so it is never held whole: peak memory is
+///        (store::LeafwiseLevelSetWriter), so it is never held whole: peak memory is
 ///        the mask, the chunks in flight and about 90 bytes per band leaf.
 #pragma once
 

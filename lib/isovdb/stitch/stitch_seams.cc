@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "isovdb/contour/adaptive_edges.h"
-#include "isovdb/contour/dmc_table.h"
+#include "isovdb/cell/dmc_table.h"
 #include "isovdb/contour/regular_contour.h"
 #include "isovdb/contour/voxel_dmc.h"
 #include "isovdb/octree/morton.h"
@@ -67,7 +67,7 @@ void stitchRegular(const Seam& seam, const EdgeOctree& edgeTree, int s, bool vox
           break;
         }
         const SeamCell& cell = *edgeTree.cells[static_cast<std::size_t>(j)];
-        const int g = contour::dmcVertexOfEdge(cell.cornerSigns, cell.alternative, axis, q);
+        const int g = cell::dmcVertexOfEdge(cell.cornerSigns, cell.alternative, axis, q);
         if (g < 0 || cell.size != leaf.size) {
           complete = false;
           break;
@@ -97,7 +97,7 @@ void stitchAdaptive(const Seam& seam, const EdgeOctree& edgeTree, int s, bool in
   std::vector<char> alternative(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
     const SeamCell& cell = *edgeTree.cells[i];
-    firstVertex[i + 1] = firstVertex[i] + contour::dmcEntry(cell.cornerSigns, cell.alternative).vertexCount;
+    firstVertex[i + 1] = firstVertex[i] + cell::dmcEntry(cell.cornerSigns, cell.alternative).vertexCount;
     alternative[i] = cell.alternative;
   }
   std::vector<contour::Vec3d> cellPoints(firstVertex[n]);

@@ -3,7 +3,7 @@
 /// @file band_chunks.h
 /// @brief The narrow band of a mask computed chunk by chunk and handed out as
 ///        leaves, so a caller can either keep them (distanceField) or stream them
-///        to disk (io::LeafwiseLevelSetWriter) without ever holding the whole band.
+///        to disk (store::LeafwiseLevelSetWriter) without ever holding the whole band.
 ///        Heavy (includes openvdb.h through grids.h): include it only from .cc files.
 #pragma once
 
@@ -18,7 +18,7 @@ namespace isovdb::volume {
 
 /// Receives the leaves of one chunk; it owns them from then on. Called from
 /// several threads at once (one chunk each), in an order that depends on thread
-/// timing: a sink must be thread-safe (io::LeafwiseLevelSetWriter::add is; one
+/// timing: a sink must be thread-safe (store::LeafwiseLevelSetWriter::add is; one
 /// that adds to a tree takes a lock).
 using BandLeafSink = std::function<void(std::vector<std::unique_ptr<FieldLeaf>>&&)>;
 

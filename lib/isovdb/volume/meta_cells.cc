@@ -60,12 +60,11 @@ MetaCellPartition partitionMetaCells(const Volume& field, int size, float iso) {
   return partition;
 }
 
-void readMetaCell(const Volume& field, const MetaCellIndex& index, int size, octree::MetaCellSamples& out, int apron) {
+void readMetaCell(const Volume& field, const MetaCellIndex& index, int size, cell::MetaCellSamples& out, int apron) {
   readBlock(field, {index[0] * size, index[1] * size, index[2] * size}, size, out, apron);
 }
 
-void readBlock(const Volume& field, const std::array<int, 3>& origin, int size, octree::MetaCellSamples& out,
-               int apron) {
+void readBlock(const Volume& field, const std::array<int, 3>& origin, int size, cell::MetaCellSamples& out, int apron) {
   using Leaf = FieldGrid::TreeType::LeafNodeType;
   constexpr int kLeafDim = static_cast<int>(Leaf::DIM);
   const FieldGrid& grid = fieldGrid(field);
@@ -104,13 +103,13 @@ void readBlock(const Volume& field, const std::array<int, 3>& origin, int size, 
       }
 }
 
-bool hasSignChange(const octree::MetaCellSamples& samples, float iso) {
+bool hasSignChange(const cell::MetaCellSamples& samples, float iso) {
   bool in = false, outside = false;
   const int s = samples.size;
   for (int k = 0; k <= s; ++k)
     for (int j = 0; j <= s; ++j)
       for (int i = 0; i <= s; ++i) {
-        (octree::isInside(samples.value(i, j, k), iso) ? in : outside) = true;
+        (cell::isInside(samples.value(i, j, k), iso) ? in : outside) = true;
         if (in && outside) return true;
       }
   return false;

@@ -16,7 +16,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "isovdb/octree/meta_cell_samples.h"
+#include "isovdb/cell/meta_cell_samples.h"
 #include "isovdb/volume/volume.h"
 
 namespace isovdb::volume {
@@ -41,15 +41,14 @@ MetaCellPartition partitionMetaCells(const Volume& field, int size, float iso = 
 
 /// Fills `out` with the samples of meta-cell `index` (offsets -A..S+A on each
 /// axis, A = `apron`), inactive voxels reading as the grid's signed background.
-void readMetaCell(const Volume& field, const MetaCellIndex& index, int size, octree::MetaCellSamples& out,
-                  int apron = 1);
+void readMetaCell(const Volume& field, const MetaCellIndex& index, int size, cell::MetaCellSamples& out, int apron = 1);
 
 /// Fills `out` with the samples of the cube of `size` cells whose minimum corner
 /// is `origin` (any index position, not only multiples of size), apron included.
-void readBlock(const Volume& field, const std::array<int, 3>& origin, int size, octree::MetaCellSamples& out,
+void readBlock(const Volume& field, const std::array<int, 3>& origin, int size, cell::MetaCellSamples& out,
                int apron = 1);
 
 /// True when the samples 0..S of `samples` hold both sides of `iso` (inside: value <= iso).
-bool hasSignChange(const octree::MetaCellSamples& samples, float iso);
+bool hasSignChange(const cell::MetaCellSamples& samples, float iso);
 
 }  // namespace isovdb::volume

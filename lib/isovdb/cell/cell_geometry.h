@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
+/// @file cell_geometry.h
+/// @brief The numbering of a cell's corners, edges and faces that the octree's
+///        keys, the DMC table and the dual vertices share. Header-only, constexpr.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+namespace isovdb::cell {
+
+/// @name Cell corners, edges and faces (shared numbering for octree and contour)
+/// Corner c (0..7) is at offset ((c & 1), (c >> 1) & 1, (c >> 2) & 1) * cellSize,
+/// like the octants. Edge e (0..11) runs along axis e / 4; its 2-bit index
+/// q = e % 4 gives the position on the two other axes u < v (bit 0 -> u,
+/// bit 1 -> v). Face f (0..5) is 2 * axis + side (side 0 = min, 1 = max).
+/// @{
+
+/// @brief The two axes other than `axis`, ascending.
+constexpr std::array<int, 2> otherAxes(int axis) noexcept {
+  return axis == 0 ? std::array<int, 2>{1, 2} : axis == 1 ? std::array<int, 2>{0, 2} : std::array<int, 2>{0, 1};
+}
+
+/// @brief Axis of cell edge e.
+constexpr int cellEdgeAxis(int edge) noexcept { return edge >> 2; }
+
+/// @brief Corner at end 0 (min) or 1 (max) of cell edge e.
+constexpr int cellEdgeCorner(int edge, int end) noexcept {
+  const int axis = edge >> 2, q = edge & 3;
+  const auto uv = otherAxes(axis);
+  return ((q & 1) << uv[0]) | (((q >> 1) & 1) << uv[1]) | (end << axis);
+}
+
+/// @brief Cell edge index from its axis and the min corner's bits on the other two axes.
+constexpr int cellEdgeIndex(int axis, int cornerBits) noexcept {
+  const auto uv = otherAxes(axis);
+  return axis * 4 + ((cornerBits >> uv[0]) & 1) + (((cornerBits >> uv[1]) & 1) << 1);
+}
+
+/// @brief Bit mask of the 4 cell edges lying on face f.
+constexpr std::uint16_t cellFaceEdgeMask(int face) noexcept {
+  const int axis = face >> 1, side = face & 1;
+  std::uint16_t mask = 0;
+  for (int e = 0; e < 12; ++e)
+    if (cellEdgeAxis(e) != axis && ((cellEdgeCorner(e, 0) >> axis) & 1) == side)
+      mask = static_cast<std::uint16_t>(mask | (1u << e));
+  return mask;
+}
+
+/// @brief Bit mask of the (two) edges of face f that end at `corner` (a corner of f).
+constexpr std::uint16_t cellFaceEdgesAtCorner(int face, int corner) noexcept {
+  std::uint16_t mask = 0;
+  const std::uint16_t onFace = cellFaceEdgeMask(face);
+  for (int e = 0; e < 12; ++e)
+    if (((onFace >> e) & 1) && (cellEdgeCorner(e, 0) == corner || cellEdgeCorner(e, 1) == corner))
+      mask = static_cast<std::uint16_t>(mask | (1u << e));
+  return mask;
+}
+
+/// @brief Edges whose end corners have different inside/outside signs
+///        (bit e set), from an 8-bit corner sign configuration (bit c = corner c inside).
+constexpr std::uint16_t bipolarEdgeMask(std::uint8_t cornerSigns) noexcept {
+  std::uint16_t mask = 0;
+  for (int e = 0; e < 12; ++e)
+    if (((cornerSigns >> cellEdgeCorner(e, 0)) & 1) != ((cornerSigns >> cellEdgeCorner(e, 1)) & 1))
+      mask = static_cast<std::uint16_t>(mask | (1u << e));
+  return mask;
+}
+/// @}
+
+}  // namespace isovdb::cell

@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
+/// @file dual_vertex.h
+/// @brief The dual vertex of an octree leaf: crossings on its bipolar edges,
+///        Prewitt normals (or, with sharp features, the normals of the faces
+///        beside a crease: crease_crossing.h), QEF minimised towards the mass
+///        point, mass-point fallback when the minimiser leaves the cell
+///        (paper 000, section 4.2.2).
+///
+/// Positions are global voxel index coordinates (meta-cell offsets plus
+/// MetaCellSamples::origin). A vertex always lies in its cell (closed box).
+/// Sign convention: inside iff value <= iso.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "isovdb/cell/qef.h"
+#include "isovdb/cell/meta_cell_samples.h"
+
+namespace isovdb::cell {
+
+/// Options of the dual-vertex computation.
+struct DualVertexOptions {
+  float iso = 0.0f;                     ///< isovalue; inside iff value <= iso
+  float singularValueThreshold = 0.1f;  ///< QEF truncation, relative to the largest singular value (see QefOptions)
+  /// Skip the QEF: the vertex is the mass point of the crossings. For a cell with several
+  /// sheets (DMC groups), where a QEF minimiser can wander towards another sheet.
+  bool massPointOnly = false;
+  /// Sharp features (crease_crossing.h): crossings near a crease of the field are placed and
+  /// oriented from the face they lie on. A crease line that grazes a cell's corner has its QEF
+  /// minimiser nearest the mass point just outside the cell: a rank-2 minimiser slides along
+  /// the crease into the cell, and one at most kFeatureSlack outside is clamped into it,
+  /// rather than replaced by the mass point.
+  bool sharpFeatures = false;
+};
+
+/// How far (voxels) a QEF minimiser may lie outside its cell and still be clamped into it
+/// with DualVertexOptions::sharpFeatures.
+inline constexpr float kFeatureSlack = 0.1f;
+
+/// @brief One dual vertex.
+struct DualVertex {
+  Vec3f position{0.0f, 0.0f, 0.0f};  ///< global voxel index coordinates, inside the cell
+  float qefError = 0.0f;             ///< E(position), voxels^2
+  std::uint16_t edges = 0;           ///< cell edges whose crossings were used (bit e, numbering of octree/morton.h)
+  std::uint8_t intersections = 0;    ///< number of crossings used (0 = no vertex)
+  std::uint8_t rank = 0;             ///< rank of the truncated QEF system
+  bool massPointFallback = false;    ///< the QEF minimiser left the cell; the mass point was used
+  float minNormalDot = 1.0f;         ///< smallest dot product of two crossing normals (1: all parallel)
+
+  bool valid() const noexcept { return intersections > 0; }
+  /// RMS distance (voxels) from the vertex to the tangent planes: sqrt(E / n).
+  float rmsError() const noexcept;
+};
+
+/// @brief Dual vertex of the cell with min corner `cellOrigin` (meta-cell
+///        offsets) and side `cellSize`, from the crossings on the cell edges in
+///        `edgeMask` that are bipolar (regular-mode DMC passes one edge group
+///        of its table per vertex; pass 0x0fff for all edges).
+/// @return a vertex with intersections == 0 if none of those edges is bipolar.
+/// @pre the cell lies in [0, S]^3.
+DualVertex computeDualVertex(const cell::MetaCellSamples& samples, std::array<int, 3> cellOrigin, int cellSize,
+                             std::uint16_t edgeMask, const DualVertexOptions& options = {});
+
+/// @brief Dual vertex from all bipolar edges of the cell.
+inline DualVertex computeDualVertex(const cell::MetaCellSamples& samples, std::array<int, 3> cellOrigin, int cellSize,
+                                    const DualVertexOptions& options = {}) {
+  return computeDualVertex(samples, cellOrigin, cellSize, 0x0fff, options);
+}
+
+}  // namespace isovdb::cell

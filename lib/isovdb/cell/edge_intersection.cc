@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
+#include "isovdb/cell/edge_intersection.h"
+
+#include <cstddef>
+
+#include "isovdb/cell/crease_crossing.h"
+
+namespace isovdb::cell {
+
+bool intersectEdge(const cell::MetaCellSamples& samples, std::array<int, 3> start, int axis, int length, float iso,
+                   EdgeIntersection& out, bool sharpFeatures) noexcept {
+  const std::ptrdiff_t step = axis == 0   ? 1
+                              : axis == 1 ? samples.stride()
+                                          : static_cast<std::ptrdiff_t>(samples.stride()) * samples.stride();
+  const float* p = samples.values.data() + samples.indexOf(start[0], start[1], start[2]);
+  bool prev = cell::isInside(p[0], iso);
+  int first = -1, transitions = 0;
+  for (int t = 1; t <= length; ++t) {
+    const bool cur = cell::isInside(p[t * step], iso);
+    if (cur != prev) {
+      if (first < 0) first = t - 1;
+      ++transitions;
+    }
+    prev = cur;
+  }
+  if (first < 0) return false;
+  const float v0 = p[first * step], v1 = p[(first + 1) * step];
+  // v0 and v1 lie on either side of iso (one <= iso < other), so v1 != v0.
+  float t = (iso - v0) / (v1 - v0);
+  t = t < 0.0f ? 0.0f : (t > 1.0f ? 1.0f : t);
+  std::array<int, 3> s0 = start;
+  s0[axis] += first;
+  out.point = {static_cast<float>(s0[0]), static_cast<float>(s0[1]), static_cast<float>(s0[2])};
+  out.point[axis] += t;
+  CreaseCrossing crease;
+  if (sharpFeatures && crossingBesideCrease(samples, s0, axis, t, iso, crease)) {
+    out.point[axis] = static_cast<float>(s0[axis]) + crease.t;
+    out.normal = normalized(crease.gradient);
+  } else {
+    out.normal = normalized(prewittGradientOnEdge(samples, s0, axis, t));
+  }
+  out.transitions = transitions;
+  return true;
+}
+
+}  // namespace isovdb::cell

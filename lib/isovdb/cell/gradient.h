@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
+/// @file gradient.h
+/// @brief Prewitt 3x3x3 gradient of the distance field (paper 000, section 4.2.2).
+///
+/// The x derivative at a sample is the mean over the 3 x 3 samples of the
+/// (y, z) neighbourhood of the central difference (v(i+1) - v(i-1)) / 2, in
+/// value units per voxel; likewise for y and z. For an SDF (negative inside)
+/// the gradient points outward. Positions are meta-cell offsets.
+#pragma once
+
+#include <array>
+
+#include "isovdb/cell/meta_cell_samples.h"
+
+namespace isovdb::cell {
+
+using Vec3f = std::array<float, 3>;
+
+/// @brief Prewitt gradient at sample offset (i, j, k).
+/// @pre i, j, k in [0, S] (the apron supplies the outer neighbours).
+Vec3f prewittGradient(const cell::MetaCellSamples& samples, int i, int j, int k) noexcept;
+
+/// @brief Gradient at the point `sample0 + t * e_axis` of a grid line, linearly
+///        interpolated between the Prewitt gradients of its two end samples.
+/// @pre sample0 and sample0 + e_axis in [0, S]^3; t in [0, 1].
+Vec3f prewittGradientOnEdge(const cell::MetaCellSamples& samples, std::array<int, 3> sample0, int axis,
+                            float t) noexcept;
+
+/// @brief Dot product.
+inline float dot(const Vec3f& a, const Vec3f& b) noexcept { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/// @brief Unit vector of v, or (0, 0, 0) when |v| is 0 or not finite.
+Vec3f normalized(const Vec3f& v) noexcept;
+
+}  // namespace isovdb::cell

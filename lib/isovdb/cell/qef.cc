@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
+#include "isovdb/cell/qef.h"
+
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cassert>
+
+namespace isovdb::cell {
+
+float qefError(std::span<const Vec3f> points, std::span<const Vec3f> normals, const Vec3f& x) noexcept {
+  double e = 0.0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    double d = 0.0;
+    for (int a = 0; a < 3; ++a) d += static_cast<double>(normals[i][a]) * (static_cast<double>(x[a]) - points[i][a]);
+    e += d * d;
+  }
+  return static_cast<float>(e);
+}
+
+QefSolution solveQef(std::span<const Vec3f> points, std::span<const Vec3f> normals, const QefOptions& options) {
+  assert(points.size() == normals.size());
+  QefSolution s;
+  if (points.empty()) return s;
+  Eigen::Vector3d mass = Eigen::Vector3d::Zero();
+  for (const Vec3f& p : points) mass += Eigen::Vector3d(p[0], p[1], p[2]);
+  mass /= static_cast<double>(points.size());
+  // Work relative to the mass point (well conditioned at any index magnitude):
+  // minimise |A c - r|^2 with r_i = n_i . (p_i - mass), then x = mass + c.
+  Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d atr = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector3d n(normals[i][0], normals[i][1], normals[i][2]);
+    const Eigen::Vector3d p(points[i][0], points[i][1], points[i][2]);
+    ata.noalias() += n * n.transpose();
+    atr += n * n.dot(p - mass);
+  }
+  // A^T A is symmetric positive semi-definite: its singular value decomposition is
+  // its eigendecomposition (U = V), which Eigen's symmetric QR solver gives in a
+  // fraction of JacobiSVD's time (the QEF is solved once per surface cell). Not the
+  // closed form (computeDirect): it loses the small eigenvalues' relative accuracy
+  // that a vertex outside its cell depends on.
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(ata);
+  // Eigen orders eigenvalues increasingly; singular values are taken largest first.
+  Eigen::Vector3d sigma;
+  Eigen::Matrix3d v;
+  for (int i = 0; i < 3; ++i) {
+    sigma(i) = std::max(eigen.eigenvalues()(2 - i), 0.0);
+    v.col(i) = eigen.eigenvectors().col(2 - i);
+  }
+  Eigen::Vector3d inv = Eigen::Vector3d::Zero();
+  const double cutoff = sigma(0) * static_cast<double>(options.singularValueThreshold);
+  int free = 0;
+  for (int i = 0; i < 3; ++i)
+    if (sigma(i) > 0.0 && sigma(i) >= cutoff) {
+      inv(i) = 1.0 / sigma(i);
+      ++s.rank;
+    } else {
+      const Eigen::Vector3d d = v.col(i);
+      s.freeDirections[static_cast<std::size_t>(free++)] = {static_cast<float>(d(0)), static_cast<float>(d(1)),
+                                                            static_cast<float>(d(2))};
+    }
+  const Eigen::Vector3d c = v * inv.asDiagonal() * v.transpose() * atr;
+  const Eigen::Vector3d x = mass + c;
+  s.point = {static_cast<float>(x(0)), static_cast<float>(x(1)), static_cast<float>(x(2))};
+  s.massPoint = {static_cast<float>(mass(0)), static_cast<float>(mass(1)), static_cast<float>(mass(2))};
+  s.error = qefError(points, normals, s.point);
+  return s;
+}
+
+}  // namespace isovdb::cell

@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
+/// @file qef.h
+/// @brief Quadratic error function of dual contouring, minimised towards the
+///        mass point with the SVD pseudo-inverse (paper 000, eq. 4-1 and 4-2;
+///        Schaefer and Warren 2003).
+///
+/// E(x) = sum_i (n_i . (x - p_i))^2 ; with A the rows n_i and b_i = n_i . p_i,
+/// x = p + (A^T A)^+ (A^T b - A^T A p), p the mass point (mean of the p_i).
+/// Singular values of A^T A below `singularValueThreshold` times the largest
+/// are truncated, so flat or degenerate systems move the vertex only along
+/// the well-determined directions.
+#pragma once
+
+#include <array>
+#include <span>
+
+namespace isovdb::cell {
+
+using Vec3f = std::array<float, 3>;
+
+/// Options of solveQef.
+struct QefOptions {
+  float singularValueThreshold = 0.1f;  ///< relative to the largest singular value of A^T A;
+                                        ///< higher = smoother (fewer sharp features), lower = sharper but less stable
+};
+
+/// @brief Minimiser of a QEF.
+struct QefSolution {
+  Vec3f point{0.0f, 0.0f, 0.0f};      ///< minimiser nearest the mass point
+  Vec3f massPoint{0.0f, 0.0f, 0.0f};  ///< mean of the points
+  float error = 0.0f;                 ///< E(point), squared distance units
+  int rank = 0;                       ///< singular values kept (0..3)
+  /// Directions along which E is (nearly) flat: the truncated singular vectors, 3 - rank of
+  /// them (unit); every point + sum t_i freeDirections[i] fits about as well.
+  std::array<Vec3f, 3> freeDirections{};
+};
+
+/// @brief Solves the QEF of `points` and unit `normals` (same count).
+/// @pre points.size() == normals.size(); an empty input returns all zeros.
+QefSolution solveQef(std::span<const Vec3f> points, std::span<const Vec3f> normals, const QefOptions& options = {});
+
+/// @brief E(x) for the given planes.
+float qefError(std::span<const Vec3f> points, std::span<const Vec3f> normals, const Vec3f& x) noexcept;
+
+}  // namespace isovdb::cell
