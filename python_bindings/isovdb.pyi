@@ -71,17 +71,17 @@ def morph_slices(slices: PathLike | Volume, *, heights: PathLike | None = None, 
                  progress: Progress = None) -> Volume: ...
 def extract_reservoir(grid: PathLike | list[PathLike], *, property: str, iso: float, tessellate: int = 0) -> Mesh: ...
 def euler_characteristic(volume: Volume, adjacency: Literal[26, 6] = 26, progress: Progress = None) -> int: ...
-def distance_field(volume: Volume, half_width: int = 3, closing: int = 0, chunk_size: int = 64,
-                   progress: Progress = None, *, output: PathLike | None = None,
-                   grid_name: str = "sdf",
-                   distance: Literal["interface", "tracker"] = "interface") -> Volume | dict[str, Any]: ...
-def extract(volume: Volume, *, method: Literal["adaptive", "regular", "vdb"] = "adaptive", iso: float = 0.0,
-            min_level: int = -1, max_level: int = -1, finest_size: int = 1, max_cell_size: int = 16,
-            meta_cell: int = 128, qef_tolerance: float = 0.15, intersection_free: bool = True,
-            sharp_features: bool = False, adaptivity: float = 0.0,
-            distance: Literal["interface", "tracker"] = "interface", half_width: int = 3, closing: int = 0,
-            sdf_chunk: int = 64,
+# distance_field() and extract() are made at import from the settings table the CLI's
+# flags come from (lib/isovdb/pipeline/extract_settings.cc); test_settings.py checks
+# these two signatures against it.
+def distance_field(volume: Volume, *, distance: Literal["interface", "tracker"] = "interface", half_width: int = 3,
+                   sdf_chunk: int = 64, closing: int = 0, progress: Progress = None,
+                   output: PathLike | None = None, grid_name: str = "sdf") -> Volume | dict[str, Any]: ...
+def extract(volume: Volume, *, method: Literal["adaptive", "regular", "vdb"] = "adaptive", iso: float = 0,
+            adaptivity: float = 0, distance: Literal["interface", "tracker"] = "interface", half_width: int = 3,
+            sdf_chunk: int = 64, closing: int = 0, meta_cell: int = 128, threads: int | None = 0,
+            min_level: int = -1, max_cell_size: int = 16, max_level: int = -1, finest_size: int = 1,
+            qef_tolerance: float = 0.15, intersection_free: bool = True, sharp_features: bool = False,
             boundary: Literal["cap", "open"] = "cap", topology: Literal["auto", "voxels", "mdmc"] = "auto",
-            threads: int | None = None, progress: Progress = None,
-            output: PathLike | None = None) -> Mesh | dict[str, Any]: ...
+            progress: Progress = None, output: PathLike | None = None) -> Mesh | dict[str, Any]: ...
 def read_mesh(path: PathLike) -> Mesh: ...

@@ -50,32 +50,4 @@ pipeline::InputOptions InputFlags::toOptions(const std::string& path) const {
   return pipeline::resolveInputChoices(path, choices);
 }
 
-void DistanceFlags::add(CLI::App& command, volume::DistanceFieldOptions& options, bool streamed) {
-  method = volume::distanceMethodName(options.method);
-  command
-      .add_option("--distance", method,
-                  "Distance field of a mask. interface: sub-voxel distances at the mask's interface from a small "
-                  "Gaussian blur, the band along the nearest interface voxel's tangent plane (fast; every sign "
-                  "the mask's). tracker: OpenVDB's topologyToLevelSet + sdfToSdf (slow; for comparison)")
-      ->capture_default_str();
-  command.add_option("--half-width", options.halfWidth, "Distance-field band half-width (voxels)")
-      ->capture_default_str();
-  command
-      .add_option("--sdf-chunk", options.chunkSize,
-                  std::string("Distance field computed in cubes of this many voxels (multiple of 8") +
-                      (streamed ? ") and written to the file as they finish" : ")") +
-                      "; 0 = tracker: the whole band at once, in memory")
-      ->capture_default_str();
-  command
-      .add_option("--closing", options.closingSteps,
-                  "Morphological closing steps before the distance field (changes topology)")
-      ->capture_default_str();
-}
-
-void DistanceFlags::apply(volume::DistanceFieldOptions& options) const {
-  const auto parsed = volume::parseDistanceMethod(method);
-  if (!parsed) throw InputError("--distance: unknown method '" + method + "', expected interface or tracker");
-  options.method = *parsed;
-}
-
 }  // namespace isovdb::cli

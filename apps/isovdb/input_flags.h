@@ -37,15 +37,4 @@ struct InputFlags {
   pipeline::InputOptions toOptions(const std::string& path) const;
 };
 
-/// The distance-field flags of `sdf` and `extract`: --distance, --half-width,
-/// --sdf-chunk and --closing, filling `options` (--distance once parsed by apply()).
-struct DistanceFlags {
-  std::string method;
-
-  /// `streamed`: the command writes the band to a file chunk by chunk (`sdf`).
-  void add(CLI::App& command, volume::DistanceFieldOptions& options, bool streamed);
-  /// Sets options.method from --distance. @throw InputError naming the flag for an unknown method.
-  void apply(volume::DistanceFieldOptions& options) const;
-};
-
 }  // namespace isovdb::cli

@@ -99,7 +99,7 @@ void addMorphCommand(CLI::App& app, Context& context) {
     const auto method = pipeline::parseContourMethod(state->method);
     if (!method)
       throw InputError("--method: unknown method '" + state->method + "', expected vdb, regular or adaptive");
-    extract.method = *method;
+    extract.contour.method = *method;
     extract.threads = state->threads;
     morph::ReconstructOptions& options = state->options;
     const auto interpolation = morph::parseInterpolation(state->interpolation);

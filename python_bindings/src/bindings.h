@@ -46,9 +46,6 @@ py::tuple toTuple(const std::array<T, 3>& v) {
 /// A float, or a sequence of three, as three floats (`name` is used in messages).
 std::array<double, 3> threeDoubles(const py::object& value, const char* name);
 
-/// The `distance=` keyword's method. @throw InputError naming the keyword for another name.
-volume::DistanceMethod distanceMethod(const std::string& name);
-
 void bindVolume(py::module_& m);     // volume_bindings.cc: Volume, from_numpy, read_volume, distance_field
 void bindSeismic(py::module_& m);    // seismic_bindings.cc: read_segy
 void bindMesh(py::module_& m);       // mesh_bindings.cc: Mesh, read_mesh

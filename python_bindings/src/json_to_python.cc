@@ -50,9 +50,4 @@ std::array<double, 3> threeDoubles(const py::object& value, const char* name) {
                         py::repr(value).cast<std::string>());
 }
 
-volume::DistanceMethod distanceMethod(const std::string& name) {
-  if (const auto method = volume::parseDistanceMethod(name)) return *method;
-  throw InputError("distance: unknown method '" + name + "', expected interface or tracker");
-}
-
 }  // namespace isovdb::python

@@ -21,6 +21,7 @@
 #include "isovdb/volume/ingest.h"
 #include "isovdb/volume/sampled_box.h"
 #include "progress_callback.h"
+#include "setting_keywords.h"
 #include "volume_bindings.h"
 
 namespace isovdb::python {
@@ -174,12 +175,12 @@ void write(const PyVolume& self, const std::filesystem::path& path, const std::s
     throw InputError("'" + path.string() + "': unknown volume format, expected .vdb, .raw or .nrrd");
 }
 
-py::object distanceField(const PyVolume& source, int halfWidth, int closing, int chunkSize, const py::object& progress,
-                         const std::optional<std::filesystem::path>& output, const std::string& gridName,
-                         const std::string& distance) {
+py::object distanceField(const PyVolume& source, const py::dict& settings, const py::object& progress,
+                         const std::optional<std::filesystem::path>& output, const std::string& gridName) {
+  pipeline::DistanceChoices choices;
+  assignSettings(pipeline::distanceSettings(choices), settings);
+  const volume::DistanceFieldOptions options = choices.resolve(/*keywords=*/true);
   CallbackProgress callback(progress);
-  const volume::DistanceFieldOptions options{
-      .method = distanceMethod(distance), .halfWidth = halfWidth, .closingSteps = closing, .chunkSize = chunkSize};
   if (output) {  // `isovdb sdf`: streamed to the file, never held whole
     if (source.volume.kind() != volume::VolumeKind::Mask)
       throw InputError("'" + source.volume.name() + "': a distance field is made from a mask");
@@ -192,8 +193,9 @@ py::object distanceField(const PyVolume& source, int halfWidth, int closing, int
   PyVolume result;
   callback.run([&] { result.volume = volume::distanceField(source.volume, options, &callback); });
   result.input = source.input;
-  result.input["distance_field"] = {
-      {"method", volume::distanceMethodName(options.method)}, {"half_width", halfWidth}, {"closing", closing}};
+  result.input["distance_field"] = {{"method", volume::distanceMethodName(options.method)},
+                                    {"half_width", options.halfWidth},
+                                    {"closing", options.closingSteps}};
   return py::cast(std::move(result));
 }
 
@@ -342,27 +344,22 @@ only; the reading regular contouring follows, except that each pair of cells reg
 Wenger's manifold fix changes the mesh's value by 2).
 Raises ValueError for a scalar field or another adjacency.)doc");
 
-  const volume::DistanceFieldOptions defaults;
-  m.def("distance_field", &distanceField, py::arg("volume"), py::arg("half_width") = defaults.halfWidth,
-        py::arg("closing") = defaults.closingSteps, py::arg("chunk_size") = defaults.chunkSize,
-        py::arg("progress") = py::none(), py::kw_only(), py::arg("output") = py::none(), py::arg("grid_name") = "sdf",
-        py::arg("distance") = std::string(volume::distanceMethodName(defaults.method)), R"doc(
-Narrow-band signed distance field of a mask (kind "sdf"): distances in voxels, NEGATIVE
-inside, the surface between inside and outside voxel centres, the sign of every voxel
-the mask's.
-
-distance: "interface" (sub-voxel distances at the mask's interface from a small Gaussian
-  blur, the band along the nearest interface voxel's tangent plane; fast) or "tracker"
-  (OpenVDB's topologyToLevelSet + sdfToSdf; for comparison).
-half_width: band half-width in voxels (>= 2 for contouring); voxels farther away read +/-half_width.
-closing: morphological closing steps before the transform (0 keeps the mask's topology).
-chunk_size: the band is computed in cubes of this many voxels (multiple of 8; 0: tracker at
-  once); the interface band is the same for every chunk size.
-progress: callable(stage, percent); raising cancels and propagates.
-output: a .vdb path: the band is written there chunk by chunk as `isovdb sdf` does (never
-  held whole; the grid `grid_name`, a level set in world units) and the statistics are
-  returned as a dict instead of a Volume.
-Raises ValueError when `volume` is not a mask.)doc");
+  m.def("_distance_field", &distanceField, py::arg("volume"), py::arg("settings"), py::kw_only(), py::arg("progress"),
+        py::arg("output"), py::arg("grid_name"),
+        "distance_field()'s implementation: the settings as a dict of keywords.");
+  pipeline::DistanceChoices defaults;
+  defineSettingsFunction(m, "distance_field", "_distance_field", pipeline::distanceSettings(defaults),
+                         {{"progress", "None", "progress: callable(stage, percent); raising cancels and propagates."},
+                          {"output", "None",
+                           "output: a .vdb path: the band is written there chunk by chunk as `isovdb sdf` does (never\n"
+                           "  held whole; a level set in world units) and the statistics are returned as a dict\n"
+                           "  instead of a Volume."},
+                          {"grid_name", "'sdf'",
+                           "grid_name: the grid's name in the output file.\n\n"
+                           "Raises ValueError when `volume` is not a mask or a setting is invalid."}},
+                         "Narrow-band signed distance field of a mask (kind \"sdf\"): distances in voxels, NEGATIVE\n"
+                         "inside, the surface between inside and outside voxel centres, the sign of every voxel\n"
+                         "the mask's (the `isovdb sdf` job; voxels beyond the band read +/-half_width).");
 }
 
 }  // namespace isovdb::python

@@ -66,9 +66,9 @@ def test_streamed_distance_field_reads_in_pyopenvdb_like_the_in_memory_one(tmp_p
     # distance_field(output=...) writes the band chunk by chunk (isovdb sdf's path):
     # pyopenvdb must read the same level set as from the grid written in memory.
     mask = isovdb.from_numpy(ball((40, 36, 44), (20, 18, 22), 13), voxel_size=0.5)
-    stats = isovdb.distance_field(mask, chunk_size=16, output=tmp_path / "streamed.vdb", grid_name="ball")
+    stats = isovdb.distance_field(mask, sdf_chunk=16, output=tmp_path / "streamed.vdb", grid_name="ball")
     assert stats["distance_field"]["streamed_to_file"] is True
-    isovdb.distance_field(mask, chunk_size=16).write(tmp_path / "memory.vdb", grid_name="ball")
+    isovdb.distance_field(mask, sdf_chunk=16).write(tmp_path / "memory.vdb", grid_name="ball")
     streamed = vdb.read(str(tmp_path / "streamed.vdb"), "ball")
     memory = vdb.read(str(tmp_path / "memory.vdb"), "ball")
     assert streamed.gridClass == vdb.GridClass.LEVEL_SET

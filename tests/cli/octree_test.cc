@@ -3,6 +3,9 @@
 // `isovdb octree`: one meta-cell's tree, end to end through the binary.
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <string>
+
 #include <nlohmann/json.hpp>
 
 #include "support/test_support.h"
@@ -22,22 +25,29 @@ std::filesystem::path writeBall(const TempDir& dir) {
   return dir / "ball.raw";
 }
 
-nlohmann::json runOctree(const TempDir& dir, const std::string& arguments) {
+/// Runs `isovdb COMMAND` on the ball with `arguments` and returns its --stats JSON.
+nlohmann::json runOnBall(const TempDir& dir, const std::string& command, const std::string& arguments) {
   std::string output;
-  const auto stats = dir / "octree.json";
-  EXPECT_EQ(
-      runCommand(cliPath().string() + " -q octree " + writeBall(dir).string() +
-                     " --dims 64,64,64 --type uint8 --meta-cell-size 32 " + arguments + " --stats " + stats.string(),
-                 &output),
-      0)
+  const auto stats = dir / (command + ".json");
+  EXPECT_EQ(runCommand(cliPath().string() + " -q " + command + " " + writeBall(dir).string() +
+                           " --dims 64,64,64 --type uint8 " + arguments + " --stats " + stats.string(),
+                       &output),
+            0)
       << output;
   return nlohmann::json::parse(readFile(stats));
+}
+
+/// `isovdb octree` on the ball in 32-voxel meta-cells, with the tree settings these
+/// tests were written for (uniform down to level 2, no QEF criterion) rather than
+/// extract's defaults.
+nlohmann::json runOctree(const TempDir& dir, const std::string& arguments) {
+  return runOnBall(dir, "octree", "--meta-cell 32 --min-level 2 --qef-tolerance -1 " + arguments);
 }
 
 TEST(CliOctree, RegularPutsEverySurfaceLeafAtTheMaximumLevel) {
   TempDir dir;
   const nlohmann::json stats =
-      runOctree(dir, "--construction regular --meta-cell 0,0,0 --wireframe " + (dir / "wire.ply").string());
+      runOctree(dir, "--method regular --index 0,0,0 --wireframe " + (dir / "wire.ply").string());
   const auto& tree = stats["octree"];
   EXPECT_EQ(tree["max_level"].get<int>(), 5);  // 32 = 2^5: 1-voxel cells
   const auto perLevel = tree["surface_leaves_per_level"].get<std::vector<int>>();
@@ -50,20 +60,35 @@ TEST(CliOctree, RegularPutsEverySurfaceLeafAtTheMaximumLevel) {
 
 TEST(CliOctree, AdaptiveIsBalancedAndCoarser) {
   TempDir dir;
-  const nlohmann::json regular = runOctree(dir, "--construction regular");
-  const nlohmann::json adaptive = runOctree(dir, "--construction adaptive --finest-size 1");
+  const nlohmann::json regular = runOctree(dir, "--method regular");
+  const nlohmann::json adaptive = runOctree(dir, "--method adaptive --finest-size 1");
   EXPECT_TRUE(adaptive["octree"]["balanced"].get<bool>());
   EXPECT_LT(adaptive["octree"]["surface_leaves"].get<int>(), regular["octree"]["surface_leaves"].get<int>());
 }
 
-TEST(CliOctree, MetaCellWithoutSurfaceAndBadConstruction) {
+TEST(CliOctree, MetaCellWithoutSurfaceAndBadMethod) {
   TempDir dir;
   std::string output;
   EXPECT_NE(runCommand(cliPath().string() + " -q octree " + writeBall(dir).string() +
-                           " --dims 64,64,64 --type uint8 --construction sideways",
+                           " --dims 64,64,64 --type uint8 --method sideways",
                        &output),
             0);
   EXPECT_NE(output.find("sideways"), std::string::npos) << output;
+}
+
+// The inspector shows the tree extract builds: with the same settings (here every
+// default) on a volume that fits in one meta-cell, the same leaves.
+TEST(CliOctree, SameLeavesAsExtractWithTheSameSettings) {
+  TempDir dir;
+  for (const std::string method : {"regular", "adaptive"}) {
+    SCOPED_TRACE(method);
+    const nlohmann::json inspected = runOnBall(dir, "octree", "--method " + method);
+    const nlohmann::json extracted =
+        runOnBall(dir, "extract", "--method " + method + " -o " + (dir / "ball.ply").string());
+    ASSERT_EQ(extracted["meta_cells"]["candidates"].get<int>(), 1);  // the 64^3 ball in one 128-voxel meta-cell
+    EXPECT_GT(inspected["octree"]["leaves"].get<std::int64_t>(), 0);
+    EXPECT_EQ(inspected["octree"]["leaves"].get<std::int64_t>(), extracted["meta_cells"]["leaves"].get<std::int64_t>());
+  }
 }
 
 }  // namespace

@@ -85,13 +85,15 @@ double trilinear(const cell::MetaCellSamples& s, const V3& p) {
 
 float testTolerance();
 
+/// Adaptive mode's settings (iso 0, Ju–Udeshi fans, manifold fix): the octree and the contouring read the same.
+constexpr cell::ContourSettings kAdaptive{.method = cell::ContourMethod::Adaptive};
+
 octree::OctreeOptions adaptiveTree(float qefTolerance = testTolerance()) {
   // minDepth 3: 16-voxel cells at S = 128. With minDepth 2 (32-voxel cells) the
   // sample sphere stays 8 leaves (12 triangles, mean distance 3 voxels): 3-4
   // crossings fit their tangent planes almost exactly, so the QEF criterion
   // never splits a smooth cell.
-  return octree::OctreeOptions{
-      .construction = octree::OctreeConstruction::Adaptive, .minDepth = 3, .qefTolerance = qefTolerance};
+  return octree::OctreeOptions{.minDepth = 3, .qefTolerance = qefTolerance};
 }
 
 /// Signed volume (outward orientation gives a positive volume).
@@ -114,7 +116,9 @@ struct ContourRun {
 
 ContourRun contourAndValidate(const cell::MetaCellSamples& samples, const LinearOctree& tree, bool intersectionFree) {
   ContourRun run;
-  run.mesh = contourAdaptive(samples, tree, AdaptiveContourOptions{.intersectionFree = intersectionFree}, &run.stats);
+  cell::ContourSettings settings = kAdaptive;
+  settings.intersectionFree = intersectionFree;
+  run.mesh = contourAdaptive(samples, tree, settings, &run.stats);
   run.report = mesh::validateMesh(run.mesh);
   return run;
 }
@@ -135,7 +139,7 @@ TEST(AdaptiveContour, SphereIsClosedOutwardAndIntersectionFree) {
   // minDepth 4 (4-voxel cells): on a smooth sphere the QEF criterion alone barely refines.
   octree::OctreeOptions options = adaptiveTree();
   options.minDepth = 4;
-  const LinearOctree tree = octree::buildOctree(s, options);
+  const LinearOctree tree = octree::buildOctree(s, kAdaptive, options);
   const ContourRun run = contourAndValidate(s, tree, true);
   EXPECT_TRUE(run.report.closed);
   EXPECT_TRUE(run.report.manifold);
@@ -189,7 +193,7 @@ TEST(AdaptiveContour, ShapesClosedIntersectionFreeWithFewFans) {
     SCOPED_TRACE(shape.name);
     const cell::MetaCellSamples s = shapeSamples(shape.kind, 64, 128, 32);
     octree::OctreeBuildStats buildStats;
-    const LinearOctree tree = octree::buildOctree(s, adaptiveTree(testTolerance()), &buildStats);
+    const LinearOctree tree = octree::buildOctree(s, kAdaptive, adaptiveTree(testTolerance()), &buildStats);
     const ContourRun fans = contourAndValidate(s, tree, true);
     const ContourRun plain = contourAndValidate(s, tree, false);
     const std::size_t complexLeaves = complexLeavesAtMaxLevel(tree);
@@ -225,15 +229,15 @@ TEST(AdaptiveContour, ShapesClosedIntersectionFreeWithFewFans) {
 
 TEST(AdaptiveContour, SaltDomeThreeTimesFewerTrianglesThanRegularWithinHalfAVoxel) {
   const cell::MetaCellSamples s = shapeSamples(samples::ShapeKind::SaltDome, 64, 128, 32);
-  const LinearOctree adaptive = octree::buildOctree(s, adaptiveTree(testTolerance()));
-  octree::OctreeOptions regularOptions = adaptiveTree();
-  regularOptions.construction = octree::OctreeConstruction::Regular;
-  regularOptions.qefTolerance = -1;
-  const LinearOctree regular = octree::buildOctree(s, regularOptions);
-  const ContourRun a = contourAndValidate(s, adaptive, true);
+  const LinearOctree adaptive = octree::buildOctree(s, kAdaptive, adaptiveTree(testTolerance()));
   // Regular reference: plain DC on the regular tree = 2 triangles per bipolar minimal edge.
+  constexpr cell::ContourSettings regularSettings{.method = cell::ContourMethod::Regular, .intersectionFree = false};
+  octree::OctreeOptions regularOptions = adaptiveTree();
+  regularOptions.qefTolerance = -1;
+  const LinearOctree regular = octree::buildOctree(s, regularSettings, regularOptions);
+  const ContourRun a = contourAndValidate(s, adaptive, true);
   AdaptiveContourStats regularStats;
-  const mesh::Mesh r = contourAdaptive(s, regular, AdaptiveContourOptions{.intersectionFree = false}, &regularStats);
+  const mesh::Mesh r = contourAdaptive(s, regular, regularSettings, &regularStats);
   const double ratio = static_cast<double>(r.triangles.size()) / a.mesh.triangles.size();
   const double mean = meanDistance(a.mesh, s);
   std::printf("salt dome: adaptive %zu tris (%zu leaves), regular %zu tris (%zu leaves), ratio %.2f, mean|d| %.3f\n",
@@ -299,12 +303,18 @@ std::vector<std::size_t> leavesOnFeature(const LinearOctree& tree, const std::ve
 /// 4-voxel cells the Prewitt normals of crossings within ~1 voxel of a feature
 /// are blended, the QEF minimiser leaves the cell and the dual vertex falls back
 /// to the mass point (errors up to 2.5 voxels; dual_vertex.cc, not contouring).
-/// `sharp`: OctreeOptions::sharpFeatures (crease crossings and the feature gap criterion).
-octree::OctreeOptions featureTree(bool sharp) {
+octree::OctreeOptions featureTree() {
   octree::OctreeOptions o = adaptiveTree();
   o.minDepth = 3;
-  o.sharpFeatures = sharp;
   return o;
+}
+
+/// `sharp`: ContourSettings::sharpFeatures (crease crossings and the feature gap criterion),
+/// read by the octree and the contouring alike.
+cell::ContourSettings featureSettings(bool sharp) {
+  cell::ContourSettings settings = kAdaptive;
+  settings.sharpFeatures = sharp;
+  return settings;
 }
 
 /// A sharp-feature test's tree and mesh (Ju–Udeshi fans), checked closed, intersection-free, genus 0.
@@ -316,8 +326,9 @@ struct FeatureRun {
 
 FeatureRun contourFeatures(const cell::MetaCellSamples& samples, bool sharp) {
   FeatureRun f;
-  f.tree = octree::buildOctree(samples, featureTree(sharp), &f.build);
-  f.run.mesh = contourAdaptive(samples, f.tree, AdaptiveContourOptions{.sharpFeatures = sharp}, &f.run.stats);
+  const cell::ContourSettings settings = featureSettings(sharp);
+  f.tree = octree::buildOctree(samples, settings, featureTree(), &f.build);
+  f.run.mesh = contourAdaptive(samples, f.tree, settings, &f.run.stats);
   f.run.report = mesh::validateMesh(f.run.mesh);
   EXPECT_TRUE(f.run.report.closed);
   EXPECT_EQ(f.run.report.selfIntersectingPairs, 0);
@@ -397,7 +408,7 @@ TEST(AdaptiveContour, SharpCubeKeepsEdgesAndCornersUnlikeMarchingCubes) {
 // r (1 / cos(theta / 2) - 1) for crossings theta apart (0.66 voxel median on
 // 8-voxel cells here), with an almost exact QEF fit; refining by the QEF
 // residual cannot see it, and on small cells the Prewitt normals blend the two
-// faces. With sharp features (OctreeOptions / AdaptiveContourOptions) the rim's
+// faces. With sharp features (cell::ContourSettings::sharpFeatures) the rim's
 // leaves are refined until their vertex is on the zero level (octree/surface_gap.h)
 // and crossings near the crease come from their own face (crease_crossing.h):
 // every leaf the rim passes through has its vertex within 0.1 voxel of the rim.
@@ -461,10 +472,12 @@ TEST(AdaptiveContour, SharpCylinderKeepsItsRimsWithSharpFeatures) {
 /// Adaptive tree down to 1-voxel cells from the root (no QEF criterion), contoured and validated.
 ContourRun contourRandom(const cell::MetaCellSamples& samples, bool manifoldFix,
                          octree::OctreeBuildStats* buildStats = nullptr) {
-  const LinearOctree tree = octree::buildOctree(
-      samples, octree::OctreeOptions{.construction = octree::OctreeConstruction::Adaptive, .minDepth = 0}, buildStats);
+  cell::ContourSettings settings = kAdaptive;
+  settings.manifoldFix = manifoldFix;
+  const LinearOctree tree =
+      octree::buildOctree(samples, settings, octree::OctreeOptions{.minDepth = 0, .qefTolerance = -1.0f}, buildStats);
   ContourRun run;
-  run.mesh = contourAdaptive(samples, tree, {.manifoldFix = manifoldFix}, &run.stats);
+  run.mesh = contourAdaptive(samples, tree, settings, &run.stats);
   run.report = mesh::validateMesh(run.mesh);
   return run;
 }
@@ -527,7 +540,7 @@ TEST(AdaptiveContour, BubbleHiddenInACoarseCellIsKept) {
   ASSERT_GE(bubble[0], 0);
   s.value(bubble[0], bubble[1], bubble[2]) = 0.5f;
   octree::OctreeBuildStats build;
-  const LinearOctree tree = octree::buildOctree(s, adaptiveTree(), &build);
+  const LinearOctree tree = octree::buildOctree(s, kAdaptive, adaptiveTree(), &build);
   EXPECT_GT(build.hiddenComponentSplits, 0u);
   const ContourRun r = contourAndValidate(s, tree, true);
   EXPECT_TRUE(r.report.closed);
@@ -540,13 +553,13 @@ TEST(AdaptiveContour, BubbleHiddenInACoarseCellIsKept) {
 
 TEST(AdaptiveContour, DeterministicForOneAndEightThreads) {
   const cell::MetaCellSamples s = shapeSamples(samples::ShapeKind::GyroidSlab, 64, 128, 32);
-  const LinearOctree tree = octree::buildOctree(s, adaptiveTree(testTolerance()));
+  const LinearOctree tree = octree::buildOctree(s, kAdaptive, adaptiveTree(testTolerance()));
   mesh::Mesh meshes[2];
   AdaptiveContourStats stats[2];
   const int threads[2] = {1, 8};
   for (int i = 0; i < 2; ++i) {
     tbb::task_arena arena(threads[i]);
-    arena.execute([&] { meshes[i] = contourAdaptive(s, tree, {}, &stats[i]); });
+    arena.execute([&] { meshes[i] = contourAdaptive(s, tree, kAdaptive, &stats[i]); });
   }
   EXPECT_EQ(meshes[0].positions, meshes[1].positions);
   EXPECT_EQ(meshes[0].triangles, meshes[1].triangles);
@@ -557,8 +570,8 @@ TEST(AdaptiveContour, DeterministicForOneAndEightThreads) {
 TEST(AdaptiveContour, SizeMismatchThrows) {
   const cell::MetaCellSamples s = cell::makeMetaCellSamples(16, {0, 0, 0}, [](int x, int, int) { return x - 7.5; });
   const cell::MetaCellSamples t = cell::makeMetaCellSamples(32, {0, 0, 0}, [](int x, int, int) { return x - 7.5; });
-  const LinearOctree tree = octree::buildOctree(t, adaptiveTree());
-  EXPECT_THROW(contourAdaptive(s, tree), InputError);
+  const LinearOctree tree = octree::buildOctree(t, kAdaptive, adaptiveTree());
+  EXPECT_THROW(contourAdaptive(s, tree, kAdaptive), InputError);
 }
 
 TEST(AdaptiveContour, EdgesOnTheMetaCellBoundaryAreSkipped) {
@@ -566,7 +579,7 @@ TEST(AdaptiveContour, EdgesOnTheMetaCellBoundaryAreSkipped) {
   const cell::MetaCellSamples s =
       cell::makeMetaCellSamples(16, {0, 0, 0}, [](int x, int y, int z) { return 0.3 * x + 0.2 * y + 0.1 * z - 4.1; });
   AdaptiveContourStats stats;
-  const mesh::Mesh m = contourAdaptive(s, octree::buildOctree(s, adaptiveTree()), {}, &stats);
+  const mesh::Mesh m = contourAdaptive(s, octree::buildOctree(s, kAdaptive, adaptiveTree()), kAdaptive, &stats);
   EXPECT_GT(stats.boundaryEdges, 0);
   EXPECT_GT(m.triangles.size(), 0u);
   const mesh::MeshReport report = mesh::validateMesh(m);

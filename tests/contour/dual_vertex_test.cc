@@ -183,15 +183,16 @@ TEST(DualVertex, GroupVerticesAreInsideTheirCellsAndDeterministic) {
   std::vector<std::vector<mesh::Vec3f>> runs;
   octree::LinearOctree tree;
   std::vector<std::uint32_t> firstVertex;
+  const cell::ContourSettings settings{.method = cell::ContourMethod::Adaptive};
   for (int threads : {1, 2, 8}) {
     tbb::task_arena arena(threads);
     arena.execute([&] {
-      tree = octree::buildOctree(s, {.minDepth = 3});
+      tree = octree::buildOctree(s, settings, {.minDepth = 3, .qefTolerance = -1.0f});
       std::vector<std::uint8_t> configs;
       for (const auto& leaf : tree.leaves()) configs.push_back(leaf.cornerSigns);
-      const LeafGroups groups = groupLeaves(s, tree, std::move(configs), 0.0f, true);
+      const LeafGroups groups = groupLeaves(s, tree, std::move(configs), settings.iso, settings.manifoldFix);
       firstVertex = groups.firstVertex;
-      runs.push_back(placeGroupVertices(s, tree, groups, {}));
+      runs.push_back(placeGroupVertices(s, tree, groups, cell::dualVertexOptions(settings)));
     });
   }
   std::size_t withVertices = 0;

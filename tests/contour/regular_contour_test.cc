@@ -37,15 +37,15 @@ struct ContourRun {
 ContourRun contour(const cell::MetaCellSamples& samples, float iso = 0.0f, bool manifoldFix = true,
                    bool parallel = true, bool selfIntersections = false, int minDepth = 0,
                    RegularTopology topology = RegularTopology::Voxels) {
+  const cell::ContourSettings settings{
+      .method = cell::ContourMethod::Regular, .iso = iso, .manifoldFix = manifoldFix, .topology = topology};
   octree::OctreeOptions treeOptions;
-  treeOptions.construction = octree::OctreeConstruction::Regular;
   treeOptions.minDepth = minDepth;
   treeOptions.finestCellSize = 1;
-  treeOptions.iso = iso;
   treeOptions.parallel = parallel;
-  const octree::LinearOctree tree = octree::buildOctree(samples, treeOptions);
+  const octree::LinearOctree tree = octree::buildOctree(samples, settings, treeOptions);
   ContourRun run;
-  run.mesh = contourRegular(samples, tree, {.iso = iso, .topology = topology, .manifoldFix = manifoldFix}, &run.stats);
+  run.mesh = contourRegular(samples, tree, settings, &run.stats);
   run.report = mesh::validateMesh(run.mesh, {.selfIntersections = selfIntersections});
   return run;
 }
@@ -297,10 +297,9 @@ TEST(RegularContour, BoundaryEdgesAreSkippedAndMismatchedIsoThrows) {
   EXPECT_TRUE(r.report.manifold);
   EXPECT_GT(r.report.triangles, 0);
   // A tree built at another isovalue is rejected.
-  octree::OctreeOptions treeOptions{
-      .construction = octree::OctreeConstruction::Regular, .minDepth = 0, .finestCellSize = 1, .iso = 0.0f};
-  const octree::LinearOctree tree = octree::buildOctree(samples, treeOptions);
-  EXPECT_THROW(contourRegular(samples, tree, {.iso = 1.0f}), InputError);
+  const octree::LinearOctree tree = octree::buildOctree(samples, {.method = cell::ContourMethod::Regular, .iso = 0.0f},
+                                                        {.minDepth = 0, .finestCellSize = 1});
+  EXPECT_THROW(contourRegular(samples, tree, {.method = cell::ContourMethod::Regular, .iso = 1.0f}), InputError);
 }
 
 // --- generated volumes (binary masks -> distance field) --------------------

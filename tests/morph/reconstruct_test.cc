@@ -38,7 +38,7 @@ mesh::Mesh reconstructMesh(const std::vector<Mask2>& masks, const Variant& v, Re
   options.pair.progress = v.progress;
   Reconstruction r = reconstruct(stackOf(masks, heights), options);
   pipeline::ExtractOptions extract;
-  extract.method = v.method;
+  extract.contour.method = v.method;
   mesh::Mesh mesh = pipeline::extractMesh(r.volume, extract);
   if (keep) *keep = std::move(r);
   return mesh;

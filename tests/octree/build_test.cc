@@ -25,6 +25,13 @@ cell::MetaCellSamples sphere(int size, double cx, double cy, double cz, double r
   });
 }
 
+constexpr cell::ContourSettings kRegular{.method = cell::ContourMethod::Regular};
+constexpr cell::ContourSettings kAdaptive{.method = cell::ContourMethod::Adaptive};
+
+/// The octree options these tests were written for: uniform down to depth 2, no
+/// QEF criterion (OctreeOptions{} are isovdb extract's: 16-voxel cells, 0.15).
+constexpr OctreeOptions kOptions{.minDepth = 2, .qefTolerance = -1.0f};
+
 /// True if the samples of the leaf's closed box are not all one phase.
 bool crossedBySurface(const cell::MetaCellSamples& s, const OctreeLeaf& l, float iso = 0.0f) {
   const bool first = cell::isInside(s.value(l.origin), iso);
@@ -36,11 +43,20 @@ bool crossedBySurface(const cell::MetaCellSamples& s, const OctreeLeaf& l, float
 }
 
 TEST(BuildOctree, ResolveDepthsFromDepthsOrCellSizes) {
-  EXPECT_EQ(resolveDepths({}, 128).maxDepth, 7);
-  EXPECT_EQ(resolveDepths({}, 128).minDepth, 2);
+  // The former defaults: uniform down to depth 2, 1-voxel cells at the deepest.
+  EXPECT_EQ(resolveDepths({.minDepth = 2, .maxCellSize = 0, .finestCellSize = 0}, 128).maxDepth, 7);
+  EXPECT_EQ(resolveDepths({.minDepth = 2, .maxCellSize = 0, .finestCellSize = 0}, 128).minDepth, 2);
   const OctreeDepths d = resolveDepths({.maxCellSize = 32, .finestCellSize = 2}, 128);
   EXPECT_EQ(d.minDepth, 2);
   EXPECT_EQ(d.maxDepth, 6);
+  // The defaults (extract's): leaves from 16 voxels (clamped to the meta-cell) down
+  // to 1 voxel. A depth >= 0 wins over the matching cell size.
+  EXPECT_EQ(resolveDepths({}, 128).minDepth, 3);
+  EXPECT_EQ(resolveDepths({}, 128).maxDepth, 7);
+  EXPECT_EQ(resolveDepths({}, 8).minDepth, 0);
+  const OctreeDepths given = resolveDepths({.minDepth = 1, .maxDepth = 5, .maxCellSize = 32, .finestCellSize = 2}, 128);
+  EXPECT_EQ(given.minDepth, 1);
+  EXPECT_EQ(given.maxDepth, 5);
   EXPECT_THROW(resolveDepths({.finestCellSize = 3}, 128), InputError);
   EXPECT_THROW(resolveDepths({.minDepth = 5, .maxDepth = 4}, 128), InputError);
   EXPECT_THROW(resolveDepths({.maxDepth = 8}, 128), InputError);
@@ -59,7 +75,7 @@ cell::MetaCellSamples* SphereR40::samples_ = nullptr;
 
 TEST_F(SphereR40, RegularPutsEverySurfaceLeafAtTheMaximumDepth) {
   OctreeBuildStats stats;
-  const LinearOctree tree = buildOctree(*samples_, {.construction = OctreeConstruction::Regular}, &stats);
+  const LinearOctree tree = buildOctree(*samples_, kRegular, kOptions, &stats);
   std::size_t surface = 0;
   for (const OctreeLeaf& l : tree.leaves()) {
     const bool crossed = crossedBySurface(*samples_, l);
@@ -76,8 +92,8 @@ TEST_F(SphereR40, RegularPutsEverySurfaceLeafAtTheMaximumDepth) {
 
 TEST_F(SphereR40, AdaptiveIsBalancedAndThreeTimesSmaller) {
   OctreeBuildStats regularStats, adaptiveStats;
-  const LinearOctree regular = buildOctree(*samples_, {.construction = OctreeConstruction::Regular}, &regularStats);
-  const LinearOctree adaptive = buildOctree(*samples_, {.construction = OctreeConstruction::Adaptive}, &adaptiveStats);
+  const LinearOctree regular = buildOctree(*samples_, kRegular, kOptions, &regularStats);
+  const LinearOctree adaptive = buildOctree(*samples_, kAdaptive, kOptions, &adaptiveStats);
   EXPECT_TRUE(isBalanced(adaptive));
   const OctreeSummary r = summarizeOctree(regular), a = summarizeOctree(adaptive);
   for (const OctreeLeaf& l : adaptive.leaves()) {
@@ -91,15 +107,16 @@ TEST_F(SphereR40, AdaptiveIsBalancedAndThreeTimesSmaller) {
       adaptiveStats.balanceSplits, adaptiveStats.complexCells);
   EXPECT_GE(r.surfaceLeaves, 3 * a.surfaceLeaves);
   for (int minDepth : {3, 4}) {
-    const OctreeSummary m = summarizeOctree(buildOctree(*samples_, {.minDepth = minDepth}));
+    const OctreeSummary m =
+        summarizeOctree(buildOctree(*samples_, kAdaptive, {.minDepth = minDepth, .qefTolerance = -1.0f}));
     std::printf("[ sphere r=40 ] adaptive, min depth %d: %zu surface leaves (%.1fx fewer than regular)\n", minDepth,
                 m.surfaceLeaves, double(r.surfaceLeaves) / double(m.surfaceLeaves));
     EXPECT_GE(r.surfaceLeaves, 3 * m.surfaceLeaves);
   }
   // The regular tree is generally not balanced; the adaptive one is by construction.
-  OctreeOptions geometric{.construction = OctreeConstruction::Adaptive, .qefTolerance = 0.05f};
+  OctreeOptions geometric{.minDepth = 2, .qefTolerance = 0.05f};
   OctreeBuildStats gStats;
-  const LinearOctree refined = buildOctree(*samples_, geometric, &gStats);
+  const LinearOctree refined = buildOctree(*samples_, kAdaptive, geometric, &gStats);
   EXPECT_TRUE(isBalanced(refined));
   EXPECT_GE(summarizeOctree(refined).surfaceLeaves, a.surfaceLeaves);
   std::printf("[ sphere r=40 ] adaptive + QEF tolerance 0.05: %zu surface leaves, %zu geometric splits\n",
@@ -110,9 +127,9 @@ TEST(BuildOctree, ThinSheetForcesTheMaximumDepth) {
   // A sheet one voxel thick at z = 9 (odd, so no cell boundary above size 1 lies on it).
   const cell::MetaCellSamples s =
       cell::makeMetaCellSamples(32, {0, 0, 0}, [](int, int, int z) { return std::abs(z - 9.0) - 0.5; });
-  for (auto construction : {OctreeConstruction::Adaptive, OctreeConstruction::Regular}) {
+  for (const cell::ContourSettings& settings : {kAdaptive, kRegular}) {
     OctreeBuildStats stats;
-    const LinearOctree tree = buildOctree(s, {.construction = construction}, &stats);
+    const LinearOctree tree = buildOctree(s, settings, kOptions, &stats);
     std::size_t touching = 0;
     for (const OctreeLeaf& l : tree.leaves()) {
       if (l.origin[2] <= 9 && 9 <= l.origin[2] + l.size) {
@@ -123,14 +140,15 @@ TEST(BuildOctree, ThinSheetForcesTheMaximumDepth) {
     EXPECT_EQ(touching, 2u * 32 * 32);
     // The adaptive construction reaches the sheet through its complex edges; the
     // regular one refines every crossed cell and reads no criterion above the finest depth.
-    if (construction == OctreeConstruction::Adaptive) {
+    if (settings.method == cell::ContourMethod::Adaptive) {
       EXPECT_GT(stats.complexEdges, 0u);
     }
   }
   // With the maximum depth capped at 4-voxel cells, the leaves holding the
   // sheet stay complex and are reported.
   OctreeBuildStats stats;
-  const LinearOctree capped = buildOctree(s, {.finestCellSize = 4}, &stats);
+  const LinearOctree capped =
+      buildOctree(s, kAdaptive, {.minDepth = 2, .finestCellSize = 4, .qefTolerance = -1.0f}, &stats);
   EXPECT_EQ(stats.unresolvedComplexLeaves, 8u * 8u);
   EXPECT_EQ(summarizeOctree(capped).complexLeaves, 8u * 8u);
 }
@@ -139,9 +157,9 @@ TEST(BuildOctree, SmallTunnelForcesTheMaximumDepth) {
   // Solid everywhere except a tunnel one sample wide along z through (9, 9).
   const cell::MetaCellSamples s = cell::makeMetaCellSamples(
       32, {0, 0, 0}, [](int x, int y, int) { return 0.8 - std::sqrt((x - 9.0) * (x - 9.0) + (y - 9.0) * (y - 9.0)); });
-  for (auto construction : {OctreeConstruction::Adaptive, OctreeConstruction::Regular}) {
+  for (const cell::ContourSettings& settings : {kAdaptive, kRegular}) {
     OctreeBuildStats stats;
-    const LinearOctree tree = buildOctree(s, {.construction = construction}, &stats);
+    const LinearOctree tree = buildOctree(s, settings, kOptions, &stats);
     std::size_t touching = 0;
     for (const OctreeLeaf& l : tree.leaves()) {
       if (l.origin[0] <= 9 && 9 <= l.origin[0] + l.size && l.origin[1] <= 9 && 9 <= l.origin[1] + l.size) {
@@ -150,7 +168,7 @@ TEST(BuildOctree, SmallTunnelForcesTheMaximumDepth) {
       }
     }
     EXPECT_EQ(touching, 4u * 32);
-    if (construction == OctreeConstruction::Adaptive) {
+    if (settings.method == cell::ContourMethod::Adaptive) {
       EXPECT_GT(stats.complexFaces, 0u);
     }
   }
@@ -158,7 +176,7 @@ TEST(BuildOctree, SmallTunnelForcesTheMaximumDepth) {
 
 TEST(BuildOctree, AdaptiveKeepsUnsubdividedFarFromTheSurface) {
   const cell::MetaCellSamples s = sphere(64, 8.5, 8.5, 8.5, 4.0);
-  const LinearOctree tree = buildOctree(s, {.minDepth = 1});
+  const LinearOctree tree = buildOctree(s, kAdaptive, {.minDepth = 1, .qefTolerance = -1.0f});
   const OctreeSummary sum = summarizeOctree(tree);
   EXPECT_TRUE(isBalanced(tree));
   EXPECT_EQ(sum.leavesPerDepth[1], 7u);  // the far octants stay whole
@@ -174,8 +192,8 @@ TEST(BuildOctree, DeterministicFor1And2And8Threads) {
   for (int threads : {1, 2, 8}) {
     tbb::task_arena arena(threads);
     arena.execute([&] {
-      for (auto construction : {OctreeConstruction::Regular, OctreeConstruction::Adaptive}) {
-        const LinearOctree tree = buildOctree(s, {.construction = construction, .qefTolerance = 0.2f});
+      for (const cell::ContourSettings& settings : {kRegular, kAdaptive}) {
+        const LinearOctree tree = buildOctree(s, settings, {.minDepth = 2, .qefTolerance = 0.2f});
         results.push_back(tree.leaves());
       }
     });
@@ -197,12 +215,13 @@ TEST(BuildOctree, DeterministicFor1And2And8Threads) {
 TEST(BuildOctree, IsoValueAndExactIsoSamples) {
   // A constant field equal to iso is all inside: no surface anywhere.
   const cell::MetaCellSamples flat = cell::makeMetaCellSamples(16, {0, 0, 0}, [](int, int, int) { return 0.0; });
-  const LinearOctree tree = buildOctree(flat, {.minDepth = 0});
+  const LinearOctree tree = buildOctree(flat, kAdaptive, {.minDepth = 0, .qefTolerance = -1.0f});
   EXPECT_EQ(tree.leafCount(), 1u);
   EXPECT_EQ(tree.leaf(0).cornerSigns, 0xff);
   EXPECT_FALSE(tree.leaf(0).surface);
   // Same field, iso just below: all outside.
-  EXPECT_EQ(buildOctree(flat, {.minDepth = 0, .iso = -0.5f}).leaf(0).cornerSigns, 0);
+  const cell::ContourSettings below{.method = cell::ContourMethod::Adaptive, .iso = -0.5f};
+  EXPECT_EQ(buildOctree(flat, below, {.minDepth = 0, .qefTolerance = -1.0f}).leaf(0).cornerSigns, 0);
 }
 
 }  // namespace

@@ -18,7 +18,8 @@ TEST(Inspect, SummaryAndWireframe) {
   const cell::MetaCellSamples s = cell::makeMetaCellSamples(16, {16, 0, 0}, [](int x, int y, int z) {
     return std::sqrt((x - 24.2) * (x - 24.2) + (y - 8.1) * (y - 8.1) + (z - 7.9) * (z - 7.9)) - 4.0;
   });
-  const LinearOctree tree = buildOctree(s, {.minDepth = 1});
+  const LinearOctree tree =
+      buildOctree(s, {.method = cell::ContourMethod::Adaptive}, {.minDepth = 1, .qefTolerance = -1.0f});
   const OctreeSummary sum = summarizeOctree(tree);
   std::size_t total = 0;
   for (std::size_t n : sum.leavesPerDepth) total += n;

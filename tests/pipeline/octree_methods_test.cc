@@ -42,18 +42,15 @@ double meanDistanceToZeroLevel(const mesh::Mesh& mesh, const volume::Volume& sdf
   return mesh.positions.empty() ? 0 : sum / static_cast<double>(mesh.positions.size());
 }
 
-mesh::Mesh contour(const volume::Volume& sdf, OctreeMethod method, bool manifoldFix = true) {
-  OctreeContourOptions options;
-  options.method = method;
-  options.manifoldFix = manifoldFix;
-  return contourWithOctree(sdf, options);
+mesh::Mesh contour(const volume::Volume& sdf, ContourMethod method, bool manifoldFix = true) {
+  return contourWithOctree(sdf, {.method = method, .manifoldFix = manifoldFix});
 }
 
 class OctreeMethods : public ::testing::TestWithParam<samples::ShapeKind> {};
 
 TEST_P(OctreeMethods, RegularIsClosedManifoldWithTheObjectsTopologyAndOnTheSurface) {
   const volume::Volume sdf = shapeSdf(GetParam(), 64);
-  const mesh::Mesh mesh = contour(sdf, OctreeMethod::Regular);
+  const mesh::Mesh mesh = contour(sdf, ContourMethod::Regular);
   const mesh::MeshReport report = mesh::validateMesh(mesh, {.selfIntersections = false});
   EXPECT_TRUE(report.closed);
   EXPECT_EQ(report.nonManifoldEdges, 0);
@@ -65,7 +62,7 @@ TEST_P(OctreeMethods, RegularIsClosedManifoldWithTheObjectsTopologyAndOnTheSurfa
 
 TEST_P(OctreeMethods, AdaptiveIsClosedIntersectionFreeAndCoarser) {
   const volume::Volume sdf = shapeSdf(GetParam(), 64);
-  const mesh::Mesh adaptive = contour(sdf, OctreeMethod::Adaptive);
+  const mesh::Mesh adaptive = contour(sdf, ContourMethod::Adaptive);
   const mesh::MeshReport report = mesh::validateMesh(adaptive);
   EXPECT_TRUE(report.closed);
   EXPECT_EQ(report.selfIntersectingPairs, 0);
@@ -74,7 +71,7 @@ TEST_P(OctreeMethods, AdaptiveIsClosedIntersectionFreeAndCoarser) {
   // At 64^3 the gyroid's channels are 10 voxels wide and curved everywhere:
   // 2.4x there, 4-12x on the other shapes (QEF tolerance 0.15).
   const std::size_t factor = GetParam() == samples::ShapeKind::GyroidSlab ? 2 : 3;
-  EXPECT_LT(factor * adaptive.triangleCount(), contour(sdf, OctreeMethod::Regular).triangleCount());
+  EXPECT_LT(factor * adaptive.triangleCount(), contour(sdf, ContourMethod::Regular).triangleCount());
 }
 
 INSTANTIATE_TEST_SUITE_P(Shapes, OctreeMethods,
@@ -97,13 +94,9 @@ TEST(OctreeMethodsSharpFeatures, CylinderKeepsItsRimsAcrossMetaCells) {
       test::levelSetVolume(64, [&](const std::array<double, 3>& p) { return test::cylinderSdf(p, c, r, hh); });
   for (const bool sharp : {false, true}) {
     SCOPED_TRACE(sharp ? "sharp features" : "Prewitt normals");
-    OctreeContourOptions options;
-    options.method = OctreeMethod::Adaptive;
-    options.metaCellSize = 16;
-    options.maxCellSize = 8;
-    options.sharpFeatures = sharp;
+    const cell::ContourSettings settings{.method = ContourMethod::Adaptive, .sharpFeatures = sharp};
     Statistics stats;
-    const mesh::Mesh mesh = contourWithOctree(sdf, options, nullptr, &stats);
+    const mesh::Mesh mesh = contourWithOctree(sdf, settings, {.maxCellSize = 8}, /*metaCellSize=*/16, nullptr, &stats);
     EXPECT_GT(stats["stitch"]["edges"].get<std::int64_t>(), 0);  // the rims cross seams
     const mesh::MeshReport report = mesh::validateMesh(mesh);
     EXPECT_TRUE(report.closed);
@@ -127,9 +120,8 @@ TEST(OctreeMethodsSharpFeatures, CylinderKeepsItsRimsAcrossMetaCells) {
   }
 }
 
-mesh::Mesh contourRegular(const volume::Volume& sdf, contour::RegularTopology topology, bool manifoldFix = true) {
-  return contourWithOctree(sdf,
-                           {.method = OctreeMethod::Regular, .regularTopology = topology, .manifoldFix = manifoldFix});
+mesh::Mesh contourRegular(const volume::Volume& sdf, cell::RegularTopology topology, bool manifoldFix = true) {
+  return contourWithOctree(sdf, {.method = ContourMethod::Regular, .manifoldFix = manifoldFix, .topology = topology});
 }
 
 volume::Volume frogSkeletonMask() {
@@ -147,8 +139,8 @@ TEST(OctreeMethodsRealSample, FrogSkeletonRegularHasTheSkeletonsTopologyAndNeeds
   const volume::Volume mask = frogSkeletonMask();
   const std::int64_t solid = volume::eulerCharacteristic(mask);
   const volume::Volume sdf = toContourable(mask, {});
-  for (const auto topology : {contour::RegularTopology::Voxels, contour::RegularTopology::Mdmc}) {
-    const bool voxels = topology == contour::RegularTopology::Voxels;
+  for (const auto topology : {cell::RegularTopology::Voxels, cell::RegularTopology::Mdmc}) {
+    const bool voxels = topology == cell::RegularTopology::Voxels;
     SCOPED_TRACE(voxels ? "voxels" : "mdmc");
     const mesh::Mesh mesh = contourRegular(sdf, topology);
     const mesh::MeshReport fixed = mesh::validateMesh(mesh, {.selfIntersections = false});
@@ -174,8 +166,8 @@ TEST(OctreeMethodsRealSample, FrogSkeletonAdaptiveIsClosedManifoldWithRegularsTo
   // topology as regular mode's MDMC reading, and free of self-intersections.
   const volume::Volume sdf = toContourable(frogSkeletonMask(), {});
   const mesh::MeshReport regular =
-      mesh::validateMesh(contourRegular(sdf, contour::RegularTopology::Mdmc), {.selfIntersections = false});
-  const mesh::MeshReport adaptive = mesh::validateMesh(contour(sdf, OctreeMethod::Adaptive));
+      mesh::validateMesh(contourRegular(sdf, cell::RegularTopology::Mdmc), {.selfIntersections = false});
+  const mesh::MeshReport adaptive = mesh::validateMesh(contour(sdf, ContourMethod::Adaptive));
   EXPECT_TRUE(adaptive.closed);
   EXPECT_EQ(adaptive.nonManifoldEdges, 0);
   EXPECT_EQ(adaptive.selfIntersectingPairs, 0);
@@ -206,7 +198,7 @@ TEST(OctreeMethodsTopology, RegularMeshIsTheSixEighteenReadingPlusTheFixedPairs)
     Statistics stats;
     const volume::Volume sdf = toContourable(volume::ingestMask(stream, {}), {});
     const mesh::Mesh mesh = contourWithOctree(
-        sdf, {.method = OctreeMethod::Regular, .regularTopology = contour::RegularTopology::Mdmc}, nullptr, &stats);
+        sdf, {.method = ContourMethod::Regular, .topology = cell::RegularTopology::Mdmc}, {}, 128, nullptr, &stats);
     const mesh::MeshReport report = mesh::validateMesh(mesh, {.selfIntersections = false});
     const std::int64_t fixedPairs = stats["meta_cells"]["manifold_fixes"].get<std::int64_t>() / 2;
     EXPECT_TRUE(report.closed) << seed;
@@ -235,7 +227,7 @@ TEST(OctreeMethodsTopology, RegularMeshHasTheVoxelObjectsTopology) {
       SCOPED_TRACE("seed " + std::to_string(seed) + ", meta-cell " + std::to_string(metaCellSize));
       Statistics stats;
       const mesh::Mesh mesh =
-          contourWithOctree(sdf, {.method = OctreeMethod::Regular, .metaCellSize = metaCellSize}, nullptr, &stats);
+          contourWithOctree(sdf, {.method = ContourMethod::Regular}, {}, metaCellSize, nullptr, &stats);
       const mesh::MeshReport report = mesh::validateMesh(mesh, {.selfIntersections = false});
       const auto& figures = stats[metaCellSize == 0 ? "octree" : "meta_cells"];
       EXPECT_TRUE(report.closed);
@@ -255,7 +247,7 @@ TEST(OctreeMethodsTopology, RegularMeshHasTheVoxelObjectsTopology) {
     }
     // Without the split the bridges' two cells share four polygons: non-manifold edges.
     const mesh::MeshReport unsplit = mesh::validateMesh(
-        contourWithOctree(sdf, {.method = OctreeMethod::Regular, .manifoldFix = false}), {.selfIntersections = false});
+        contourWithOctree(sdf, {.method = ContourMethod::Regular, .manifoldFix = false}), {.selfIntersections = false});
     EXPECT_GT(unsplit.nonManifoldEdges, 0) << seed;
   }
 }
@@ -273,10 +265,10 @@ TEST(OctreeMethodsTopology, AdaptiveMeshHasRegularsTopologyOnRandomVoxels) {
     });
     const volume::Volume sdf = toContourable(volume::ingestMask(stream, {}), {});
     const mesh::MeshReport regular = mesh::validateMesh(
-        contourWithOctree(sdf, {.method = OctreeMethod::Regular, .regularTopology = contour::RegularTopology::Mdmc}),
+        contourWithOctree(sdf, {.method = ContourMethod::Regular, .topology = cell::RegularTopology::Mdmc}),
         {.selfIntersections = false});
     const mesh::MeshReport adaptive =
-        mesh::validateMesh(contour(sdf, OctreeMethod::Adaptive), {.selfIntersections = false});
+        mesh::validateMesh(contour(sdf, ContourMethod::Adaptive), {.selfIntersections = false});
     EXPECT_TRUE(adaptive.closed) << seed;
     EXPECT_EQ(adaptive.nonManifoldEdges, 0) << seed;
     EXPECT_EQ(adaptive.components, regular.components) << seed;

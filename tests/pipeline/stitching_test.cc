@@ -42,18 +42,15 @@ struct Contoured {
   Statistics stats;
 };
 
-Contoured contour(const volume::Volume& sdf, OctreeMethod method, int metaCellSize) {
-  OctreeContourOptions options;
-  options.method = method;
-  options.metaCellSize = metaCellSize;
+Contoured contour(const volume::Volume& sdf, ContourMethod method, int metaCellSize) {
   Contoured out;
-  out.mesh = contourWithOctree(sdf, options, nullptr, &out.stats);
+  out.mesh = contourWithOctree(sdf, {.method = method}, {}, metaCellSize, nullptr, &out.stats);
   return out;
 }
 
 /// Checks a stitched mesh against the single-block one; returns its report.
-void expectSameGuaranteesAsOneBlock(const volume::Volume& sdf, OctreeMethod method, int metaCellSize) {
-  const bool regular = method == OctreeMethod::Regular;
+void expectSameGuaranteesAsOneBlock(const volume::Volume& sdf, ContourMethod method, int metaCellSize) {
+  const bool regular = method == ContourMethod::Regular;
   const Contoured single = contour(sdf, method, 0);
   const Contoured stitched = contour(sdf, method, metaCellSize);
   const mesh::MeshReport one = mesh::validateMesh(single.mesh, {.selfIntersections = !regular});
@@ -90,8 +87,8 @@ class StitchedShapes : public ::testing::TestWithParam<StitchCase> {};
 
 TEST_P(StitchedShapes, RegularAndAdaptiveKeepTheSingleBlockGuarantees) {
   const volume::Volume sdf = shapeSdf(GetParam().shape, 64);
-  expectSameGuaranteesAsOneBlock(sdf, OctreeMethod::Regular, GetParam().metaCellSize);
-  expectSameGuaranteesAsOneBlock(sdf, OctreeMethod::Adaptive, GetParam().metaCellSize);
+  expectSameGuaranteesAsOneBlock(sdf, ContourMethod::Regular, GetParam().metaCellSize);
+  expectSameGuaranteesAsOneBlock(sdf, ContourMethod::Adaptive, GetParam().metaCellSize);
 }
 
 std::vector<StitchCase> stitchCases() {
@@ -118,7 +115,7 @@ TEST(StitchedFeatures, ThinSheetOnAMetaFace) {
     const bool hole = (y - 32) * (y - 32) + (z - 32) * (z - 32) < 36;
     return x == 32 && y >= 8 && y < 56 && z >= 8 && z < 56 && !hole;
   });
-  for (const auto method : {OctreeMethod::Regular, OctreeMethod::Adaptive})
+  for (const auto method : {ContourMethod::Regular, ContourMethod::Adaptive})
     expectSameGuaranteesAsOneBlock(sdf, method, 32);
 }
 
@@ -131,7 +128,7 @@ TEST(StitchedFeatures, TunnelAlongAMetaEdge) {
     const bool rod = x >= 10 && x < 54 && y == 32 && z == 16;
     return (box && !tunnel) || rod;
   });
-  for (const auto method : {OctreeMethod::Regular, OctreeMethod::Adaptive}) {
+  for (const auto method : {ContourMethod::Regular, ContourMethod::Adaptive}) {
     expectSameGuaranteesAsOneBlock(sdf, method, 32);
     expectSameGuaranteesAsOneBlock(sdf, method, 16);
   }
@@ -141,7 +138,7 @@ TEST(StitchedFeatures, SharpCornerAtAMetaVertex) {
   // A box whose corner voxel sits at the meta-vertex (32, 32, 32), where eight meta-cells meet.
   const volume::Volume sdf =
       maskSdf([](int x, int y, int z) { return x >= 16 && x <= 32 && y >= 16 && y <= 32 && z >= 16 && z <= 32; });
-  for (const auto method : {OctreeMethod::Regular, OctreeMethod::Adaptive}) {
+  for (const auto method : {ContourMethod::Regular, ContourMethod::Adaptive}) {
     expectSameGuaranteesAsOneBlock(sdf, method, 32);
     expectSameGuaranteesAsOneBlock(sdf, method, 16);
   }
@@ -155,8 +152,8 @@ TEST(StitchedFeatures, PinchedBoxesAtAMetaVertexStayManifoldInRegularMode) {
     const bool high = x > 32 && x < 48 && y > 32 && y < 48 && z >= 16 && z <= 32;
     return low || high;
   });
-  expectSameGuaranteesAsOneBlock(sdf, OctreeMethod::Regular, 32);
-  expectSameGuaranteesAsOneBlock(sdf, OctreeMethod::Regular, 16);
+  expectSameGuaranteesAsOneBlock(sdf, ContourMethod::Regular, 32);
+  expectSameGuaranteesAsOneBlock(sdf, ContourMethod::Regular, 16);
 }
 
 TEST(StitchedOutput, SameBytesForOneTwoAndEightThreads) {
@@ -166,8 +163,8 @@ TEST(StitchedOutput, SameBytesForOneTwoAndEightThreads) {
     std::string reference;
     for (const int threads : {1, 2, 8}) {
       ExtractOptions options;
-      options.method = method;
-      options.octree.metaCellSize = 16;
+      options.contour.method = method;
+      options.metaCellSize = 16;
       options.threads = threads;
       const auto path = dir.path() / ("t" + std::to_string(threads) + ".ply");
       io::PlyStreamWriter writer(path);
@@ -179,8 +176,8 @@ TEST(StitchedOutput, SameBytesForOneTwoAndEightThreads) {
     }
     // And the streamed file is the collected mesh.
     ExtractOptions collect;
-    collect.method = method;
-    collect.octree.metaCellSize = 16;
+    collect.contour.method = method;
+    collect.metaCellSize = 16;
     const mesh::Mesh collected = extractMesh(sdf, collect);
     const mesh::Mesh streamed = io::readPly(dir.path() / "t1.ply");
     EXPECT_EQ(streamed.positions, collected.positions);
@@ -191,9 +188,7 @@ TEST(StitchedOutput, SameBytesForOneTwoAndEightThreads) {
 TEST(StitchedOutput, RejectsAMetaCellSizeOutsideTheRange) {
   const volume::Volume sdf = shapeSdf(samples::ShapeKind::Sphere, 32);
   for (const int size : {8, 24, 1024}) {
-    OctreeContourOptions options;
-    options.metaCellSize = size;
-    EXPECT_THROW(contourWithOctree(sdf, options), InputError) << size;
+    EXPECT_THROW(contourWithOctree(sdf, {.method = ContourMethod::Regular}, {}, size), InputError) << size;
   }
 }
 

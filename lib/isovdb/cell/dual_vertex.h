@@ -15,12 +15,14 @@
 #include <array>
 #include <cstdint>
 
+#include "isovdb/cell/contour_settings.h"
 #include "isovdb/cell/qef.h"
 #include "isovdb/cell/meta_cell_samples.h"
 
 namespace isovdb::cell {
 
-/// Options of the dual-vertex computation.
+/// Options of the dual-vertex computation: what it reads of the ContourSettings
+/// (dualVertexOptions()), and whether to skip the QEF.
 struct DualVertexOptions {
   float iso = 0.0f;                     ///< isovalue; inside iff value <= iso
   float singularValueThreshold = 0.1f;  ///< QEF truncation, relative to the largest singular value (see QefOptions)
@@ -34,6 +36,14 @@ struct DualVertexOptions {
   /// rather than replaced by the mass point.
   bool sharpFeatures = false;
 };
+
+/// The dual-vertex options the contour settings give.
+inline DualVertexOptions dualVertexOptions(const ContourSettings& settings, bool massPointOnly = false) {
+  return {.iso = settings.iso,
+          .singularValueThreshold = settings.singularValueThreshold,
+          .massPointOnly = massPointOnly,
+          .sharpFeatures = settings.sharpFeatures};
+}
 
 /// How far (voxels) a QEF minimiser may lie outside its cell and still be clamped into it
 /// with DualVertexOptions::sharpFeatures.

@@ -20,7 +20,7 @@
 namespace isovdb::contour {
 
 MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
-                                     const AdaptiveContourOptions& options, AdaptiveContourStats* stats) {
+                                     const cell::ContourSettings& options, AdaptiveContourStats* stats) {
   if (tree.metaCellSize() != samples.size)
     throw InputError("contourAdaptive: octree meta-cell size " + std::to_string(tree.metaCellSize()) +
                      " differs from the samples' size " + std::to_string(samples.size));
@@ -35,10 +35,7 @@ MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const
   for (std::size_t i = 0; i < leafCount; ++i) configs[i] = tree.leaf(i).cornerSigns;
   const LeafGroups groups = groupLeaves(samples, tree, std::move(configs), options.iso, options.manifoldFix);
   const std::vector<mesh::Vec3f> positions =
-      placeGroupVertices(samples, tree, groups,
-                         cell::DualVertexOptions{.iso = options.iso,
-                                                 .singularValueThreshold = options.singularValueThreshold,
-                                                 .sharpFeatures = options.sharpFeatures});
+      placeGroupVertices(samples, tree, groups, cell::dualVertexOptions(options));
   std::vector<Vec3d> cellPoints(positions.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leafCount, 256), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i)
@@ -150,7 +147,7 @@ MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const
 }
 
 mesh::Mesh contourAdaptive(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
-                           const AdaptiveContourOptions& options, AdaptiveContourStats* stats) {
+                           const cell::ContourSettings& options, AdaptiveContourStats* stats) {
   return contourAdaptiveMetaCell(samples, tree, options, stats).mesh;
 }
 

@@ -54,20 +54,10 @@
 #include "isovdb/contour/seam_cell.h"
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/octree/linear_octree.h"
+#include "isovdb/cell/contour_settings.h"
 #include "isovdb/cell/meta_cell_samples.h"
 
 namespace isovdb::contour {
-
-/// Options of contourAdaptive (CLI: `isovdb extract IN --method adaptive`).
-struct AdaptiveContourOptions {
-  float iso = 0.0f;              ///< isovalue; inside iff value <= iso (must match the octree's)
-  bool intersectionFree = true;  ///< Ju–Udeshi fans where needed; false (--no-intersection-free) = plain DC
-  bool manifoldFix = true;       ///< Wenger's fix on doubled ambiguous faces (leaf_groups.h); false only in tests
-  float singularValueThreshold = 0.1f;  ///< QEF truncation of the dual vertices (see cell::QefOptions); larger =
-                                        ///< smoother, smaller = sharper features but noisier vertices
-  bool sharpFeatures = false;  ///< crossings near a crease from the face they lie on (crease_crossing.h);
-                               ///< the octree should be built with the same OctreeOptions::sharpFeatures
-};
 
 /// What contourAdaptive did (figures for statistics, tests and paper 000's Tables 5.1–5.2).
 struct AdaptiveContourStats {
@@ -89,18 +79,18 @@ struct AdaptiveContourStats {
 /// @brief Contours the octree of one meta-cell (adaptive mode).
 /// @param[in] samples  the meta-cell's samples, (S + 3)^3.
 /// @param[in] tree     its octree (any construction; adaptive is the intended one).
-/// @param[in] options  isovalue, intersection-free fans, QEF threshold.
+/// @param[in] settings isovalue, intersection-free fans, manifold fix, QEF truncation, sharp features.
 /// @param[out] stats   optional figures.
 /// @return the mesh (global voxel index coordinates, outward, indexed; no normals).
 /// @pre `tree` was built from `samples` with the same iso; tree.metaCellSize() == samples.size.
 /// @throw InputError if the sizes differ.
 mesh::Mesh contourAdaptive(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
-                           const AdaptiveContourOptions& options = {}, AdaptiveContourStats* stats = nullptr);
+                           const cell::ContourSettings& settings, AdaptiveContourStats* stats = nullptr);
 
 /// @brief contourAdaptive plus the seam (seam_cell.h): leaves with a sign change
 ///        that touch the meta-cell boundary, and the face points made into
 ///        vertices on faces that touch it.
 MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
-                                     const AdaptiveContourOptions& options = {}, AdaptiveContourStats* stats = nullptr);
+                                     const cell::ContourSettings& settings, AdaptiveContourStats* stats = nullptr);
 
 }  // namespace isovdb::contour

@@ -87,7 +87,7 @@ std::array<mesh::Triangle, 2> regularEdgeQuad(const std::array<std::uint32_t, 4>
 }
 
 MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const LinearOctree& regularTree,
-                                    const RegularContourOptions& options, RegularContourStats* stats) {
+                                    const cell::ContourSettings& options, RegularContourStats* stats) {
   if (samples.size != regularTree.metaCellSize())
     throw InputError("contourRegular: samples.size " + std::to_string(samples.size) +
                      " differs from the octree's meta-cell size " + std::to_string(regularTree.metaCellSize()));
@@ -121,9 +121,7 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
 
   MetaCellMesh result;
   mesh::Mesh& out = result.mesh;
-  out.positions = placeGroupVertices(
-      samples, regularTree, groups,
-      cell::DualVertexOptions{.iso = options.iso, .singularValueThreshold = options.singularValueThreshold});
+  out.positions = placeGroupVertices(samples, regularTree, groups, cell::dualVertexOptions(options));
 
   // 4. Quads (voxel topology: polygons): each interior bipolar edge by its owner leaf (the edge is
   // the owner's local edge 4 * axis, the owner in quadrant 3); edges on the meta-cell boundary are
@@ -223,7 +221,7 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
 }
 
 mesh::Mesh contourRegular(const cell::MetaCellSamples& samples, const LinearOctree& regularTree,
-                          const RegularContourOptions& options, RegularContourStats* stats) {
+                          const cell::ContourSettings& options, RegularContourStats* stats) {
   return contourRegularMetaCell(samples, regularTree, options, stats).mesh;
 }
 

@@ -40,21 +40,10 @@
 #include "isovdb/contour/voxel_dmc.h"
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/octree/linear_octree.h"
+#include "isovdb/cell/contour_settings.h"
 #include "isovdb/cell/meta_cell_samples.h"
 
 namespace isovdb::contour {
-
-/// Options of contourRegular.
-struct RegularContourOptions {
-  float iso = 0.0f;  ///< isovalue; inside iff value <= iso. Must be the one the octree was built with
-  /// Reading of ambiguous cells: the voxel object's (26, 6) topology (voxel_dmc.h) or Wenger's MDMC.
-  RegularTopology topology = RegularTopology::Voxels;
-  bool manifoldFix = true;  ///< Wenger's MDMC correction (voxels: split doubled faces); false only in
-                            ///< tests (then the output can be non-manifold)
-  float singularValueThreshold =
-      0.1f;  ///< QEF truncation, relative to the largest singular value (see cell::QefOptions);
-             ///< higher = smoother vertices, lower = sharper but less stable
-};
 
 /// Figures of one contourRegular call.
 struct RegularContourStats {
@@ -71,21 +60,21 @@ struct RegularContourStats {
 
 /// @brief Contours one meta-cell's regular octree with manifold Dual Marching Cubes.
 /// @param[in] samples the meta-cell's dense samples.
-/// @param[in] regularTree octree built from `samples` with OctreeConstruction::Regular and iso `options.iso`.
-/// @param[in] options isovalue, manifold fix, QEF truncation.
+/// @param[in] regularTree octree built from `samples` with the same settings (method Regular).
+/// @param[in] settings isovalue, reading of ambiguous cells (topology), manifold fix, QEF truncation.
 /// @param[out] stats optional figures.
 /// @return the mesh: closed and manifold wherever the surface stays off the meta-cell boundary.
 /// @pre every leaf whose corners differ in sign has the same size as the leaves around its bipolar edges
 ///      (true for a regular construction).
 /// @throw InputError if `samples.size` differs from the tree's meta-cell size or a leaf's corner
-///        signs differ from the samples at `options.iso` (tree built with another isovalue).
+///        signs differ from the samples at `settings.iso` (tree built with another isovalue).
 mesh::Mesh contourRegular(const cell::MetaCellSamples& samples, const octree::LinearOctree& regularTree,
-                          const RegularContourOptions& options = {}, RegularContourStats* stats = nullptr);
+                          const cell::ContourSettings& settings, RegularContourStats* stats = nullptr);
 
 /// @brief contourRegular plus the seam: the leaves with dual vertices that touch
 ///        the meta-cell boundary, in key order (see seam_cell.h).
 MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const octree::LinearOctree& regularTree,
-                                    const RegularContourOptions& options = {}, RegularContourStats* stats = nullptr);
+                                    const cell::ContourSettings& settings, RegularContourStats* stats = nullptr);
 
 /// @brief The two triangles of one bipolar edge's quad (Algorithm 4.1), oriented
 ///        outward, split along the diagonal whose worse triangle is better shaped.

@@ -38,16 +38,14 @@
 #include <cstdint>
 #include <vector>
 
+#include "isovdb/cell/contour_settings.h"
 #include "isovdb/cell/dmc_table.h"
 #include "isovdb/mesh/mesh.h"
 
 namespace isovdb::contour {
 
 /// How regular mode reads ambiguous configurations.
-enum class RegularTopology {
-  Voxels,  ///< the voxel object's (26, 6) topology: joined faces, split doubled faces, tubes (this file)
-  Mdmc,    ///< Wenger's Manifold DMC: faces separate the inside corners, doubled faces regrouped
-};
+using cell::RegularTopology;  // which reading: cell/contour_settings.h
 
 /// @brief The DMC entry of `config` with ambiguous faces joining the inside
 ///        corners; `doubleFace` as in dmc_table.h.

@@ -83,11 +83,13 @@ struct Evaluation {
 
 class Builder {
  public:
-  Builder(const cell::MetaCellSamples& samples, const OctreeOptions& options, OctreeDepths depths)
+  Builder(const cell::MetaCellSamples& samples, const cell::ContourSettings& settings, const OctreeOptions& options,
+          OctreeDepths depths)
       : samples_(samples),
+        settings_(settings),
         options_(options),
         depths_(depths),
-        phases_(samples, options.iso),
+        phases_(samples, settings.iso),
         leavesAtDepth_(static_cast<std::size_t>(depths.maxDepth) + 1) {
     classify_.detectInteriorComponents = options.detectInteriorComponents;
   }
@@ -104,7 +106,7 @@ class Builder {
       ev.split = true;
       return ev;
     }
-    if (options_.construction == OctreeConstruction::Regular && c.depth < depths_.maxDepth &&
+    if (settings_.method == cell::ContourMethod::Regular && c.depth < depths_.maxDepth &&
         options_.detectInteriorComponents) {
       // The regular construction refines every cell the surface crosses down to the
       // maximum depth, complex or not, so above it the criteria have nothing to
@@ -128,7 +130,7 @@ class Builder {
     }
     if (ev.complex) {
       ev.split = true;
-    } else if (options_.construction == OctreeConstruction::Regular) {
+    } else if (settings_.method == cell::ContourMethod::Regular) {
       ev.split = ev.leaf.surface;
     } else if (const cell::DmcEntry& entry = cell::dmcEntry(ev.leaf.cornerSigns);
                entry.vertexCount > 1 || entry.doubleFace >= 0) {
@@ -138,29 +140,26 @@ class Builder {
       // gets its vertex (contour/leaf_groups.h).
       ev.split = ev.multiSheet = true;
     } else if (options_.qefTolerance >= 0.0f && ev.leaf.surface) {
-      const cell::DualVertex v =
-          cell::computeDualVertex(samples_, ev.leaf.origin, size, ev.leaf.bipolarEdges(),
-                                  cell::DualVertexOptions{.iso = options_.iso,
-                                                          .singularValueThreshold = options_.singularValueThreshold,
-                                                          .sharpFeatures = options_.sharpFeatures});
+      const cell::DualVertex v = cell::computeDualVertex(samples_, ev.leaf.origin, size, ev.leaf.bipolarEdges(),
+                                                         cell::dualVertexOptions(settings_));
       ev.split = ev.geometric = v.valid() && v.rmsError() > options_.qefTolerance;
-      if (!ev.split && options_.sharpFeatures && v.valid() && v.minNormalDot < kFeatureCone) {
+      if (!ev.split && settings_.sharpFeatures && v.valid() && v.minNormalDot < kFeatureCone) {
         // A few tangent planes of a curved crease meet off it while fitting almost exactly.
         std::array<float, 3> x;
         for (int a = 0; a < 3; ++a) x[a] = v.position[a] - static_cast<float>(samples_.origin[a]);
         ev.split = ev.geometric = ev.feature =
-            surfaceGap(samples_, ev.leaf.origin, size, x, options_.iso) > options_.featureTolerance;
+            surfaceGap(samples_, ev.leaf.origin, size, x, settings_.iso) > options_.featureTolerance;
       }
       if (v.valid()) {
         ev.leaf.vertex = v.position;
-        ev.leaf.vertexTruncation = options_.singularValueThreshold;
-        ev.leaf.vertexSharpFeatures = options_.sharpFeatures;
+        ev.leaf.vertexTruncation = settings_.singularValueThreshold;
+        ev.leaf.vertexSharpFeatures = settings_.sharpFeatures;
       }
     }
     // A leaf-to-be of the adaptive tree whose faces the surface crosses may still hide a
     // bubble or a speck inside (the criteria only look at edges and faces; a cell with
     // one-phase faces was scanned by classifyCell already).
-    if (!ev.split && options_.construction == OctreeConstruction::Adaptive && options_.detectInteriorComponents &&
+    if (!ev.split && settings_.method == cell::ContourMethod::Adaptive && options_.detectInteriorComponents &&
         !topo.boundaryUniform && ev.leaf.surface && hasHiddenComponent(phases_, ev.leaf.origin, size))
       ev.split = ev.hidden = true;
     return ev;
@@ -344,6 +343,7 @@ class Builder {
   }
 
   const cell::MetaCellSamples& samples_;
+  const cell::ContourSettings& settings_;
   const OctreeOptions& options_;
   OctreeDepths depths_;
   SamplePhases phases_;  // what the criteria read
@@ -370,11 +370,14 @@ OctreeDepths resolveDepths(const OctreeOptions& options, int metaCellSize) {
   const int finest = depthForCellSize(metaCellSize, 1);
   if (finest > kMaxKeyDepth) throw InputError("octree: meta-cell size too large for 64-bit Morton keys");
   OctreeDepths d;
-  d.maxDepth = options.finestCellSize > 0 ? checkedDepth(metaCellSize, options.finestCellSize, "finestCellSize")
-               : options.maxDepth < 0     ? finest
-                                          : options.maxDepth;
-  d.minDepth =
-      options.maxCellSize > 0 ? checkedDepth(metaCellSize, options.maxCellSize, "maxCellSize") : options.minDepth;
+  // A depth given (>= 0) wins over the cell size; the size then over the default.
+  d.maxDepth = options.maxDepth >= 0        ? options.maxDepth
+               : options.finestCellSize > 0 ? checkedDepth(metaCellSize, options.finestCellSize, "finestCellSize")
+                                            : finest;
+  d.minDepth = options.minDepth >= 0 ? options.minDepth
+               : options.maxCellSize > 0
+                   ? checkedDepth(metaCellSize, std::min(options.maxCellSize, metaCellSize), "maxCellSize")
+                   : 0;
   if (d.maxDepth > finest)
     throw InputError("octree options: maxDepth: expected at most " + std::to_string(finest) + " (1-voxel cells), got " +
                      std::to_string(d.maxDepth));
@@ -384,12 +387,14 @@ OctreeDepths resolveDepths(const OctreeOptions& options, int metaCellSize) {
   return d;
 }
 
-LinearOctree buildOctree(const cell::MetaCellSamples& samples, const OctreeOptions& options, OctreeBuildStats* stats,
-                         Interrupter* interrupter) {
+LinearOctree buildOctree(const cell::MetaCellSamples& samples, const cell::ContourSettings& settings,
+                         const OctreeOptions& options, OctreeBuildStats* stats, Interrupter* interrupter) {
+  if (settings.method == cell::ContourMethod::Vdb)
+    throw InputError("octree: the vdb method builds no octree (regular or adaptive)");
   const OctreeDepths depths = resolveDepths(options, samples.size);
-  Builder builder(samples, options, depths);
+  Builder builder(samples, settings, options, depths);
   builder.buildTopDown(interrupter);
-  if (options.construction == OctreeConstruction::Adaptive) builder.balance(interrupter);
+  if (settings.method == cell::ContourMethod::Adaptive) builder.balance(interrupter);
   return builder.finish(stats);
 }
 

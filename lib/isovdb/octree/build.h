@@ -27,36 +27,33 @@
 
 #include "isovdb/octree/linear_octree.h"
 #include "isovdb/cell/meta_cell_samples.h"
+#include "isovdb/cell/contour_settings.h"
 #include "isovdb/progress.h"
 
 namespace isovdb::octree {
 
-/// Which cells are subdivided between the minimum and the maximum depth.
-enum class OctreeConstruction {
-  Regular,   ///< complex and heterogeneous cells: all surface leaves at the maximum depth (manifold DMC)
-  Adaptive,  ///< complex cells only, 2:1 balanced (+ optional geometric criterion) (DC + Ju–Udeshi)
-};
-
-/// Options of buildOctree. Depths count from the meta-cell root (0); a depth d
-/// has cells of S >> d voxels. Cell-size fields, when > 0, override the depths.
+/// The octree's own knobs: depths and refinement criteria. The method (regular:
+/// every surface cell at the maximum depth; adaptive: complex cells refined, 2:1
+/// balanced), the isovalue, the QEF truncation and sharp features come from the
+/// cell::ContourSettings that the contouring reads too. Depths count from the
+/// meta-cell root (0); a depth d has cells of S >> d voxels. The defaults are
+/// `isovdb extract`'s.
 struct OctreeOptions {
-  OctreeConstruction construction = OctreeConstruction::Adaptive;  ///< regular or adaptive construction
-  int minDepth = 2;            ///< uniform subdivision down to this depth (CLI --min-level); larger = more small leaves
-  int maxDepth = -1;           ///< deepest depth (CLI --max-level); -1 = 1-voxel cells
-  int maxCellSize = 0;         ///< if > 0: largest leaf size in voxels (power of two), overrides minDepth
-  int finestCellSize = 0;      ///< if > 0: smallest leaf size in voxels (power of two), overrides maxDepth
-  float qefTolerance = -1.0f;  ///< adaptive only: also subdivide a surface leaf whose dual vertex is farther
-                               ///< than this RMS distance (voxels) from its tangent planes; < 0 = off
-  float singularValueThreshold = 0.1f;  ///< QEF truncation used by the geometric criterion (see cell::QefOptions)
-  /// Adaptive, with the QEF criterion on: sharp features (cell::DualVertexOptions::sharpFeatures
-  /// for the criterion's vertices), and also subdivide a surface leaf whose crossing normals are
-  /// more than 60 degrees apart and whose dual vertex is at least `featureTolerance` voxels off
-  /// the zero level by the field's Lipschitz bound (surface_gap.h): on a curved rim the tangent
-  /// planes of a coarse leaf meet outside the rim, with an almost exact fit. Contouring must
-  /// use the same setting (contour::AdaptiveContourOptions::sharpFeatures).
-  bool sharpFeatures = false;
-  float featureTolerance = 0.05f;        ///< voxels; see sharpFeatures
-  float iso = 0.0f;                      ///< isovalue; a sample is inside iff value <= iso
+  int minDepth = -1;       ///< uniform subdivision down to this depth (CLI --min-level); -1: maxCellSize decides
+  int maxDepth = -1;       ///< deepest depth (CLI --max-level); -1: finestCellSize decides (1-voxel cells if 0)
+  int maxCellSize = 16;    ///< largest leaf in voxels (power of two, clamped to the meta-cell) when minDepth is -1:
+                           ///< coarser cells miss smooth detail (the QEF residual hardly grows with few crossings)
+  int finestCellSize = 1;  ///< smallest leaf in voxels (power of two) when maxDepth is -1
+  /// Adaptive: also split a surface leaf whose dual vertex is farther than this RMS
+  /// distance (voxels) from its tangent planes; < 0 off. 0.15: on the interface
+  /// distance field of a mask, as close to analytic solids as 0.25 was on
+  /// topologyToLevelSet's noisier field, with as many vertices (bench/field_accuracy.py).
+  float qefTolerance = 0.15f;
+  /// Adaptive with sharp features: also split a surface leaf whose crossing normals are
+  /// more than 60 degrees apart and whose dual vertex is at least this far (voxels) off
+  /// the zero level by the field's Lipschitz bound (surface_gap.h): on a curved rim the
+  /// tangent planes of a coarse leaf meet outside the rim, with an almost exact fit.
+  float featureTolerance = 0.05f;
   bool detectInteriorComponents = true;  ///< a cell with one-phase faces but a sample of the other phase inside
                                          ///< is complex (catches blobs that touch no face; one pass over such cells)
   bool parallel = true;                  ///< evaluate each level's cells with TBB (the result is the same)
@@ -68,7 +65,8 @@ struct OctreeDepths {
   int maxDepth = 0;
 };
 
-/// @brief Resolves depths and cell sizes of `options` for a meta-cell of `metaCellSize` voxels.
+/// @brief Resolves depths and cell sizes of `options` for a meta-cell of `metaCellSize` voxels:
+///        a depth >= 0 wins over the matching cell size; maxCellSize is clamped to the meta-cell.
 /// @throw InputError if a size is not a power of two <= metaCellSize or minDepth > maxDepth.
 OctreeDepths resolveDepths(const OctreeOptions& options, int metaCellSize);
 
@@ -91,12 +89,16 @@ struct OctreeBuildStats {
 
 /// @brief Builds the octree of one meta-cell.
 /// @param[in] samples the meta-cell's dense samples (S + 3)^3.
-/// @param[in] options construction, depths, criteria.
+/// @param[in] settings the method (Regular or Adaptive), isovalue, QEF truncation and
+///            sharp features, as the contouring will read them.
+/// @param[in] options depths and refinement criteria.
 /// @param[out] stats optional figures of the construction.
 /// @param[in] interrupter optional; checked once per depth.
-/// @throw InputError for invalid options (see resolveDepths); Interrupted on cancellation.
-LinearOctree buildOctree(const cell::MetaCellSamples& samples, const OctreeOptions& options = {},
-                         OctreeBuildStats* stats = nullptr, Interrupter* interrupter = nullptr);
+/// @throw InputError for invalid options (see resolveDepths) or the Vdb method;
+///        Interrupted on cancellation.
+LinearOctree buildOctree(const cell::MetaCellSamples& samples, const cell::ContourSettings& settings,
+                         const OctreeOptions& options = {}, OctreeBuildStats* stats = nullptr,
+                         Interrupter* interrupter = nullptr);
 
 /// @brief True if no two leaves that share a face, an edge or a corner differ by more than one depth.
 bool isBalanced(const LinearOctree& octree);

@@ -17,35 +17,9 @@
 
 namespace isovdb::pipeline {
 
-std::optional<ContourMethod> parseContourMethod(std::string_view name) {
-  if (name == "vdb") return ContourMethod::Vdb;
-  if (name == "regular") return ContourMethod::Regular;
-  if (name == "adaptive") return ContourMethod::Adaptive;
-  return std::nullopt;
-}
-
-std::optional<contour::RegularTopology> parseRegularTopology(std::string_view name) {
-  if (name == "voxels") return contour::RegularTopology::Voxels;
-  if (name == "mdmc") return contour::RegularTopology::Mdmc;
-  return std::nullopt;
-}
-
-contour::RegularTopology regularTopologyFor(const std::optional<contour::RegularTopology>& chosen,
-                                            volume::VolumeKind kind) {
+cell::RegularTopology regularTopologyFor(const std::optional<cell::RegularTopology>& chosen, volume::VolumeKind kind) {
   if (chosen) return *chosen;
-  return kind == volume::VolumeKind::Mask ? contour::RegularTopology::Voxels : contour::RegularTopology::Mdmc;
-}
-
-std::string_view contourMethodName(ContourMethod method) {
-  switch (method) {
-    case ContourMethod::Vdb:
-      return "vdb";
-    case ContourMethod::Regular:
-      return "regular";
-    case ContourMethod::Adaptive:
-      return "adaptive";
-  }
-  return "unknown";
+  return kind == volume::VolumeKind::Mask ? cell::RegularTopology::Voxels : cell::RegularTopology::Mdmc;
 }
 
 volume::Volume toContourable(const volume::Volume& volume, const volume::DistanceFieldOptions& options,
@@ -95,10 +69,11 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
     throw InputError("--threads: expected 0 (every core) or more, got " + std::to_string(options.threads));
   std::optional<tbb::global_control> threads;
   if (options.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, options.threads);
+  const float iso = options.contour.iso;
   const float deadBand = volume::deadBandOf(volume);
-  if (volume.kind() == volume::VolumeKind::Scalar && std::abs(options.iso) < deadBand) {
+  if (volume.kind() == volume::VolumeKind::Scalar && std::abs(iso) < deadBand) {
     std::ostringstream message;
-    message << "'" << volume.name() << "': --iso " << options.iso << " lies inside the dead band |value| < " << deadBand
+    message << "'" << volume.name() << "': --iso " << iso << " lies inside the dead band |value| < " << deadBand
             << " (--clip): choose |iso| >= clip or a smaller --clip";
     throw InputError(message.str());
   }
@@ -112,18 +87,17 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
   const bool open = box && options.boundary == BoundaryMode::Open;
   mesh::MeshCollector whole;
   CappingSink capped(open ? static_cast<mesh::MeshSink&>(whole) : sink, box);
-  if (options.method == ContourMethod::Vdb) {
+  const ContourMethod method = options.contour.method;
+  if (method == ContourMethod::Vdb) {
     Statistics::StageTimer timer(stats, "contour");
     const mesh::Mesh mesh =
-        contour::contourWithOpenVdb(field, {.iso = options.iso, .adaptivity = options.adaptivity}, interrupter);
+        contour::contourWithOpenVdb(field, {.iso = iso, .adaptivity = options.adaptivity}, interrupter);
     capped.addVertices(mesh.positions);
     capped.addTriangles(mesh.triangles);
   } else {
-    OctreeContourOptions octree = options.octree;
-    octree.method = options.method == ContourMethod::Regular ? OctreeMethod::Regular : OctreeMethod::Adaptive;
-    octree.iso = static_cast<float>(options.iso);
-    octree.regularTopology = regularTopologyFor(options.regularTopology, kind);
-    contourWithOctree(field, octree, capped, interrupter, stats);
+    cell::ContourSettings settings = options.contour;
+    settings.topology = regularTopologyFor(options.regularTopology, kind);
+    contourWithOctree(field, settings, options.octree, options.metaCellSize, capped, interrupter, stats);
   }
   std::int64_t dropped = 0;
   if (open) {
@@ -137,9 +111,9 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
       section["boundary"] = std::string(boundaryModeName(options.boundary));
       section["cap_triangles_dropped"] = dropped;
     }
-    section["method"] = std::string(contourMethodName(options.method));
-    section["iso"] = options.iso;
-    if (options.method == ContourMethod::Vdb) section["adaptivity"] = options.adaptivity;
+    section["method"] = std::string(contourMethodName(method));
+    section["iso"] = iso;
+    if (method == ContourMethod::Vdb) section["adaptivity"] = options.adaptivity;
     section["vertices"] = sink.vertexCount();
     section["triangles"] = sink.triangleCount();
   }

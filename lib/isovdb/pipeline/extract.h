@@ -20,39 +20,34 @@
 
 namespace isovdb::pipeline {
 
-/// Contouring methods. Our own octree methods (regular, adaptive) plug in here.
-enum class ContourMethod {
-  Vdb,       ///< OpenVDB tools::volumeToMesh, the reference
-  Regular,   ///< octree, regular construction + manifold Dual Marching Cubes (closed, manifold)
-  Adaptive,  ///< octree, adaptive construction + dual contouring with Ju–Udeshi fans
-};
-
-std::optional<ContourMethod> parseContourMethod(std::string_view name);
-std::string_view contourMethodName(ContourMethod method);
-
-/// Regular mode's reading of ambiguous cells by name: "voxels" or "mdmc".
-std::optional<contour::RegularTopology> parseRegularTopology(std::string_view name);
+using cell::ContourMethod;
+using cell::contourMethodName;
+using cell::parseContourMethod;
+using cell::parseRegularTopology;
 
 /// The reading ExtractOptions::regularTopology gives for an input of `kind`.
-contour::RegularTopology regularTopologyFor(const std::optional<contour::RegularTopology>& chosen,
-                                            volume::VolumeKind kind);
+cell::RegularTopology regularTopologyFor(const std::optional<cell::RegularTopology>& chosen, volume::VolumeKind kind);
 
+/// Every setting of `isovdb extract` (each field is a CLI flag and a Python keyword).
 struct ExtractOptions {
-  ContourMethod method = ContourMethod::Vdb;
-  /// Isovalue: in voxels on a distance field (0 = the mask boundary, >0 grows the
-  /// surface outwards), in the field's units on a scalar volume.
-  double iso = 0.0;
+  /// The method (vdb by default: OpenVDB's reference), the isovalue (voxels on a
+  /// distance field, 0 = the mask boundary, > 0 grows the surface; the field's units
+  /// on a scalar volume) and what the octree, contouring and stitching share.
+  cell::ContourSettings contour{.method = ContourMethod::Vdb};
+  /// Octree methods: the octree's own knobs (depths, QEF and feature criteria).
+  octree::OctreeOptions octree;
+  /// Octree methods: S, voxels per meta-cell edge (power of two, 16..512; 128 = VDB
+  /// level-1 nodes); 0 = one meta-cell around the whole band (no stitching).
+  int metaCellSize = 128;
   /// `vdb` method only: OpenVDB's adaptivity in [0, 1].
   double adaptivity = 0.0;
   /// Used when the input is a mask.
   volume::DistanceFieldOptions distance;
-  /// `regular` and `adaptive` methods (iso and method are taken from above).
-  OctreeContourOptions octree;
   /// `regular` method: reading of ambiguous cells; unset = Voxels when the input is a
   /// binary mask (the mesh then has the mask's topology), Mdmc on fields (distance
-  /// fields, scalars, reconstructions), where no voxel object defines one. Overrides
-  /// octree.regularTopology.
-  std::optional<contour::RegularTopology> regularTopology;
+  /// fields, scalars, reconstructions), where no voxel object defines one. Sets
+  /// contour.topology.
+  std::optional<cell::RegularTopology> regularTopology;
   /// Worker threads for the whole job (TBB); 0 = every core. The output does not depend on it.
   int threads = 0;
   /// Surfaces reaching the sampled data's boundary: capped there (closed mesh) or

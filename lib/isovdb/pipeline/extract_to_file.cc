@@ -14,7 +14,7 @@ std::uint64_t extractToFile(volume::Volume volume, const ExtractOptions& options
                             Interrupter* interrupter, Statistics* stats) {
   if (!io::isMeshPath(path)) throw InputError("'" + path.string() + "': unknown mesh format, expected .ply or .obj");
   io::AtomicFile::checkWritable(path);
-  const bool stream = options.method != ContourMethod::Vdb && io::lowerExtension(path) == ".ply";
+  const bool stream = options.contour.method != ContourMethod::Vdb && io::lowerExtension(path) == ".ply";
   if (stream) {
     const volume::Geometry g = volume.geometry();
     io::PlyStreamWriter writer(path, g.spacing, g.origin);

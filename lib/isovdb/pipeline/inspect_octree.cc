@@ -10,11 +10,20 @@ namespace isovdb::pipeline {
 
 void inspectOctree(const volume::Volume& input, const InspectOctreeOptions& options, Statistics& stats,
                    Interrupter* interrupter) {
-  const volume::Volume field = toContourable(input, options.distance, interrupter, &stats);
+  const ExtractOptions& extract = options.extract;
+  if (extract.contour.method == ContourMethod::Vdb)
+    throw InputError("--method: vdb builds no octree; expected regular or adaptive");
+  const int metaCellSize = extract.metaCellSize;
+  if (metaCellSize < 16 || metaCellSize > 512 || (metaCellSize & (metaCellSize - 1)) != 0)
+    throw InputError("--meta-cell: expected a power of two in 16..512 (octree inspects one meta-cell), got " +
+                     std::to_string(metaCellSize));
+  cell::ContourSettings settings = extract.contour;
+  settings.topology = regularTopologyFor(extract.regularTopology, input.kind());
+  const volume::Volume field = toContourable(input, extract.distance, interrupter, &stats);
   volume::MetaCellPartition partition;
   {
     Statistics::StageTimer timer(&stats, "partition");
-    partition = volume::partitionMetaCells(field, options.metaCellSize, options.octree.iso);
+    partition = volume::partitionMetaCells(field, metaCellSize, settings.iso);
   }
   auto& section = stats["meta_cells"];
   section["size"] = partition.size;
@@ -22,34 +31,33 @@ void inspectOctree(const volume::Volume& input, const InspectOctreeOptions& opti
   section["leaves_scanned"] = partition.leavesScanned;
   if (partition.cells.empty()) throw InputError("'" + input.name() + "': no meta-cell holds the surface");
   // The partition is conservative: by default take the first candidate whose
-  // samples really change sign.
-  cell::MetaCellSamples samples;
-  volume::MetaCellIndex index = partition.cells.front();
-  if (options.metaCell) {
-    index = *options.metaCell;
-    volume::readMetaCell(field, index, options.metaCellSize, samples);
-  } else {
-    for (const volume::MetaCellIndex& candidate : partition.cells) {
-      index = candidate;
-      volume::readMetaCell(field, index, options.metaCellSize, samples);
-      if (volume::hasSignChange(samples, options.octree.iso)) break;
+  // samples really change sign (extract skips the others).
+  octree::OctreeBuildStats buildStats;
+  octree::LinearOctree tree;
+  volume::MetaCellIndex index = options.metaCell ? *options.metaCell : partition.cells.front();
+  bool crossed = false;
+  {
+    Statistics::StageTimer timer(&stats, "octree");
+    if (options.metaCell) {
+      tree = metaCellOctree(field, settings, extract.octree, metaCellSize, index, &buildStats, &crossed, interrupter);
+    } else {
+      for (const volume::MetaCellIndex& candidate : partition.cells) {
+        index = candidate;
+        buildStats = {};
+        tree = metaCellOctree(field, settings, extract.octree, metaCellSize, index, &buildStats, &crossed, interrupter);
+        if (crossed) break;
+      }
     }
   }
   section["inspected"] = index;
-  section["inspected_has_sign_change"] = volume::hasSignChange(samples, options.octree.iso);
-  octree::OctreeBuildStats buildStats;
-  octree::LinearOctree tree;
-  {
-    Statistics::StageTimer timer(&stats, "octree");
-    tree = octree::buildOctree(samples, options.octree, &buildStats, interrupter);
-  }
+  section["inspected_has_sign_change"] = crossed;
   const octree::OctreeSummary summary = octree::summarizeOctree(tree);
-  const octree::OctreeDepths depths = octree::resolveDepths(options.octree, options.metaCellSize);
+  const octree::OctreeDepths depths = octree::resolveDepths(extract.octree, metaCellSize);
   auto& out = stats["octree"];
-  out["construction"] = options.octree.construction == octree::OctreeConstruction::Regular ? "regular" : "adaptive";
+  out["method"] = std::string(contourMethodName(settings.method));
   out["min_level"] = depths.minDepth;
   out["max_level"] = depths.maxDepth;
-  out["finest_cell_size_voxels"] = octree::cellSizeAtDepth(options.metaCellSize, depths.maxDepth);
+  out["finest_cell_size_voxels"] = octree::cellSizeAtDepth(metaCellSize, depths.maxDepth);
   out["leaves"] = summary.leaves;
   out["surface_leaves"] = summary.surfaceLeaves;
   out["leaves_per_level"] = summary.leavesPerDepth;

@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "isovdb/octree/build.h"
+#include "isovdb/pipeline/extract.h"
 #include "isovdb/pipeline/statistics.h"
 #include "isovdb/volume/distance_field.h"
 #include "isovdb/volume/meta_cells.h"
@@ -17,10 +18,10 @@
 namespace isovdb::pipeline {
 
 struct InspectOctreeOptions {
-  int metaCellSize = 128;                         ///< S, voxels (power of two)
+  /// The settings `isovdb extract` would run with (method, iso, octree, meta-cell
+  /// size, distance field): the tree shown is the one extract builds there.
+  ExtractOptions extract;
   std::optional<volume::MetaCellIndex> metaCell;  ///< empty: the first meta-cell the surface crosses
-  octree::OctreeOptions octree;                   ///< construction, levels, iso
-  volume::DistanceFieldOptions distance;          ///< when the input is a mask
   std::filesystem::path wireframe;                ///< empty: none; else a PLY of the leaf cells
 };
 

@@ -31,20 +31,13 @@ int nextPowerOfTwo(int v) {
   return p;
 }
 
-/// The octree options of a meta-cell of `size` voxels.
-octree::OctreeOptions treeOptionsFor(const OctreeContourOptions& options, int size, float iso) {
-  octree::OctreeOptions t;
-  t.construction = options.method == OctreeMethod::Regular ? octree::OctreeConstruction::Regular
-                                                           : octree::OctreeConstruction::Adaptive;
-  t.minDepth = options.minLevel;
-  if (options.minLevel < 0) t.maxCellSize = std::min(options.maxCellSize, size);
-  t.maxDepth = options.maxLevel;
-  if (options.maxLevel < 0) t.finestCellSize = options.finestCellSize;
-  t.qefTolerance = options.method == OctreeMethod::Adaptive ? options.qefTolerance : -1.f;
-  t.sharpFeatures = options.method == OctreeMethod::Adaptive && options.sharpFeatures;
-  t.iso = iso;
-  return t;
-}
+/// What the engine reads for every meta-cell: the shared settings, the octree's own
+/// knobs and the partition's size.
+struct Engine {
+  const cell::ContourSettings& settings;
+  const octree::OctreeOptions& tree;
+  int metaCellSize;
+};
 
 /// Figures summed over meta-cells (CPU seconds, counts).
 struct MetaCellTotals {
@@ -81,12 +74,14 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 }
 
 /// Builds the octree of one block of samples and contours it (edges inside the block; the seam kept).
-contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const OctreeContourOptions& options, float iso,
+/// `iso` is the settings' isovalue as the engine reads this block (negated on a scalar field).
+contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const Engine& engine, float iso,
                                    MetaCellTotals& totals, Interrupter* interrupter) {
+  cell::ContourSettings settings = engine.settings;
+  settings.iso = iso;
   auto t0 = std::chrono::steady_clock::now();
   octree::OctreeBuildStats buildStats;
-  const octree::LinearOctree tree =
-      octree::buildOctree(samples, treeOptionsFor(options, samples.size, iso), &buildStats, interrupter);
+  const octree::LinearOctree tree = octree::buildOctree(samples, settings, engine.tree, &buildStats, interrupter);
   totals.octreeSeconds += secondsSince(t0);
   totals.leaves += static_cast<std::int64_t>(tree.leafCount());
   totals.complexCells += static_cast<std::int64_t>(buildStats.complexCells);
@@ -96,10 +91,9 @@ contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const O
   totals.hiddenComponentSplits += static_cast<std::int64_t>(buildStats.hiddenComponentSplits);
   t0 = std::chrono::steady_clock::now();
   contour::MetaCellMesh result;
-  if (options.method == OctreeMethod::Regular) {
+  if (settings.method == cell::ContourMethod::Regular) {
     contour::RegularContourStats s;
-    result = contour::contourRegularMetaCell(
-        samples, tree, {.iso = iso, .topology = options.regularTopology, .manifoldFix = options.manifoldFix}, &s);
+    result = contour::contourRegularMetaCell(samples, tree, settings, &s);
     totals.tubeCells += s.tubeCells;
     totals.manifoldFixes += s.manifoldFixes;
     totals.fixesBeyondApron += s.fixesBeyondApron;
@@ -107,12 +101,7 @@ contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const O
     totals.seamCells += s.seamCells;
   } else {
     contour::AdaptiveContourStats s;
-    result = contour::contourAdaptiveMetaCell(samples, tree,
-                                              {.iso = iso,
-                                               .intersectionFree = options.intersectionFree,
-                                               .manifoldFix = options.manifoldFix,
-                                               .sharpFeatures = options.sharpFeatures},
-                                              &s);
+    result = contour::contourAdaptiveMetaCell(samples, tree, settings, &s);
     totals.manifoldFixes += s.manifoldFixes;
     totals.multiVertexCells += s.multiVertexCells;
     totals.boundaryEdges += s.boundaryEdges;
@@ -132,17 +121,17 @@ float engineIso(const volume::Volume& field, float iso, cell::MetaCellSamples& s
   return -iso;
 }
 
-void recordTotals(const MetaCellTotals& totals, const OctreeContourOptions& options, Statistics::Json& section) {
+void recordTotals(const MetaCellTotals& totals, const cell::ContourSettings& options, Statistics::Json& section) {
   section["leaves"] = totals.leaves;
   section["complex_cells"] = totals.complexCells;
   section["unresolved_complex_leaves"] = totals.unresolvedComplexLeaves;
   section["boundary_cells_kept"] = totals.seamCells;
   section["edges_left_to_stitching"] = totals.boundaryEdges;
   section["manifold_fixes"] = totals.manifoldFixes;
-  if (options.method == OctreeMethod::Regular) {
-    section["topology"] = options.regularTopology == contour::RegularTopology::Voxels ? "voxels" : "mdmc";
+  if (options.method == cell::ContourMethod::Regular) {
+    section["topology"] = std::string(cell::regularTopologyName(options.topology));
     section["manifold_fixes_beyond_apron"] = totals.fixesBeyondApron;
-    if (options.regularTopology == contour::RegularTopology::Voxels) section["tube_cells"] = totals.tubeCells;
+    if (options.topology == cell::RegularTopology::Voxels) section["tube_cells"] = totals.tubeCells;
   } else {
     section["geometric_splits"] = totals.geometricSplits;
     section["multi_sheet_splits"] = totals.multiSheetSplits;
@@ -160,7 +149,7 @@ void recordTotals(const MetaCellTotals& totals, const OctreeContourOptions& opti
 }
 
 /// One padded meta-cell around the whole band (no seams).
-void contourSingleBlock(const volume::Volume& field, const OctreeContourOptions& options, mesh::MeshSink& sink,
+void contourSingleBlock(const volume::Volume& field, const Engine& engine, mesh::MeshSink& sink,
                         Interrupter* interrupter, Statistics* stats) {
   openvdb::CoordBBox band;
   if (!volume::fieldGrid(field).tree().evalActiveVoxelBoundingBox(band)) return;
@@ -181,7 +170,7 @@ void contourSingleBlock(const volume::Volume& field, const OctreeContourOptions&
                      " MiB, more than half of this machine's memory (use --meta-cell 128)");
   MetaCellTotals totals;
   cell::MetaCellSamples samples;
-  float iso = options.iso;
+  float iso = engine.settings.iso;
   {
     Statistics::StageTimer timer(stats, "read_meta_cells");
     volume::readBlock(field, origin, size, samples);
@@ -190,7 +179,7 @@ void contourSingleBlock(const volume::Volume& field, const OctreeContourOptions&
   contour::MetaCellMesh block;
   {
     Statistics::StageTimer timer(stats, "contour_meta_cells");
-    block = contourBlock(samples, options, iso, totals, interrupter);
+    block = contourBlock(samples, engine, iso, totals, interrupter);
   }
   sink.addVertices(block.mesh.positions);
   sink.addTriangles(block.mesh.triangles);
@@ -199,9 +188,17 @@ void contourSingleBlock(const volume::Volume& field, const OctreeContourOptions&
     section["meta_cell_size"] = size;
     section["meta_cell_origin"] = origin;
     section["single_block"] = true;
-    recordTotals(totals, options, section);
+    recordTotals(totals, engine.settings, section);
     (*stats)["octree"] = section;
   }
+}
+
+/// The samples read beyond a meta-cell: regular mode reads one finest cell beyond it,
+/// for Wenger's fix across the seam; adaptive mode one sample (Prewitt gradients).
+int metaCellApron(const Engine& engine) {
+  if (engine.settings.method != cell::ContourMethod::Regular) return 1;
+  const octree::OctreeDepths depths = octree::resolveDepths(engine.tree, engine.metaCellSize);
+  return std::max(1, octree::cellSizeAtDepth(engine.metaCellSize, depths.maxDepth));
 }
 
 /// One meta-cell's result on its way through the pipeline.
@@ -213,9 +210,10 @@ struct MetaCellJob {
 };
 
 /// Every meta-cell in parallel, output in meta-cell order, then the seams.
-void contourMetaCells(const volume::Volume& field, const OctreeContourOptions& options, mesh::MeshSink& sink,
-                      Interrupter* interrupter, Statistics* stats) {
-  const int s = options.metaCellSize;
+void contourMetaCells(const volume::Volume& field, const Engine& engine, mesh::MeshSink& sink, Interrupter* interrupter,
+                      Statistics* stats) {
+  const cell::ContourSettings& options = engine.settings;
+  const int s = engine.metaCellSize;
   if (s < 16 || s > 512 || (s & (s - 1)) != 0)
     throw InputError("--meta-cell: expected a power of two in 16..512 (or 0 for one block), got " + std::to_string(s));
   volume::MetaCellPartition partition;
@@ -224,9 +222,7 @@ void contourMetaCells(const volume::Volume& field, const OctreeContourOptions& o
     partition = volume::partitionMetaCells(field, s, options.iso);
   }
   // Regular mode reads one finest cell beyond the meta-cell, for Wenger's fix across the seam.
-  const octree::OctreeDepths depths = octree::resolveDepths(treeOptionsFor(options, s, options.iso), s);
-  const int apron =
-      options.method == OctreeMethod::Regular ? std::max(1, octree::cellSizeAtDepth(s, depths.maxDepth)) : 1;
+  const int apron = metaCellApron(engine);
 
   const std::size_t tokens =
       std::max<std::size_t>(1, tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
@@ -262,7 +258,7 @@ void contourMetaCells(const volume::Volume& field, const OctreeContourOptions& o
                                              job->totals.readSeconds += secondsSince(t0);
                                              job->contoured = volume::hasSignChange(samples, iso);
                                              if (job->contoured)
-                                               job->result = contourBlock(samples, options, iso, job->totals, nullptr);
+                                               job->result = contourBlock(samples, engine, iso, job->totals, nullptr);
                                              return job;
                                            }) &
                                        tbb::make_filter<std::shared_ptr<MetaCellJob>, void>(
@@ -286,13 +282,8 @@ void contourMetaCells(const volume::Volume& field, const OctreeContourOptions& o
   {
     Statistics::StageTimer timer(stats, "stitch");
     mesh::Mesh tail;
-    stitch::stitchSeams(seams,
-                        {.method = options.method == OctreeMethod::Regular ? stitch::StitchMethod::Regular
-                                                                           : stitch::StitchMethod::Adaptive,
-                         .metaCellSize = s,
-                         .intersectionFree = options.intersectionFree,
-                         .regularTopology = options.regularTopology},
-                        static_cast<std::uint32_t>(sink.vertexCount()), tail, &stitchStats, interrupter);
+    stitch::stitchSeams(seams, options, s, static_cast<std::uint32_t>(sink.vertexCount()), tail, &stitchStats,
+                        interrupter);
     sink.addVertices(tail.positions);
     sink.addTriangles(tail.triangles);
   }
@@ -312,7 +303,7 @@ void contourMetaCells(const volume::Volume& field, const OctreeContourOptions& o
     st["meta_edges"] = stitchStats.metaEdges;
     st["seam_cells"] = stitchStats.seamCells;
     st["edges"] = stitchStats.edges;
-    if (options.method == OctreeMethod::Adaptive) st["fanned_edges"] = stitchStats.fannedEdges;
+    if (options.method == cell::ContourMethod::Adaptive) st["fanned_edges"] = stitchStats.fannedEdges;
     st["missing_cells"] = stitchStats.missingCells;
     (*stats)["stitch"] = st;
   }
@@ -320,20 +311,38 @@ void contourMetaCells(const volume::Volume& field, const OctreeContourOptions& o
 
 }  // namespace
 
-void contourWithOctree(const volume::Volume& field, const OctreeContourOptions& options, mesh::MeshSink& sink,
+void contourWithOctree(const volume::Volume& field, const cell::ContourSettings& settings,
+                       const octree::OctreeOptions& tree, int metaCellSize, mesh::MeshSink& sink,
                        Interrupter* interrupter, Statistics* stats) {
   if (field.kind() == volume::VolumeKind::Mask)
     throw InputError("'" + field.name() + "': octree contouring needs a distance field or a scalar field");
-  if (options.metaCellSize == 0)
-    contourSingleBlock(field, options, sink, interrupter, stats);
+  if (settings.method == cell::ContourMethod::Vdb)
+    throw InputError("octree contouring: the method is vdb; expected regular or adaptive");
+  const Engine engine{settings, tree, metaCellSize};
+  if (metaCellSize == 0)
+    contourSingleBlock(field, engine, sink, interrupter, stats);
   else
-    contourMetaCells(field, options, sink, interrupter, stats);
+    contourMetaCells(field, engine, sink, interrupter, stats);
 }
 
-mesh::Mesh contourWithOctree(const volume::Volume& field, const OctreeContourOptions& options, Interrupter* interrupter,
+octree::LinearOctree metaCellOctree(const volume::Volume& field, const cell::ContourSettings& settings,
+                                    const octree::OctreeOptions& tree, int metaCellSize,
+                                    const std::array<int, 3>& index, octree::OctreeBuildStats* stats,
+                                    bool* hasSignChange, Interrupter* interrupter) {
+  const Engine engine{settings, tree, metaCellSize};
+  cell::MetaCellSamples samples;
+  volume::readMetaCell(field, index, metaCellSize, samples, metaCellApron(engine));
+  cell::ContourSettings blockSettings = settings;
+  blockSettings.iso = engineIso(field, settings.iso, samples);
+  if (hasSignChange) *hasSignChange = volume::hasSignChange(samples, blockSettings.iso);
+  return octree::buildOctree(samples, blockSettings, tree, stats, interrupter);
+}
+
+mesh::Mesh contourWithOctree(const volume::Volume& field, const cell::ContourSettings& settings,
+                             const octree::OctreeOptions& tree, int metaCellSize, Interrupter* interrupter,
                              Statistics* stats) {
   mesh::MeshCollector collector;
-  contourWithOctree(field, options, collector, interrupter, stats);
+  contourWithOctree(field, settings, tree, metaCellSize, collector, interrupter, stats);
   return std::move(collector.mesh);
 }
 

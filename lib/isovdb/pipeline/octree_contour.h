@@ -28,49 +28,30 @@
 
 namespace isovdb::pipeline {
 
-enum class OctreeMethod {
-  Regular,   ///< regular construction + manifold Dual Marching Cubes: closed, manifold
-  Adaptive,  ///< adaptive construction + dual contouring with Ju–Udeshi fans: closed, no self-intersection
-};
-
-struct OctreeContourOptions {
-  OctreeMethod method = OctreeMethod::Regular;
-  float iso = 0.f;         ///< isovalue (voxels on distance fields)
-  int metaCellSize = 128;  ///< S, voxels per meta-cell edge (power of two, 16..512; 128 = VDB level-1 nodes);
-                           ///< 0 = one meta-cell around the whole band (no stitching)
-  int minLevel = -1;       ///< uniform subdivision down to this depth under the meta-cell; -1: maxCellSize decides
-  int maxCellSize = 16;    ///< largest leaf in voxels when minLevel is -1 (coarser cells miss smooth detail:
-                           ///< the QEF residual hardly grows on cells with few crossings)
-  int maxLevel = -1;       ///< deepest level under the meta-cell; -1: finestCellSize decides
-  int finestCellSize = 1;  ///< smallest leaf in voxels (power of two) when maxLevel is -1
-  /// adaptive: split leaves whose QEF residual (RMS voxels) exceeds it; <0 off. 0.15: on the
-  /// interface distance field of a mask, as close to analytic solids as 0.25 was on
-  /// topologyToLevelSet's noisier field, with as many vertices (bench/field_accuracy.py).
-  float qefTolerance = 0.15f;
-  /// Regular: how ambiguous cells are read. Voxels (default) keeps the voxel object's topology
-  /// (26-connected inside, 6-connected outside: chi(mesh) = 2 chi(object) on masks); Mdmc is
-  /// Wenger's Manifold DMC (inside corners of ambiguous faces separated; adaptive mode's reading).
-  contour::RegularTopology regularTopology = contour::RegularTopology::Voxels;
-  bool manifoldFix = true;       ///< Wenger's fix, both methods (regular voxels: split doubled faces); tests
-                                 ///< switch it off to show it matters
-  bool intersectionFree = true;  ///< adaptive: Ju–Udeshi fans (false: plain DC, for comparison)
-  bool sharpFeatures = false;    ///< adaptive, exact distance fields: keep sharp edges and corners (crossings
-                                 ///< near a crease from their own face, leaves refined until their vertex is
-                                 ///< on the zero level: octree::OctreeOptions::sharpFeatures). Off by default:
-                                 ///< a field made from a voxel mask has a crease at every step of its
-                                 ///< staircase (salt body: 1.5x the triangles)
-};
-
 /// Contours a DistanceField (inside = value <= iso) or a Scalar volume (inside =
 /// value >= iso) with our octree methods into `sink` (voxel index space,
 /// outward-oriented triangles).
 /// @throw InputError for a mask volume, an invalid meta-cell size or invalid levels;
 ///        Interrupted on cancellation.
-void contourWithOctree(const volume::Volume& field, const OctreeContourOptions& options, mesh::MeshSink& sink,
+/// `settings` (method Regular or Adaptive) are read by the octree, the contouring and
+/// the stitching alike; `tree` holds the octree's own knobs; `metaCellSize` is S, a
+/// power of two in 16..512 (128 = VDB level-1 nodes), or 0 for one padded block
+/// around the whole band (no stitching).
+void contourWithOctree(const volume::Volume& field, const cell::ContourSettings& settings,
+                       const octree::OctreeOptions& tree, int metaCellSize, mesh::MeshSink& sink,
                        Interrupter* interrupter = nullptr, Statistics* stats = nullptr);
 
 /// The same, collected into a mesh.
-mesh::Mesh contourWithOctree(const volume::Volume& field, const OctreeContourOptions& options,
+mesh::Mesh contourWithOctree(const volume::Volume& field, const cell::ContourSettings& settings,
+                             const octree::OctreeOptions& tree = {}, int metaCellSize = 128,
                              Interrupter* interrupter = nullptr, Statistics* stats = nullptr);
+
+/// The octree contourWithOctree builds for meta-cell `index` of `field`: the same
+/// samples, apron and isovalue (negated on a scalar field), for `isovdb octree`.
+/// `hasSignChange` (optional) says whether the meta-cell's samples cross the surface.
+octree::LinearOctree metaCellOctree(const volume::Volume& field, const cell::ContourSettings& settings,
+                                    const octree::OctreeOptions& tree, int metaCellSize,
+                                    const std::array<int, 3>& index, octree::OctreeBuildStats* stats = nullptr,
+                                    bool* hasSignChange = nullptr, Interrupter* interrupter = nullptr);
 
 }  // namespace isovdb::pipeline

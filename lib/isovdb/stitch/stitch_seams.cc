@@ -150,12 +150,12 @@ contour::MetaCellSeam* SeamStore::find(const MetaCellIndex& index) {
   return it == seams_.end() ? nullptr : &it->second;
 }
 
-void stitchSeams(SeamStore& store, const StitchOptions& options, std::uint32_t vertexBase, mesh::Mesh& out,
-                 StitchStats* stats, Interrupter* interrupter) {
+void stitchSeams(SeamStore& store, const cell::ContourSettings& options, int metaCellSize, std::uint32_t vertexBase,
+                 mesh::Mesh& out, StitchStats* stats, Interrupter* interrupter) {
   ProgressStage progress(interrupter, "stitching seams");
   StitchStats local;
   local.seamCells = static_cast<std::int64_t>(store.cellCount());
-  const int s = options.metaCellSize;
+  const int s = metaCellSize;
   const contour::VertexAdder addVertex = contour::appendingTo(out, vertexBase);
   contour::FaceVertexMap faceVertices;
   for (const auto& [zyx, seam] : store.byZyx())
@@ -172,8 +172,8 @@ void stitchSeams(SeamStore& store, const StitchOptions& options, std::uint32_t v
       around.push_back(&m->cells);
     }
     const EdgeOctree edgeTree = buildEdgeOctree(seam, around, s);
-    if (options.method == StitchMethod::Regular)
-      stitchRegular(seam, edgeTree, s, options.regularTopology == contour::RegularTopology::Voxels, out, local);
+    if (options.method == cell::ContourMethod::Regular)
+      stitchRegular(seam, edgeTree, s, options.topology == cell::RegularTopology::Voxels, out, local);
     else
       stitchAdaptive(seam, edgeTree, s, options.intersectionFree, addVertex, faceVertices, out, local);
     ++(seam.kind == Seam::Kind::Face ? local.metaFaces : local.metaEdges);

@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <map>
 
+#include "isovdb/cell/contour_settings.h"
 #include "isovdb/contour/seam_cell.h"
 #include "isovdb/contour/voxel_dmc.h"
 #include "isovdb/mesh/mesh.h"
@@ -48,16 +49,6 @@ class SeamStore {
   std::size_t cells_ = 0;
 };
 
-/// Which per-edge routine closes the seams (the method the meta-cells used).
-enum class StitchMethod { Regular, Adaptive };
-
-struct StitchOptions {
-  StitchMethod method = StitchMethod::Regular;
-  int metaCellSize = 128;        ///< S of the partition
-  bool intersectionFree = true;  ///< adaptive: Ju–Udeshi fans (as the meta-cells)
-  contour::RegularTopology regularTopology = contour::RegularTopology::Voxels;  ///< regular: as the meta-cells
-};
-
 struct StitchStats {
   std::int64_t metaFaces = 0;     ///< meta-face seams contoured (both meta-cells present)
   std::int64_t metaEdges = 0;     ///< meta-edge seams contoured (all four present)
@@ -67,11 +58,14 @@ struct StitchStats {
   std::int64_t missingCells = 0;  ///< edges skipped because a cell around was not kept (must stay 0)
 };
 
-/// @brief Contours every seam of `store`.
+/// @brief Contours every seam of `store` with the per-edge routine of the method the
+///        meta-cells used (settings.method; regular: settings.topology; adaptive:
+///        settings.intersectionFree).
 /// @param store  the kept cells; adaptive vertices added here are recorded in them.
+/// @param metaCellSize  S of the partition.
 /// @param vertexBase  number of vertices already in the output: new vertices get ids from there.
 /// @param[out] out  new vertices (ids vertexBase + index) and every stitched triangle.
-void stitchSeams(SeamStore& store, const StitchOptions& options, std::uint32_t vertexBase, mesh::Mesh& out,
-                 StitchStats* stats = nullptr, Interrupter* interrupter = nullptr);
+void stitchSeams(SeamStore& store, const cell::ContourSettings& settings, int metaCellSize, std::uint32_t vertexBase,
+                 mesh::Mesh& out, StitchStats* stats = nullptr, Interrupter* interrupter = nullptr);
 
 }  // namespace isovdb::stitch

@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
+/// @file contour_settings.h
+/// @brief The one place the contouring settings live.
+///
+/// The octree's construction, a meta-cell's contouring and the stitching of its
+/// seams must read a cell the same way: the same isovalue, the same QEF, the
+/// same reading of ambiguous faces. Each used to keep its own copy of these
+/// fields, kept equal by comments. Now the pipeline fills one ContourSettings
+/// and every stage reads it. Each stage keeps only its own knobs in its own
+/// struct (octree::OctreeOptions: depths and refinement criteria).
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+namespace isovdb::cell {
+
+/// The contouring methods (`--method`).
+enum class ContourMethod {
+  Vdb,       ///< OpenVDB's tools::volumeToMesh, the reference (no octree)
+  Regular,   ///< octree, every surface cell at the finest depth + manifold Dual Marching Cubes
+  Adaptive,  ///< adaptive octree + dual contouring with Ju–Udeshi fans
+};
+
+/// "vdb", "regular", "adaptive".
+std::string_view contourMethodName(ContourMethod method);
+/// The method named `name`; std::nullopt for another name.
+std::optional<ContourMethod> parseContourMethod(std::string_view name);
+
+/// How regular mode reads a cell with an ambiguous face or a body-diagonal contact.
+enum class RegularTopology {
+  Voxels,  ///< the voxel object's (26, 6) topology: joined faces, split doubled faces, tubes (contour/voxel_dmc)
+  Mdmc,    ///< Wenger's Manifold DMC: faces separate the inside corners, doubled faces regrouped
+};
+
+/// "voxels", "mdmc".
+std::string_view regularTopologyName(RegularTopology topology);
+/// The reading named `name`; std::nullopt for another name.
+std::optional<RegularTopology> parseRegularTopology(std::string_view name);
+
+/// What the octree, the contouring and the stitching of one field share.
+struct ContourSettings {
+  ContourMethod method = ContourMethod::Adaptive;
+  /// Isovalue: inside iff value <= iso on distance fields (voxels; 0 = the surface).
+  /// The engine flips a scalar field so that this holds there too.
+  float iso = 0.0f;
+  /// QEF truncation, relative to the largest singular value: higher = smoother
+  /// vertices, lower = sharper features but less stable ones.
+  float singularValueThreshold = 0.1f;
+  /// Adaptive, exact distance fields: crossings beside a crease from the face they
+  /// lie on and rim leaves refined (cell/crease_crossing.h, octree/surface_gap.h).
+  bool sharpFeatures = false;
+  /// Wenger's fix on doubled ambiguous faces (regular voxels: split doubled faces);
+  /// off only in tests that show it matters.
+  bool manifoldFix = true;
+  /// Adaptive: Ju–Udeshi fans where the plain triangulation would leave its
+  /// envelope; off = plain dual contouring, for comparison.
+  bool intersectionFree = true;
+  /// Regular: the reading of ambiguous cells.
+  RegularTopology topology = RegularTopology::Voxels;
+};
+
+}  // namespace isovdb::cell

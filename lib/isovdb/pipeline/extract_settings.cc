@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
+#include "isovdb/pipeline/extract_settings.h"
+
+#include <algorithm>
+#include <sstream>
+
+#include "isovdb/errors.h"
+
+namespace isovdb::pipeline {
+
+namespace {
+
+std::string settingName(std::string_view name, bool keywords) {
+  return keywords ? keywordOf(name) : "--" + std::string(name);
+}
+
+}  // namespace
+
+std::string keywordOf(std::string_view name) {
+  std::string keyword(name);
+  std::replace(keyword.begin(), keyword.end(), '-', '_');
+  return keyword;
+}
+
+ExtractOptions ExtractChoices::resolve(bool keywords) const {
+  ExtractOptions result = options;
+  const auto method = parseContourMethod(this->method);
+  if (!method)
+    throw InputError(settingName("method", keywords) + ": unknown method '" + this->method +
+                     "', expected vdb, regular or adaptive");
+  result.contour.method = *method;
+  result.regularTopology.reset();
+  if (topology != "auto") {
+    result.regularTopology = parseRegularTopology(topology);
+    if (!result.regularTopology)
+      throw InputError(settingName("topology", keywords) + ": unknown reading '" + topology +
+                       "', expected auto, voxels or mdmc");
+  }
+  const auto mode = parseBoundaryMode(boundary);
+  if (!mode)
+    throw InputError(settingName("boundary", keywords) + ": unknown mode '" + boundary + "', expected cap or open");
+  result.boundary = *mode;
+  result.distance = DistanceChoices{options.distance, distance}.resolve(keywords);
+  return result;
+}
+
+volume::DistanceFieldOptions DistanceChoices::resolve(bool keywords) const {
+  volume::DistanceFieldOptions result = options;
+  const auto parsed = volume::parseDistanceMethod(method);
+  if (!parsed)
+    throw InputError(settingName("distance", keywords) + ": unknown method '" + method +
+                     "', expected interface or tracker");
+  result.method = *parsed;
+  return result;
+}
+
+std::vector<Setting> distanceSettings(volume::DistanceFieldOptions& o, std::string& method) {
+  return {
+      {"distance",
+       "Distance field of a mask. interface: sub-voxel distances at the mask's interface from a small Gaussian "
+       "blur, the band along the nearest interface voxel's tangent plane (fast; every sign the mask's). tracker: "
+       "OpenVDB's topologyToLevelSet + sdfToSdf (slow; for comparison)",
+       &method},
+      {"half-width", "Distance-field band half-width (voxels)", &o.halfWidth},
+      {"sdf-chunk",
+       "Distance field computed in cubes of this many voxels (multiple of 8; sdf writes each to the file as it "
+       "finishes); 0 = tracker: the whole band at once, in memory",
+       &o.chunkSize},
+      {"closing", "Morphological closing steps before the distance field (changes topology)", &o.closingSteps},
+  };
+}
+
+std::vector<Setting> extractSettings(ExtractChoices& c) {
+  ExtractOptions& o = c.options;
+  std::vector<Setting> result{
+      {"method",
+       "Contouring method: vdb (OpenVDB's volumeToMesh, the reference), regular (octree + manifold DMC: "
+       "closed, manifold), adaptive (adaptive octree + dual contouring with Ju-Udeshi fans: far fewer "
+       "triangles)",
+       &c.method},
+      {"iso",
+       "Isovalue: voxels on distance fields (0 = the mask boundary, > 0 grows the surface), field units on "
+       "scalars",
+       &o.contour.iso},
+      {"adaptivity", "vdb method: OpenVDB's adaptivity in [0, 1]", &o.adaptivity},
+      {"meta-cell",
+       "regular/adaptive: meta-cell size in voxels (power of two, 16..512; 0 = one block around the whole volume, no "
+       "stitching)",
+       &o.metaCellSize},
+      {"threads", "Worker threads (0 = every core); the output is the same", &o.threads},
+      {"min-level",
+       "regular/adaptive: uniform subdivision down to this depth under the meta-cell (-1: --max-cell-size decides)",
+       &o.octree.minDepth},
+      {"max-cell-size", "regular/adaptive: largest cell in voxels when --min-level is -1", &o.octree.maxCellSize},
+      {"max-level", "regular/adaptive: deepest level under the meta-cell (-1: --finest-size decides)",
+       &o.octree.maxDepth},
+      {"finest-size", "regular/adaptive: smallest cell in voxels (1, 2, 4, ...) when --max-level is -1",
+       &o.octree.finestCellSize},
+      {"qef-tolerance", "adaptive: split cells whose QEF residual (RMS, voxels) exceeds this; < 0 off",
+       &o.octree.qefTolerance},
+      {"intersection-free",
+       "adaptive: Ju-Udeshi fans where plain dual contouring would self-intersect (off: plain "
+       "DC, for comparison)",
+       &o.contour.intersectionFree, /*negatable=*/true},
+      {"sharp-features",
+       "adaptive: keep the sharp edges and corners of an exact distance field (e.g. a CAD level set .vdb). Off by "
+       "default: a field made from a voxel mask has a crease at every staircase step, and following them costs "
+       "35-50% more triangles",
+       &o.contour.sharpFeatures},
+      {"boundary",
+       "Surfaces reaching the data boundary (survey edge): cap (closed mesh, caps on the boundary) or open (caps "
+       "dropped, the mesh ends on the boundary)",
+       &c.boundary},
+      {"topology",
+       "regular: reading of ambiguous cells. voxels: the voxel object's topology (26-connected inside, 6-connected "
+       "outside; Euler characteristic 2x the mask's), mdmc: Wenger's manifold DMC, auto: voxels for masks, mdmc "
+       "for fields",
+       &c.topology},
+  };
+  // The distance settings after --adaptivity.
+  std::vector<Setting> fields = distanceSettings(o.distance, c.distance);
+  result.insert(result.begin() + 3, fields.begin(), fields.end());
+  return result;
+}
+
+std::string pythonDefault(const Setting& setting) {
+  std::ostringstream out;
+  std::visit(
+      [&out](auto* value) {
+        using T = std::remove_pointer_t<decltype(value)>;
+        if constexpr (std::is_same_v<T, bool>)
+          out << (*value ? "True" : "False");
+        else if constexpr (std::is_same_v<T, std::string>)
+          out << "'" << *value << "'";
+        else
+          out << *value;
+      },
+      setting.value);
+  return out.str();
+}
+
+}  // namespace isovdb::pipeline
