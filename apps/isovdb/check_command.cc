@@ -66,9 +66,7 @@ void addCheckCommand(CLI::App& app, Context& context) {
       ok = ok && matches;
     }
     stats["passed"] = ok;
-    stats.recordMemory();
-    if (!state->statsPath.empty()) stats.write(state->statsPath);
-    printStatistics(stats);
+    reportStatistics(stats, state->statsPath);
     context.exitCode = ok ? 0 : 1;
   });
 }

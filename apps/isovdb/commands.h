@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include <memory>
+#include <string>
 
 #include "isovdb/pipeline/statistics.h"
 #include "terminal_progress.h"
@@ -35,5 +36,10 @@ void addReservoirCommand(CLI::App& app, Context& context);
 
 /// Prints a statistics report as "section.key: value" lines on stdout.
 void printStatistics(const pipeline::Statistics& stats);
+
+/// The end of every subcommand: the peak memory recorded, the figures written to
+/// `statsPath` as JSON (when not empty) and printed on stdout (`--quiet` silences the
+/// progress on stderr, not the figures).
+void reportStatistics(pipeline::Statistics& stats, const std::string& statsPath);
 
 }  // namespace isovdb::cli

@@ -52,9 +52,7 @@ void addConvertCommand(CLI::App& app, Context& context) {
         stats["output"]["header"] = written.header.string();
       }
     }
-    stats.recordMemory();
-    if (!state->statsPath.empty()) stats.write(state->statsPath);
-    printStatistics(stats);
+    reportStatistics(stats, state->statsPath);
   });
 }
 

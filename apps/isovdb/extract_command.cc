@@ -70,9 +70,7 @@ void addExtractCommand(CLI::App& app, Context& context) {
                                                       report.manifold && report.selfIntersectingPairs <= 0);
       stats["passed"] = passed;
     }
-    stats.recordMemory();
-    if (!state->statsPath.empty()) stats.write(state->statsPath);
-    printStatistics(stats);
+    reportStatistics(stats, state->statsPath);
     // Like `isovdb check`: a mesh that fails the check is written, and the run exits 1.
     context.exitCode = passed ? 0 : 1;
   });

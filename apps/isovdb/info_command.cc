@@ -34,9 +34,7 @@ void addInfoCommand(CLI::App& app, Context& context) {
     pipeline::InputOptions options = state->flags.toOptions(state->input);
     options.sampleStatistics = !pipeline::isVdbPath(state->input);  // range, percentiles, active fraction
     pipeline::loadVolume(state->input, options, context.interrupter(), &stats);
-    stats.recordMemory();
-    if (!state->statsPath.empty()) stats.write(state->statsPath);
-    printStatistics(stats);
+    reportStatistics(stats, state->statsPath);
   });
 }
 

@@ -96,20 +96,12 @@ void addMorphCommand(CLI::App& app, Context& context) {
   state->flags.add(*command, /*rawSpacing=*/false);
   command->callback([state, &context] {
     pipeline::ExtractOptions extract;
-    const auto method = pipeline::parseContourMethod(state->method);
-    if (!method)
-      throw InputError("--method: unknown method '" + state->method + "', expected vdb, regular or adaptive");
-    extract.contour.method = *method;
+    extract.contour.method = parseNamed(cell::kContourMethodNames, state->method, "--method", "method");
     extract.threads = state->threads;
     morph::ReconstructOptions& options = state->options;
-    const auto interpolation = morph::parseInterpolation(state->interpolation);
-    if (!interpolation)
-      throw InputError("--interpolate: unknown '" + state->interpolation + "', expected levelset, nearest or linear");
-    options.pair.interpolation = *interpolation;
-    const auto progress = morph::parseProgress(state->progress);
-    if (!progress)
-      throw InputError("--progress: unknown '" + state->progress + "', expected exponential, arrival or iterations");
-    options.pair.progress = *progress;
+    options.pair.interpolation =
+        parseNamed(morph::kInterpolationNames, state->interpolation, "--interpolate", "interpolation");
+    options.pair.progress = parseNamed(morph::kProgressNames, state->progress, "--progress", "progress mode");
     options.pair.particles = state->pls;
     morph::checkReconstructOptions(options);
     if (!io::isMeshPath(state->output))
@@ -173,9 +165,7 @@ void addMorphCommand(CLI::App& app, Context& context) {
       pipeline::Statistics::StageTimer timer(&stats, "check");
       stats["check"] = pipeline::meshReportJson(mesh, {.selfIntersections = false});
     }
-    stats.recordMemory();
-    if (!state->statsPath.empty()) stats.write(state->statsPath);
-    printStatistics(stats);
+    reportStatistics(stats, state->statsPath);
   });
 }
 

@@ -47,9 +47,7 @@ void addOctreeCommand(CLI::App& app, Context& context) {
     const volume::Volume input =
         pipeline::loadVolume(state->input, state->flags.toOptions(state->input), context.interrupter(), &stats);
     pipeline::inspectOctree(input, options, stats, context.interrupter());
-    stats.recordMemory();
-    if (!state->statsPath.empty()) stats.write(state->statsPath);
-    printStatistics(stats);
+    reportStatistics(stats, state->statsPath);
   });
 }
 

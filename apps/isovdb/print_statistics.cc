@@ -24,4 +24,10 @@ void printValue(const std::string& key, const pipeline::Statistics::Json& value)
 
 void printStatistics(const pipeline::Statistics& stats) { printValue("", stats.json()); }
 
+void reportStatistics(pipeline::Statistics& stats, const std::string& statsPath) {
+  stats.recordMemory();
+  if (!statsPath.empty()) stats.write(statsPath);
+  printStatistics(stats);
+}
+
 }  // namespace isovdb::cli

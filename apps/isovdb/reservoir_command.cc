@@ -58,9 +58,7 @@ void addReservoirCommand(CLI::App& app, Context& context) {
     stats["output"]["path"] = state->output;
     stats["output"]["triangles"] = mesh.triangleCount();
     stats["output"]["vertices"] = mesh.vertexCount();
-    stats.recordMemory();
-    if (!state->statsPath.empty()) stats.write(state->statsPath);
-    if (!context.quiet) printStatistics(stats);
+    reportStatistics(stats, state->statsPath);
     context.exitCode = 0;
   });
 }

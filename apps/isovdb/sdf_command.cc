@@ -33,9 +33,7 @@ void addSdfCommand(CLI::App& app, Context& context) {
         pipeline::loadVolume(state->input, state->flags.toOptions(state->input), context.interrupter(), &stats);
     pipeline::writeDistanceFieldVdb(input, distance, state->output, state->gridName, context.interrupter(), &stats);
     stats["output"]["path"] = state->output;
-    stats.recordMemory();
-    if (!state->statsPath.empty()) stats.write(state->statsPath);
-    printStatistics(stats);
+    reportStatistics(stats, state->statsPath);
   });
 }
 

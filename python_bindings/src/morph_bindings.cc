@@ -45,14 +45,8 @@ PyVolume morphSlices(const py::object& slices, const std::optional<std::filesyst
                      bool pls, bool centring, bool areaMatch, double tolerance, int maxIterations, float halfWidth,
                      std::optional<int> threads, const py::object& progress) {
   morph::ReconstructOptions options;
-  const auto interpolation = morph::parseInterpolation(interpolate);
-  if (!interpolation)
-    throw InputError("interpolate: unknown '" + interpolate + "', expected levelset, nearest or linear");
-  options.pair.interpolation = *interpolation;
-  const auto mode = morph::parseProgress(progressMode);
-  if (!mode)
-    throw InputError("progress_mode: unknown '" + progressMode + "', expected exponential, arrival or iterations");
-  options.pair.progress = *mode;
+  options.pair.interpolation = parseNamed(morph::kInterpolationNames, interpolate, "interpolate", "interpolation");
+  options.pair.progress = parseNamed(morph::kProgressNames, progressMode, "progress_mode", "progress mode");
   options.pair.particles = pls;
   options.pair.centre = centring;
   options.pair.matchArea = areaMatch;

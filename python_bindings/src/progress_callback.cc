@@ -26,31 +26,30 @@ void CallbackProgress::end() {
 }
 
 bool CallbackProgress::wasInterrupted(int percent) {
-  const bool onCaller = std::this_thread::get_id() == caller_;
-  if (!callback_ && !onCaller) return false;
+  if (failed_ || !callback_) return failed_;
   std::lock_guard lock(mutex_);
-  if (failed_) return true;
-  py::gil_scoped_acquire gil;
-  if (onCaller && PyErr_CheckSignals() != 0) {
-    fail();
-    return true;
-  }
-  if (!callback_ || percent == lastPercent_) return false;
+  if (failed_ || percent == lastPercent_) return failed_;
   lastPercent_ = percent;
+  py::gil_scoped_acquire gil;
   try {
     callback_(stages_.empty() ? std::string("working") : stages_.back(), percent);
   } catch (py::error_already_set&) {
-    error_ = std::current_exception();
+    if (!error_) error_ = std::current_exception();
     failed_ = true;
   }
   return failed_;
+}
+
+void CallbackProgress::checkSignals() {
+  py::gil_scoped_acquire gil;
+  if (PyErr_CheckSignals() != 0) fail();
 }
 
 void CallbackProgress::fail() {
   try {
     throw py::error_already_set();  // takes the pending Python exception
   } catch (py::error_already_set&) {
-    error_ = std::current_exception();
+    if (!error_) error_ = std::current_exception();
   }
   failed_ = true;
 }

@@ -7,10 +7,12 @@
 
 #include <pybind11/pybind11.h>
 
+#include <atomic>
+#include <chrono>
 #include <exception>
+#include <future>
 #include <mutex>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "isovdb/progress.h"
@@ -21,14 +23,14 @@ namespace py = pybind11;
 
 /// Calls `callback(stage: str, percent: int)` whenever a stage's percentage changes
 /// (from any worker thread; the GIL is taken for the call, so calls are serialised).
-/// Calls made on the thread that created it (the Python caller's) also run Python's
-/// signal handlers, so Ctrl-C (a Jupyter "interrupt kernel") stops the work with
-/// KeyboardInterrupt. When the callback or a signal handler raises, every later
-/// wasInterrupted() answers true, the library throws Interrupted, and run() re-raises
-/// the Python exception instead.
+/// While the work runs (run()), the Python caller's thread waits and runs Python's
+/// signal handlers every 50 ms, so Ctrl-C (a Jupyter "interrupt kernel") stops the
+/// work with KeyboardInterrupt whichever thread the work is on. When the callback or a
+/// signal handler raises, every later wasInterrupted() answers true, the library
+/// throws Interrupted, and run() re-raises the Python exception instead.
 class CallbackProgress final : public Interrupter {
  public:
-  /// `callback` None: reports nothing, never interrupts.
+  /// `callback` None: reports nothing; only a signal interrupts.
   explicit CallbackProgress(py::object callback);
   ~CallbackProgress() override;
 
@@ -36,32 +38,48 @@ class CallbackProgress final : public Interrupter {
   void end() override;
   bool wasInterrupted(int percent) override;
 
-  /// Runs `work` with the GIL released. Re-raises the callback's exception when it
-  /// raised (whether or not the work stopped because of it).
+  /// Runs `work` on a worker thread with the GIL released, the caller's thread
+  /// watching for signals. Re-raises the callback's or the signal handler's exception
+  /// when one raised (whether or not the work stopped because of it).
   template <typename Work>
   void run(Work&& work) {
-    try {
+    std::exception_ptr workError;
+    {
       py::gil_scoped_release release;
-      work();
-    } catch (const Interrupted&) {
-      rethrowCallbackError();
-      throw;
+      auto done = std::async(std::launch::async, [&] {
+        try {
+          work();
+        } catch (...) {
+          workError = std::current_exception();
+        }
+      });
+      while (done.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready) checkSignals();
+    }
+    if (workError) {
+      try {
+        std::rethrow_exception(workError);
+      } catch (const Interrupted&) {
+        rethrowCallbackError();
+        throw;
+      }
     }
     rethrowCallbackError();
   }
 
  private:
+  /// Runs Python's signal handlers (with the GIL); a raising handler interrupts the work.
+  void checkSignals();
   void rethrowCallbackError();
-  /// Records the Python exception being raised and answers true from now on.
+  /// Records the Python exception being raised (the first one wins) and answers true
+  /// from now on. @pre the GIL is held.
   void fail();
 
   py::object callback_;
-  std::thread::id caller_ = std::this_thread::get_id();
-  std::mutex mutex_;
+  std::mutex mutex_;  ///< stages_, lastPercent_ (taken before the GIL, never after)
   std::vector<std::string> stages_;
   int lastPercent_ = -2;
-  bool failed_ = false;
-  std::exception_ptr error_;
+  std::atomic<bool> failed_{false};
+  std::exception_ptr error_;  ///< written with the GIL held
 };
 
 }  // namespace isovdb::python

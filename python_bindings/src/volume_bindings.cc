@@ -193,7 +193,7 @@ py::object distanceField(const PyVolume& source, const py::dict& settings, const
   PyVolume result;
   callback.run([&] { result.volume = volume::distanceField(source.volume, options, &callback); });
   result.input = source.input;
-  result.input["distance_field"] = {{"method", volume::distanceMethodName(options.method)},
+  result.input["distance_field"] = {{"method", std::string(volume::distanceMethodName(options.method))},
                                     {"half_width", options.halfWidth},
                                     {"closing", options.closingSteps}};
   return py::cast(std::move(result));

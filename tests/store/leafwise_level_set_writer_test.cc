@@ -63,7 +63,7 @@ void expectSameTree(const openvdb::FloatGrid& expected, const openvdb::FloatGrid
 /// through writeVdb, and the chunks streamed through LeafwiseLevelSetWriter.
 void expectStreamedEqualsInMemory(const Volume& mask, int chunk, const std::string& what,
                                   volume::DistanceMethod method = volume::DistanceMethod::Interface) {
-  SCOPED_TRACE(what + " (" + volume::distanceMethodName(method) + ")");
+  SCOPED_TRACE(what + " (" + std::string(volume::distanceMethodName(method)) + ")");
   test::TempDir dir;
   const volume::DistanceFieldOptions options{.method = method, .halfWidth = 3, .chunkSize = chunk};
   writeVdb(dir / "memory.vdb", volume::distanceField(mask, options), {.gridName = "band"});

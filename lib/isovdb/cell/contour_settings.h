@@ -14,6 +14,8 @@
 #include <optional>
 #include <string_view>
 
+#include "isovdb/named_values.h"
+
 namespace isovdb::cell {
 
 /// The contouring methods (`--method`).
@@ -23,10 +25,13 @@ enum class ContourMethod {
   Adaptive,  ///< adaptive octree + dual contouring with Ju–Udeshi fans
 };
 
-/// "vdb", "regular", "adaptive".
-std::string_view contourMethodName(ContourMethod method);
+inline constexpr NameTable<ContourMethod, 3> kContourMethodNames{
+    {{ContourMethod::Vdb, "vdb"}, {ContourMethod::Regular, "regular"}, {ContourMethod::Adaptive, "adaptive"}}};
+constexpr std::string_view contourMethodName(ContourMethod method) { return nameOf(kContourMethodNames, method); }
 /// The method named `name`; std::nullopt for another name.
-std::optional<ContourMethod> parseContourMethod(std::string_view name);
+constexpr std::optional<ContourMethod> parseContourMethod(std::string_view name) {
+  return valueNamed(kContourMethodNames, name);
+}
 
 /// How regular mode reads a cell with an ambiguous face or a body-diagonal contact.
 enum class RegularTopology {
@@ -34,10 +39,15 @@ enum class RegularTopology {
   Mdmc,    ///< Wenger's Manifold DMC: faces separate the inside corners, doubled faces regrouped
 };
 
-/// "voxels", "mdmc".
-std::string_view regularTopologyName(RegularTopology topology);
+inline constexpr NameTable<RegularTopology, 2> kRegularTopologyNames{
+    {{RegularTopology::Voxels, "voxels"}, {RegularTopology::Mdmc, "mdmc"}}};
+constexpr std::string_view regularTopologyName(RegularTopology topology) {
+  return nameOf(kRegularTopologyNames, topology);
+}
 /// The reading named `name`; std::nullopt for another name.
-std::optional<RegularTopology> parseRegularTopology(std::string_view name);
+constexpr std::optional<RegularTopology> parseRegularTopology(std::string_view name) {
+  return valueNamed(kRegularTopologyNames, name);
+}
 
 /// What the octree, the contouring and the stitching of one field share.
 struct ContourSettings {

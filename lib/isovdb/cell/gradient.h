@@ -12,10 +12,11 @@
 #include <array>
 
 #include "isovdb/cell/meta_cell_samples.h"
+#include "isovdb/vec3.h"
 
 namespace isovdb::cell {
 
-using Vec3f = std::array<float, 3>;
+using isovdb::Vec3f;
 
 /// @brief Prewitt gradient at sample offset (i, j, k).
 /// @pre i, j, k in [0, S] (the apron supplies the outer neighbours).

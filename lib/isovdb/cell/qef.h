@@ -15,9 +15,11 @@
 #include <array>
 #include <span>
 
+#include "isovdb/vec3.h"
+
 namespace isovdb::cell {
 
-using Vec3f = std::array<float, 3>;
+using isovdb::Vec3f;
 
 /// Options of solveQef.
 struct QefOptions {

@@ -37,10 +37,12 @@
 #include <cstdint>
 #include <vector>
 
+#include "isovdb/vec3.h"
+
 namespace isovdb::contour {
 
 /// Double-precision point / vector.
-using Vec3d = std::array<double, 3>;
+using isovdb::Vec3d;
 
 /// Cells, faces and edge of one sign-changing minimal edge, in cyclic order.
 struct EdgeEnvelope {

@@ -14,7 +14,7 @@
 
 #include "isovdb/errors.h"
 #include "isovdb/io/atomic_file.h"
-#include "isovdb/io/mesh_write_check.h"
+#include "isovdb/mesh/mesh_checks.h"
 
 namespace isovdb::io {
 
@@ -26,8 +26,7 @@ constexpr std::size_t kLinesPerBlock = 1 << 15;
 constexpr std::size_t kBlocksPerBatch = 16;
 
 void checkMesh(const std::filesystem::path& path, const Mesh& mesh) {
-  detail::checkNormalCount(path, mesh);
-  detail::checkTriangleIndices(path, mesh);
+  mesh::detail::checkIndices(mesh, "cannot write '" + path.string() + "'");
 }
 
 /// Appends numbers to a string through std::to_chars.

@@ -19,7 +19,7 @@
 #include "isovdb/errors.h"
 #include "isovdb/io/atomic_file.h"
 #include "isovdb/io/little_endian.h"
-#include "isovdb/io/mesh_write_check.h"
+#include "isovdb/mesh/mesh_checks.h"
 #include "isovdb/io/sample_type.h"
 
 namespace isovdb::io {
@@ -34,10 +34,9 @@ constexpr bool kNativeLittle = std::endian::native == std::endian::little;
 // Writing
 
 void checkMesh(const std::filesystem::path& path, const Mesh& mesh) {
-  detail::checkNormalCount(path, mesh);
   if (mesh.positions.size() > std::numeric_limits<std::uint32_t>::max())
     throw InputError("cannot write '" + path.string() + "': more than 2^32 - 1 vertices");
-  detail::checkTriangleIndices(path, mesh);
+  mesh::detail::checkIndices(mesh, "cannot write '" + path.string() + "'");
 }
 
 /// Collects little-endian bytes and hands them to the file in large blocks.

@@ -12,9 +12,11 @@
 #include <cstdint>
 #include <vector>
 
+#include "isovdb/vec3.h"
+
 namespace isovdb::mesh {
 
-using Vec3f = std::array<float, 3>;
+using isovdb::Vec3f;
 using Triangle = std::array<std::uint32_t, 3>;
 
 /// Indexed triangle mesh: float positions, 32-bit indices, optional per-vertex normals.

@@ -19,6 +19,18 @@ bool invalidTriangle(const Mesh& mesh, const Triangle& tri) {
   return false;
 }
 
+void checkIndices(const Mesh& mesh, std::string_view caller) {
+  const std::size_t n = mesh.positions.size();
+  if (!mesh.normals.empty() && mesh.normals.size() != n)
+    throw InputError(std::string(caller) + ": the mesh has " + std::to_string(mesh.normals.size()) + " normals for " +
+                     std::to_string(n) + " vertices (expected none or one per vertex)");
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
+    for (const std::uint32_t v : mesh.triangles[t])
+      if (v >= n)
+        throw InputError(std::string(caller) + ": triangle " + std::to_string(t) + " references vertex " +
+                         std::to_string(v) + " but the mesh has " + std::to_string(n) + " vertices");
+}
+
 void keepLowest(std::atomic<std::size_t>& lowest, std::size_t t) {
   std::size_t seen = lowest.load();
   while (t < seen && !lowest.compare_exchange_weak(seen, t)) {

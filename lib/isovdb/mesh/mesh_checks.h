@@ -17,6 +17,13 @@ namespace isovdb::mesh::detail {
 /// has a non-finite coordinate.
 bool invalidTriangle(const Mesh& mesh, const Triangle& tri);
 
+/// Checks that `mesh` has no normals or one per vertex and that every triangle
+/// references one of its vertices: what the writers and the welder need before they
+/// touch the arrays.
+/// @param caller prefixes the message (`weldVertices`, `cannot write 'out.ply'`).
+/// @throw InputError naming both counts, or the first bad triangle and its vertex.
+void checkIndices(const Mesh& mesh, std::string_view caller);
+
 /// Lowers `lowest` to `t` when `t` is smaller; safe to call from many threads.
 void keepLowest(std::atomic<std::size_t>& lowest, std::size_t t);
 

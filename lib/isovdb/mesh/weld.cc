@@ -12,6 +12,7 @@
 #include <tbb/parallel_for.h>
 
 #include "isovdb/errors.h"
+#include "isovdb/mesh/mesh_checks.h"
 
 namespace isovdb::mesh {
 
@@ -37,22 +38,10 @@ std::uint64_t hashBits(const PositionBits& b) {
   return h;
 }
 
-void checkMesh(const Mesh& mesh) {
-  if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size())
-    throw InputError("weldVertices: the mesh has " + std::to_string(mesh.normals.size()) + " normals for " +
-                     std::to_string(mesh.positions.size()) + " vertices (expected none or one per vertex)");
-  const std::size_t n = mesh.positions.size();
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    for (const std::uint32_t v : mesh.triangles[t])
-      if (v >= n)
-        throw InputError("weldVertices: triangle " + std::to_string(t) + " references vertex " + std::to_string(v) +
-                         " but the mesh has " + std::to_string(n) + " vertices");
-}
-
 }  // namespace
 
 std::size_t weldVertices(Mesh& mesh) {
-  checkMesh(mesh);
+  detail::checkIndices(mesh, "weldVertices");
   const std::size_t n = mesh.positions.size();
   if (n == 0) return 0;
 

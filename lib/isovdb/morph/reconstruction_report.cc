@@ -8,44 +8,6 @@
 
 namespace isovdb::morph {
 
-std::optional<Interpolation> parseInterpolation(std::string_view name) {
-  if (name == "levelset") return Interpolation::LevelSet;
-  if (name == "nearest") return Interpolation::Nearest;
-  if (name == "linear") return Interpolation::Linear;
-  return std::nullopt;
-}
-
-std::string_view interpolationName(Interpolation interpolation) {
-  switch (interpolation) {
-    case Interpolation::LevelSet:
-      return "levelset";
-    case Interpolation::Nearest:
-      return "nearest";
-    case Interpolation::Linear:
-      return "linear";
-  }
-  return "?";
-}
-
-std::optional<Progress> parseProgress(std::string_view name) {
-  if (name == "exponential") return Progress::Exponential;
-  if (name == "arrival") return Progress::Arrival;
-  if (name == "iterations") return Progress::Iterations;
-  return std::nullopt;
-}
-
-std::string_view progressName(Progress progress) {
-  switch (progress) {
-    case Progress::Exponential:
-      return "exponential";
-    case Progress::Arrival:
-      return "arrival";
-    case Progress::Iterations:
-      return "iterations";
-  }
-  return "?";
-}
-
 void checkReconstructOptions(const ReconstructOptions& options) {
   if (options.pair.particles && options.pair.interpolation != Interpolation::LevelSet)
     throw InputError("pls: the particle level set needs the levelset interpolation");

@@ -12,16 +12,23 @@
 #include <string_view>
 
 #include "isovdb/morph/reconstruct.h"
+#include "isovdb/named_values.h"
 
 namespace isovdb::morph {
 
-/// "levelset", "nearest", "linear".
-std::optional<Interpolation> parseInterpolation(std::string_view name);
-std::string_view interpolationName(Interpolation interpolation);
+inline constexpr NameTable<Interpolation, 3> kInterpolationNames{
+    {{Interpolation::LevelSet, "levelset"}, {Interpolation::Nearest, "nearest"}, {Interpolation::Linear, "linear"}}};
+constexpr std::optional<Interpolation> parseInterpolation(std::string_view name) {
+  return valueNamed(kInterpolationNames, name);
+}
+constexpr std::string_view interpolationName(Interpolation interpolation) {
+  return nameOf(kInterpolationNames, interpolation);
+}
 
-/// "exponential", "arrival", "iterations".
-std::optional<Progress> parseProgress(std::string_view name);
-std::string_view progressName(Progress progress);
+inline constexpr NameTable<Progress, 3> kProgressNames{
+    {{Progress::Exponential, "exponential"}, {Progress::Arrival, "arrival"}, {Progress::Iterations, "iterations"}}};
+constexpr std::optional<Progress> parseProgress(std::string_view name) { return valueNamed(kProgressNames, name); }
+constexpr std::string_view progressName(Progress progress) { return nameOf(kProgressNames, progress); }
 
 /// @brief Checks what the options' front ends cannot: particles need the level-set
 ///        interpolation, a positive tolerance, at least one iteration.

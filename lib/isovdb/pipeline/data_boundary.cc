@@ -45,14 +45,6 @@ void removeUnusedVertices(mesh::Mesh& mesh) {
 
 }  // namespace
 
-std::optional<BoundaryMode> parseBoundaryMode(std::string_view name) {
-  if (name == "cap") return BoundaryMode::Cap;
-  if (name == "open") return BoundaryMode::Open;
-  return std::nullopt;
-}
-
-std::string_view boundaryModeName(BoundaryMode mode) { return mode == BoundaryMode::Cap ? "cap" : "open"; }
-
 std::int64_t applyDataBoundary(mesh::Mesh& mesh, const volume::IndexBox& box, BoundaryMode mode) {
   for (mesh::Vec3f& p : mesh.positions)
     for (int a = 0; a < 3; ++a) p[a] = std::clamp(p[a], static_cast<float>(box.min[a]), static_cast<float>(box.max[a]));

@@ -22,6 +22,7 @@
 #include <string_view>
 
 #include "isovdb/mesh/mesh.h"
+#include "isovdb/named_values.h"
 #include "isovdb/mesh/mesh_sink.h"
 #include "isovdb/volume/sampled_box.h"
 
@@ -32,9 +33,13 @@ enum class BoundaryMode {
   Open,  ///< caps dropped: the mesh ends on the data boundary
 };
 
-/// "cap" or "open"; std::nullopt otherwise.
-std::optional<BoundaryMode> parseBoundaryMode(std::string_view name);
-std::string_view boundaryModeName(BoundaryMode mode);
+inline constexpr NameTable<BoundaryMode, 2> kBoundaryModeNames{
+    {{BoundaryMode::Cap, "cap"}, {BoundaryMode::Open, "open"}}};
+constexpr std::string_view boundaryModeName(BoundaryMode mode) { return nameOf(kBoundaryModeNames, mode); }
+/// The mode named `name`; std::nullopt for another name.
+constexpr std::optional<BoundaryMode> parseBoundaryMode(std::string_view name) {
+  return valueNamed(kBoundaryModeNames, name);
+}
 
 /// Applies `mode` to a mesh in index space (before indexToWorld). Normals of moved
 /// vertices are kept. Returns the number of triangles dropped (0 for Cap).

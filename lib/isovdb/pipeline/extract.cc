@@ -32,7 +32,7 @@ volume::Volume toContourable(const volume::Volume& volume, const volume::Distanc
   }
   if (stats) {
     Statistics::Json section = Statistics::Json::object();
-    section["method"] = volume::distanceMethodName(options.method);
+    section["method"] = std::string(volume::distanceMethodName(options.method));
     section["half_width_voxels"] = options.halfWidth;
     section["closing_steps"] = options.closingSteps;
     recordGridStats(sdf, section);

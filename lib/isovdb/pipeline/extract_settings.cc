@@ -25,33 +25,22 @@ std::string keywordOf(std::string_view name) {
 
 ExtractOptions ExtractChoices::resolve(bool keywords) const {
   ExtractOptions result = options;
-  const auto method = parseContourMethod(this->method);
-  if (!method)
-    throw InputError(settingName("method", keywords) + ": unknown method '" + this->method +
-                     "', expected vdb, regular or adaptive");
-  result.contour.method = *method;
+  result.contour.method = parseNamed(cell::kContourMethodNames, method, settingName("method", keywords), "method");
   result.regularTopology.reset();
   if (topology != "auto") {
     result.regularTopology = parseRegularTopology(topology);
     if (!result.regularTopology)
-      throw InputError(settingName("topology", keywords) + ": unknown reading '" + topology +
-                       "', expected auto, voxels or mdmc");
+      throw InputError(settingName("topology", keywords) + ": unknown reading '" + topology + "', expected auto, " +
+                       nameList(cell::kRegularTopologyNames));
   }
-  const auto mode = parseBoundaryMode(boundary);
-  if (!mode)
-    throw InputError(settingName("boundary", keywords) + ": unknown mode '" + boundary + "', expected cap or open");
-  result.boundary = *mode;
+  result.boundary = parseNamed(kBoundaryModeNames, boundary, settingName("boundary", keywords), "mode");
   result.distance = DistanceChoices{options.distance, distance}.resolve(keywords);
   return result;
 }
 
 volume::DistanceFieldOptions DistanceChoices::resolve(bool keywords) const {
   volume::DistanceFieldOptions result = options;
-  const auto parsed = volume::parseDistanceMethod(method);
-  if (!parsed)
-    throw InputError(settingName("distance", keywords) + ": unknown method '" + method +
-                     "', expected interface or tracker");
-  result.method = *parsed;
+  result.method = parseNamed(volume::kDistanceMethodNames, method, settingName("distance", keywords), "method");
   return result;
 }
 

@@ -24,7 +24,7 @@ struct ExtractChoices {
   std::string method = std::string(contourMethodName(ExtractOptions{}.contour.method));
   std::string topology = "auto";  ///< auto | voxels | mdmc
   std::string boundary = std::string(boundaryModeName(ExtractOptions{}.boundary));
-  std::string distance = volume::distanceMethodName(ExtractOptions{}.distance.method);
+  std::string distance = std::string(volume::distanceMethodName(ExtractOptions{}.distance.method));
 
   /// The options with the named settings parsed.
   /// @param keywords true: messages name Python keywords (`method`), false: CLI flags (`--method`).
@@ -35,7 +35,7 @@ struct ExtractChoices {
 /// What a user chose for the distance field of a mask (`isovdb sdf`, Python distance_field()).
 struct DistanceChoices {
   volume::DistanceFieldOptions options;
-  std::string method = volume::distanceMethodName(volume::DistanceFieldOptions{}.method);
+  std::string method = std::string(volume::distanceMethodName(volume::DistanceFieldOptions{}.method));
 
   /// @throw InputError naming the setting (flag or keyword) and the accepted values.
   volume::DistanceFieldOptions resolve(bool keywords = false) const;

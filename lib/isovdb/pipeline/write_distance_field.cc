@@ -35,7 +35,7 @@ void writeDistanceFieldVdb(const volume::Volume& volume, const volume::DistanceF
   }
   if (!stats) return;
   Statistics::Json section = Statistics::Json::object();
-  section["method"] = volume::distanceMethodName(options.method);
+  section["method"] = std::string(volume::distanceMethodName(options.method));
   section["half_width_voxels"] = options.halfWidth;
   section["closing_steps"] = options.closingSteps;
   section["kind"] = std::string(volume::volumeKindName(volume::VolumeKind::DistanceField));

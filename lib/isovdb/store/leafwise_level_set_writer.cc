@@ -275,6 +275,7 @@ class SpilledLevelSetGrid : public openvdb::FloatGrid {
 /// this writes the same sequence with the table made from the leaf records.
 class SingleLevelSetArchive : public openvdb::io::Archive {
  public:
+  using openvdb::io::Archive::write;  // the overloads for grids in memory stay visible
   void write(std::ostream& os, const SpilledLevelSetGrid& grid, const openvdb::MetaMap& gridMetadata) const {
     auto fileMetadata = std::make_shared<openvdb::io::StreamMetadata>();
     openvdb::io::setStreamMetadataPtr(os, fileMetadata, /*transfer=*/false);

@@ -12,16 +12,6 @@
 
 namespace isovdb::volume {
 
-const char* distanceMethodName(DistanceMethod method) {
-  return method == DistanceMethod::Interface ? "interface" : "tracker";
-}
-
-std::optional<DistanceMethod> parseDistanceMethod(std::string_view name) {
-  if (name == "interface") return DistanceMethod::Interface;
-  if (name == "tracker") return DistanceMethod::Tracker;
-  return std::nullopt;
-}
-
 void checkDistanceFieldOptions(const DistanceFieldOptions& options) {
   if (options.halfWidth < 1 || options.halfWidth > 64)
     throw InputError("distance field: half-width " + std::to_string(options.halfWidth) +

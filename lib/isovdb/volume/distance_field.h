@@ -12,6 +12,7 @@
 #include <optional>
 #include <string_view>
 
+#include "isovdb/named_values.h"
 #include "isovdb/progress.h"
 #include "isovdb/volume/volume.h"
 
@@ -28,10 +29,13 @@ enum class DistanceMethod {
   Tracker,
 };
 
-/// "interface" | "tracker".
-const char* distanceMethodName(DistanceMethod method);
-/// The method named `name` ("interface", "tracker"); std::nullopt for another name.
-std::optional<DistanceMethod> parseDistanceMethod(std::string_view name);
+inline constexpr NameTable<DistanceMethod, 2> kDistanceMethodNames{
+    {{DistanceMethod::Interface, "interface"}, {DistanceMethod::Tracker, "tracker"}}};
+constexpr std::string_view distanceMethodName(DistanceMethod method) { return nameOf(kDistanceMethodNames, method); }
+/// The method named `name`; std::nullopt for another name.
+constexpr std::optional<DistanceMethod> parseDistanceMethod(std::string_view name) {
+  return valueNamed(kDistanceMethodNames, name);
+}
 
 struct DistanceFieldOptions {
   DistanceMethod method = DistanceMethod::Interface;

@@ -422,30 +422,30 @@ class ChunkBand {
     s.planes.resize(s.planes.size() + kLeaf * kLeaf * kLeaf);
     SitePlane* planes = &s.planes[at.planes];
     // Separable blur over the sites' bounding box and one voxel around it
-    // (blurred index b <-> slot voxel b - 1 <-> window index b + off).
-    constexpr int R = kBlurRadius, off = St - 1;
+    // (blurred index b <-> slot voxel b - 1 <-> window index b + kOff).
+    constexpr int R = kBlurRadius, kOff = St - 1;
     const int bLo[3] = {at.siteLo[0], at.siteLo[1], at.siteLo[2]};  // slot voxel lo - 1, + 1
     const int bHi[3] = {at.siteHi[0] + 3, at.siteHi[1] + 3, at.siteHi[2] + 3};
-    const int wLo[3] = {bLo[0] + off - R, bLo[1] + off - R, bLo[2] + off - R};
-    const int wHi[3] = {bHi[0] + off + R, bHi[1] + off + R, bHi[2] + off + R};
+    const int wLo[3] = {bLo[0] + kOff - R, bLo[1] + kOff - R, bLo[2] + kOff - R};
+    const int wHi[3] = {bHi[0] + kOff + R, bHi[1] + kOff + R, bHi[2] + kOff + R};
     for (int i = wLo[0]; i < wHi[0]; ++i)
       for (int j = wLo[1]; j < wHi[1]; ++j) {
         const std::uint32_t row = s.rows[static_cast<std::size_t>(i * W + j)];
-        for (int k = bLo[2]; k < bHi[2]; ++k)  // window voxels k + off - R .. k + off + R
-          s.blurZ[(i * W + j) * S + k] = rowBlur_[(row >> (k + off - R)) & ((1u << (2 * R + 1)) - 1)];
+        for (int k = bLo[2]; k < bHi[2]; ++k)  // window voxels k + kOff - R .. k + kOff + R
+          s.blurZ[(i * W + j) * S + k] = rowBlur_[(row >> (k + kOff - R)) & ((1u << (2 * R + 1)) - 1)];
       }
     for (int i = wLo[0]; i < wHi[0]; ++i)
       for (int j = bLo[1]; j < bHi[1]; ++j)
         for (int k = bLo[2]; k < bHi[2]; ++k) {
           float sum = 0.f;
-          for (int t = -R; t <= R; ++t) sum += weights_[t + R] * s.blurZ[(i * W + j + off + t) * S + k];
+          for (int t = -R; t <= R; ++t) sum += weights_[t + R] * s.blurZ[(i * W + j + kOff + t) * S + k];
           s.blurYZ[(i * S + j) * S + k] = sum;
         }
     for (int i = bLo[0]; i < bHi[0]; ++i)
       for (int j = bLo[1]; j < bHi[1]; ++j)
         for (int k = bLo[2]; k < bHi[2]; ++k) {
           float sum = 0.f;
-          for (int t = -R; t <= R; ++t) sum += weights_[t + R] * s.blurYZ[((i + off + t) * S + j) * S + k];
+          for (int t = -R; t <= R; ++t) sum += weights_[t + R] * s.blurYZ[((i + kOff + t) * S + j) * S + k];
           s.blurred[(i * S + j) * S + k] = sum;
         }
     auto blurredAt = [&s](int i, int j, int k) { return s.blurred[((i + 1) * S + j + 1) * S + k + 1]; };

@@ -8,18 +8,6 @@
 
 namespace isovdb::volume {
 
-std::string_view volumeKindName(VolumeKind kind) {
-  switch (kind) {
-    case VolumeKind::Mask:
-      return "mask";
-    case VolumeKind::Scalar:
-      return "scalar";
-    case VolumeKind::DistanceField:
-      return "distance field";
-  }
-  return "unknown";
-}
-
 Volume::Volume(VolumeKind kind, std::shared_ptr<openvdb::GridBase> grid, Geometry geometry, std::string name)
     : kind_(kind), grid_(std::move(grid)), geometry_(geometry), name_(std::move(name)) {}
 

@@ -20,6 +20,8 @@
 
 #include <openvdb/version.h>
 
+#include "isovdb/named_values.h"
+
 namespace openvdb {
 OPENVDB_USE_VERSION_NAMESPACE
 namespace OPENVDB_VERSION_NAME {
@@ -36,7 +38,9 @@ enum class VolumeKind {
   DistanceField,  ///< openvdb::FloatGrid, GRID_LEVEL_SET: narrow-band signed distance in voxels
 };
 
-std::string_view volumeKindName(VolumeKind kind);
+inline constexpr NameTable<VolumeKind, 3> kVolumeKindNames{
+    {{VolumeKind::Mask, "mask"}, {VolumeKind::Scalar, "scalar"}, {VolumeKind::DistanceField, "distance field"}}};
+constexpr std::string_view volumeKindName(VolumeKind kind) { return nameOf(kVolumeKindNames, kind); }
 
 /// Axis-aligned index-to-world map: world = origin + spacing * index.
 struct Geometry {
