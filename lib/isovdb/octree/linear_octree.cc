@@ -23,6 +23,18 @@ LinearOctree::LinearOctree(int metaCellSize, std::array<int, 3> metaCellOrigin, 
               [fd](const OctreeLeaf& a, const OctreeLeaf& b) { return zOrderCode(a.key, fd) < zOrderCode(b.key, fd); });
     for (std::size_t i = 0; i < leaves_.size(); ++i) codes_[i] = zOrderCode(leaves_[i].key, fd);
   }
+  // About one bucket per leaf, at most one per finest cell.
+  const int codeBits = 3 * fd;
+  int bucketBits = 0;
+  while (bucketBits < codeBits && (std::size_t{1} << bucketBits) < leaves_.size()) ++bucketBits;
+  bucketShift_ = codeBits - bucketBits;
+  const std::size_t buckets = std::size_t{1} << bucketBits;
+  bucketStart_.assign(buckets + 1, 0);
+  std::size_t i = 0;
+  for (std::size_t b = 0; b <= buckets; ++b) {
+    while (i < codes_.size() && (codes_[i] >> bucketShift_) < b) ++i;
+    bucketStart_[b] = static_cast<std::uint32_t>(i);
+  }
 #ifndef NDEBUG
   std::uint64_t volume = 0;
   for (const auto& l : leaves_) volume += std::uint64_t{1} << (3 * (fd - l.depth));
@@ -35,7 +47,10 @@ std::int64_t LinearOctree::findLeafContainingVoxel(std::array<int, 3> voxel) con
     if (voxel[a] < 0 || voxel[a] >= size_) return kNone;
   if (codes_.empty()) return kNone;
   const std::uint64_t code = zOrderCode(encodeKey(finestDepth_, voxel), finestDepth_);
-  const auto it = std::upper_bound(codes_.begin(), codes_.end(), code);
+  // Codes of earlier buckets are smaller, of later ones larger: the bound is in this bucket.
+  const std::size_t bucket = code >> bucketShift_;
+  const auto it =
+      std::upper_bound(codes_.begin() + bucketStart_[bucket], codes_.begin() + bucketStart_[bucket + 1], code);
   if (it == codes_.begin()) return kNone;
   const std::int64_t index = (it - codes_.begin()) - 1;
   const OctreeLeaf& l = leaves_[static_cast<std::size_t>(index)];

@@ -111,6 +111,11 @@ class LinearOctree {
   std::array<int, 3> origin_{0, 0, 0};
   std::vector<OctreeLeaf> leaves_;
   std::vector<std::uint64_t> codes_;  // zOrderCode of each leaf at finestDepth_, ascending
+  // The first leaf whose code >> bucketShift_ is at least b, for every b (and one past
+  // the end): a lookup binary-searches one bucket (about one leaf) instead of all
+  // leaves, which was a tenth of regular contouring's time.
+  std::vector<std::uint32_t> bucketStart_;
+  int bucketShift_ = 0;
 };
 
 }  // namespace isovdb::octree
