@@ -112,12 +112,7 @@ MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const
   for (std::size_t i = 0; i < leafCount; ++i) {
     if (!isSeam[i]) continue;
     const octree::OctreeLeaf& leaf = tree.leaf(i);
-    SeamCell cell;
-    cell.key = leaf.key;
-    for (int a = 0; a < 3; ++a) cell.origin[a] = samples.origin[a] + leaf.origin[a];
-    cell.size = leaf.size;
-    cell.cornerSigns = leaf.cornerSigns;
-    cell.alternative = groups.alternative[i] != 0;
+    SeamCell cell = seamCellOf(leaf, samples.origin, groups.alternative[i] != 0);
     for (std::size_t g = 0; g < groups.vertexCount(i); ++g) {
       cell.vertices[g] = meshVertex[groups.firstVertex[i] + g];
       const Vec3d& p = cellPoints[groups.firstVertex[i] + g];  // float-exact (cellPointInside)

@@ -159,17 +159,15 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
             voxelEdgeTriangles(cells, axis, triangles);
             continue;
           }
-          std::array<std::uint32_t, 4> v{};
-          std::array<mesh::Vec3f, 4> p{};
-          for (int q = 0; q < 4; ++q) {
-            const auto j = static_cast<std::size_t>(around[static_cast<std::size_t>(q)]);
-            const int g = cell::dmcVertexOfEdge(config[j], alternative[j] != 0, axis, q);
-            assert(g >= 0);
-            v[static_cast<std::size_t>(q)] = vertexBase[j] + static_cast<std::uint32_t>(g);
-            p[static_cast<std::size_t>(q)] = out.positions[v[static_cast<std::size_t>(q)]];
-          }
-          const auto tris = regularEdgeQuad(v, p, axis, (config[i] & 1) != 0);
-          triangles.insert(triangles.end(), tris.begin(), tris.end());
+          appendRegularEdgeQuad(
+              [&](int q) -> std::optional<EdgeVertex> {
+                const auto j = static_cast<std::size_t>(around[static_cast<std::size_t>(q)]);
+                const int g = cell::dmcVertexOfEdge(config[j], alternative[j] != 0, axis, q);
+                assert(g >= 0);
+                const std::uint32_t id = vertexBase[j] + static_cast<std::uint32_t>(g);
+                return EdgeVertex{id, out.positions[id]};
+              },
+              axis, (config[i] & 1) != 0, triangles);
         }
       }
     }
@@ -188,12 +186,7 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
     const OctreeLeaf& leaf = leaves[i];
     const cell::DmcEntry& entry = groups.entry(i);
     if (entry.vertexCount == 0 || !touchesMetaCellBoundary(leaf.origin, leaf.size, metaSize)) continue;
-    SeamCell cell;
-    cell.key = leaf.key;
-    for (int a = 0; a < 3; ++a) cell.origin[a] = samples.origin[a] + leaf.origin[a];
-    cell.size = leaf.size;
-    cell.cornerSigns = config[i];
-    cell.alternative = alternative[i] != 0;
+    SeamCell cell = seamCellOf(leaf, samples.origin, alternative[i] != 0);  // config[i] is leaf.cornerSigns
     const VoxelEdgeCell vertices = voxelEdgeCell(groups, out.positions, i);
     cell.vertices = vertices.vertices;
     cell.positions = vertices.positions;

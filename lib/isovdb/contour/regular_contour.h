@@ -35,6 +35,8 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
+#include <vector>
 
 #include "isovdb/contour/seam_cell.h"
 #include "isovdb/contour/voxel_dmc.h"
@@ -85,5 +87,30 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
 std::array<mesh::Triangle, 2> regularEdgeQuad(const std::array<std::uint32_t, 4>& vertices,
                                               const std::array<mesh::Vec3f, 4>& positions, int axis,
                                               bool minEndInside) noexcept;
+
+/// A dual vertex as one cell gives it to an edge: its mesh id and position.
+struct EdgeVertex {
+  std::uint32_t id = kNoVertex;
+  mesh::Vec3f position{};
+};
+
+/// @brief Regular mode's quad of one bipolar edge, the same inside a meta-cell and on a
+///        seam: `vertexOfCell(q)` gives the vertex cell q around the edge (quadrant as in
+///        regularEdgeQuad) has for it, or std::nullopt when that cell is missing.
+/// @return false, with nothing appended, when a cell is missing.
+template <typename VertexOfCell>
+bool appendRegularEdgeQuad(VertexOfCell&& vertexOfCell, int axis, bool minEndInside, std::vector<mesh::Triangle>& out) {
+  std::array<std::uint32_t, 4> ids{};
+  std::array<mesh::Vec3f, 4> positions{};
+  for (int q = 0; q < 4; ++q) {
+    const std::optional<EdgeVertex> vertex = vertexOfCell(q);
+    if (!vertex) return false;
+    ids[static_cast<std::size_t>(q)] = vertex->id;
+    positions[static_cast<std::size_t>(q)] = vertex->position;
+  }
+  const auto triangles = regularEdgeQuad(ids, positions, axis, minEndInside);
+  out.insert(out.end(), triangles.begin(), triangles.end());
+  return true;
+}
 
 }  // namespace isovdb::contour

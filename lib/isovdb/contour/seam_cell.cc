@@ -4,6 +4,16 @@
 
 namespace isovdb::contour {
 
+SeamCell seamCellOf(const octree::OctreeLeaf& leaf, const std::array<int, 3>& metaCellOrigin, bool alternative) {
+  SeamCell cell;
+  cell.key = leaf.key;
+  for (int a = 0; a < 3; ++a) cell.origin[a] = metaCellOrigin[a] + leaf.origin[a];
+  cell.size = leaf.size;
+  cell.cornerSigns = leaf.cornerSigns;
+  cell.alternative = alternative;
+  return cell;
+}
+
 void rebaseSeam(MetaCellSeam& seam, std::uint32_t base) noexcept {
   const auto rebase = [base](auto& ids) {
     for (std::uint32_t& v : ids)

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "isovdb/mesh/mesh.h"
+#include "isovdb/octree/linear_octree.h"
 #include "isovdb/octree/morton.h"
 
 namespace isovdb::contour {
@@ -84,6 +85,11 @@ struct MetaCellSeam {
   std::vector<SeamCell> cells;  ///< in the Z order of the meta-cell's octree
   std::vector<SeamFace> faces;  ///< adaptive only
 };
+
+/// @brief A SeamCell with what both modes fill alike: the key, global origin, size and
+///        corner signs of `leaf` (in the meta-cell whose min corner is `metaCellOrigin`)
+///        and its grouping; vertices, positions and the mode's own fields are left to fill.
+SeamCell seamCellOf(const octree::OctreeLeaf& leaf, const std::array<int, 3>& metaCellOrigin, bool alternative);
 
 /// @brief Adds `base` to every vertex id of `seam` (when its mesh is appended after `base` vertices).
 void rebaseSeam(MetaCellSeam& seam, std::uint32_t base) noexcept;

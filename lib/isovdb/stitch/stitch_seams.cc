@@ -57,30 +57,21 @@ void stitchRegular(const Seam& seam, const EdgeOctree& edgeTree, int s, bool vox
         ++stats.edges;
         continue;
       }
-      std::array<std::uint32_t, 4> v{};
-      std::array<mesh::Vec3f, 4> p{};
-      bool complete = true;
-      for (int q = 0; q < 4 && complete; ++q) {
-        const std::int64_t j = around[static_cast<std::size_t>(q)];
-        if (j == LinearOctree::kNone) {
-          complete = false;
-          break;
-        }
-        const SeamCell& cell = *edgeTree.cells[static_cast<std::size_t>(j)];
-        const int g = cell::dmcVertexOfEdge(cell.cornerSigns, cell.alternative, axis, q);
-        if (g < 0 || cell.size != leaf.size) {
-          complete = false;
-          break;
-        }
-        v[static_cast<std::size_t>(q)] = cell.vertices[static_cast<std::size_t>(g)];
-        p[static_cast<std::size_t>(q)] = cell.positions[static_cast<std::size_t>(g)];
-      }
+      const bool complete = contour::appendRegularEdgeQuad(
+          [&](int q) -> std::optional<contour::EdgeVertex> {
+            const std::int64_t j = around[static_cast<std::size_t>(q)];
+            if (j == LinearOctree::kNone) return std::nullopt;
+            const SeamCell& cell = *edgeTree.cells[static_cast<std::size_t>(j)];
+            const int g = cell::dmcVertexOfEdge(cell.cornerSigns, cell.alternative, axis, q);
+            if (g < 0 || cell.size != leaf.size) return std::nullopt;
+            return contour::EdgeVertex{cell.vertices[static_cast<std::size_t>(g)],
+                                       cell.positions[static_cast<std::size_t>(g)]};
+          },
+          axis, (leaf.cornerSigns & 1) != 0, out.triangles);
       if (!complete) {
         ++stats.missingCells;
         continue;
       }
-      const auto triangles = contour::regularEdgeQuad(v, p, axis, (leaf.cornerSigns & 1) != 0);
-      out.triangles.insert(out.triangles.end(), triangles.begin(), triangles.end());
       ++stats.edges;
     }
   }
