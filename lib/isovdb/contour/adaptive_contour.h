@@ -74,6 +74,22 @@ struct AdaptiveContourStats {
   std::int64_t seamCells = 0;             ///< leaves kept for stitching
   std::int64_t multiVertexCells = 0;      ///< leaves with more than one vertex (DMC groups, maximum depth only)
   std::int64_t manifoldFixes = 0;         ///< leaves with Wenger's alternative grouping
+
+  /// Sums the figures of several meta-cells.
+  AdaptiveContourStats& operator+=(const AdaptiveContourStats& o) noexcept {
+    minimalEdges += o.minimalEdges;
+    quads += o.quads;
+    triangles3 += o.triangles3;
+    fannedEdges += o.fannedEdges;
+    uncrossedFaceEdges += o.uncrossedFaceEdges;
+    trianglesAddedByFans += o.trianglesAddedByFans;
+    boundaryEdges += o.boundaryEdges;
+    edgesWithoutVertex += o.edgesWithoutVertex;
+    seamCells += o.seamCells;
+    multiVertexCells += o.multiVertexCells;
+    manifoldFixes += o.manifoldFixes;
+    return *this;
+  }
 };
 
 /// @brief Contours the octree of one meta-cell (adaptive mode).

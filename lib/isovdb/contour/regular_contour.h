@@ -58,6 +58,19 @@ struct RegularContourStats {
   std::int64_t boundaryEdges = 0;     ///< bipolar edges left to stitching (on the meta-cell boundary)
   std::int64_t fixesBeyondApron = 0;  ///< doubled faces on the boundary whose neighbour lies beyond the
                                       ///< samples' apron (left unfixed; 0 with an apron >= the finest cell)
+
+  /// Sums the figures of several meta-cells.
+  RegularContourStats& operator+=(const RegularContourStats& o) noexcept {
+    cells += o.cells;
+    vertices += o.vertices;
+    quads += o.quads;
+    manifoldFixes += o.manifoldFixes;
+    tubeCells += o.tubeCells;
+    seamCells += o.seamCells;
+    boundaryEdges += o.boundaryEdges;
+    fixesBeyondApron += o.fixesBeyondApron;
+    return *this;
+  }
 };
 
 /// @brief Contours one meta-cell's regular octree with manifold Dual Marching Cubes.

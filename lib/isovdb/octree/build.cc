@@ -387,6 +387,22 @@ OctreeDepths resolveDepths(const OctreeOptions& options, int metaCellSize) {
   return d;
 }
 
+OctreeBuildStats& OctreeBuildStats::operator+=(const OctreeBuildStats& o) {
+  if (cellsClassified.size() < o.cellsClassified.size()) cellsClassified.resize(o.cellsClassified.size(), 0);
+  for (std::size_t d = 0; d < o.cellsClassified.size(); ++d) cellsClassified[d] += o.cellsClassified[d];
+  complexEdges += o.complexEdges;
+  complexFaces += o.complexFaces;
+  interiorComponents += o.interiorComponents;
+  complexCells += o.complexCells;
+  unresolvedComplexLeaves += o.unresolvedComplexLeaves;
+  geometricSplits += o.geometricSplits;
+  featureSplits += o.featureSplits;
+  multiSheetSplits += o.multiSheetSplits;
+  hiddenComponentSplits += o.hiddenComponentSplits;
+  balanceSplits += o.balanceSplits;
+  return *this;
+}
+
 LinearOctree buildOctree(const cell::MetaCellSamples& samples, const cell::ContourSettings& settings,
                          const OctreeOptions& options, OctreeBuildStats* stats, Interrupter* interrupter) {
   if (settings.method == cell::ContourMethod::Vdb)

@@ -85,6 +85,9 @@ struct OctreeBuildStats {
   std::size_t hiddenComponentSplits = 0;  ///< adaptive: cells subdivided because a component of samples hides
                                           ///< inside them (criteria.h, hasHiddenComponent)
   std::size_t balanceSplits = 0;          ///< cells subdivided to restore 2:1 balance
+
+  /// Sums the figures of several meta-cells (cellsClassified depth by depth).
+  OctreeBuildStats& operator+=(const OctreeBuildStats& o);
 };
 
 /// @brief Builds the octree of one meta-cell.

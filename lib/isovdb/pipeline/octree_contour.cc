@@ -42,30 +42,19 @@ struct Engine {
 /// Figures summed over meta-cells (CPU seconds, counts).
 struct MetaCellTotals {
   double readSeconds = 0, octreeSeconds = 0, contourSeconds = 0;
-  std::int64_t leaves = 0, complexCells = 0, unresolvedComplexLeaves = 0, geometricSplits = 0;
-  std::int64_t manifoldFixes = 0, tubeCells = 0, fixesBeyondApron = 0, boundaryEdges = 0, seamCells = 0;
-  std::int64_t minimalEdges = 0, fannedEdges = 0, trianglesAddedByFans = 0;
-  std::int64_t multiSheetSplits = 0, hiddenComponentSplits = 0, multiVertexCells = 0;
+  std::int64_t leaves = 0;
+  octree::OctreeBuildStats build;
+  contour::RegularContourStats regular;
+  contour::AdaptiveContourStats adaptive;
 
   void add(const MetaCellTotals& o) {
     readSeconds += o.readSeconds;
     octreeSeconds += o.octreeSeconds;
     contourSeconds += o.contourSeconds;
     leaves += o.leaves;
-    complexCells += o.complexCells;
-    unresolvedComplexLeaves += o.unresolvedComplexLeaves;
-    geometricSplits += o.geometricSplits;
-    manifoldFixes += o.manifoldFixes;
-    tubeCells += o.tubeCells;
-    fixesBeyondApron += o.fixesBeyondApron;
-    boundaryEdges += o.boundaryEdges;
-    seamCells += o.seamCells;
-    minimalEdges += o.minimalEdges;
-    fannedEdges += o.fannedEdges;
-    trianglesAddedByFans += o.trianglesAddedByFans;
-    multiSheetSplits += o.multiSheetSplits;
-    hiddenComponentSplits += o.hiddenComponentSplits;
-    multiVertexCells += o.multiVertexCells;
+    build += o.build;
+    regular += o.regular;
+    adaptive += o.adaptive;
   }
 };
 
@@ -84,31 +73,17 @@ contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const E
   const octree::LinearOctree tree = octree::buildOctree(samples, settings, engine.tree, &buildStats, interrupter);
   totals.octreeSeconds += secondsSince(t0);
   totals.leaves += static_cast<std::int64_t>(tree.leafCount());
-  totals.complexCells += static_cast<std::int64_t>(buildStats.complexCells);
-  totals.unresolvedComplexLeaves += static_cast<std::int64_t>(buildStats.unresolvedComplexLeaves);
-  totals.geometricSplits += static_cast<std::int64_t>(buildStats.geometricSplits);
-  totals.multiSheetSplits += static_cast<std::int64_t>(buildStats.multiSheetSplits);
-  totals.hiddenComponentSplits += static_cast<std::int64_t>(buildStats.hiddenComponentSplits);
+  totals.build += buildStats;
   t0 = std::chrono::steady_clock::now();
   contour::MetaCellMesh result;
   if (settings.method == cell::ContourMethod::Regular) {
     contour::RegularContourStats s;
     result = contour::contourRegularMetaCell(samples, tree, settings, &s);
-    totals.tubeCells += s.tubeCells;
-    totals.manifoldFixes += s.manifoldFixes;
-    totals.fixesBeyondApron += s.fixesBeyondApron;
-    totals.boundaryEdges += s.boundaryEdges;
-    totals.seamCells += s.seamCells;
+    totals.regular += s;
   } else {
     contour::AdaptiveContourStats s;
     result = contour::contourAdaptiveMetaCell(samples, tree, settings, &s);
-    totals.manifoldFixes += s.manifoldFixes;
-    totals.multiVertexCells += s.multiVertexCells;
-    totals.boundaryEdges += s.boundaryEdges;
-    totals.seamCells += s.seamCells;
-    totals.minimalEdges += s.minimalEdges;
-    totals.fannedEdges += s.fannedEdges;
-    totals.trianglesAddedByFans += s.trianglesAddedByFans;
+    totals.adaptive += s;
   }
   totals.contourSeconds += secondsSince(t0);
   return result;
@@ -122,26 +97,29 @@ float engineIso(const volume::Volume& field, float iso, cell::MetaCellSamples& s
 }
 
 void recordTotals(const MetaCellTotals& totals, const cell::ContourSettings& options, Statistics::Json& section) {
+  const bool regular = options.method == cell::ContourMethod::Regular;
+  const contour::RegularContourStats& r = totals.regular;
+  const contour::AdaptiveContourStats& a = totals.adaptive;
   section["leaves"] = totals.leaves;
-  section["complex_cells"] = totals.complexCells;
-  section["unresolved_complex_leaves"] = totals.unresolvedComplexLeaves;
-  section["boundary_cells_kept"] = totals.seamCells;
-  section["edges_left_to_stitching"] = totals.boundaryEdges;
-  section["manifold_fixes"] = totals.manifoldFixes;
-  if (options.method == cell::ContourMethod::Regular) {
+  section["complex_cells"] = totals.build.complexCells;
+  section["unresolved_complex_leaves"] = totals.build.unresolvedComplexLeaves;
+  section["boundary_cells_kept"] = regular ? r.seamCells : a.seamCells;
+  section["edges_left_to_stitching"] = regular ? r.boundaryEdges : a.boundaryEdges;
+  section["manifold_fixes"] = regular ? r.manifoldFixes : a.manifoldFixes;
+  if (regular) {
     section["topology"] = std::string(cell::regularTopologyName(options.topology));
-    section["manifold_fixes_beyond_apron"] = totals.fixesBeyondApron;
-    if (options.topology == cell::RegularTopology::Voxels) section["tube_cells"] = totals.tubeCells;
+    section["manifold_fixes_beyond_apron"] = r.fixesBeyondApron;
+    if (options.topology == cell::RegularTopology::Voxels) section["tube_cells"] = r.tubeCells;
   } else {
-    section["geometric_splits"] = totals.geometricSplits;
-    section["multi_sheet_splits"] = totals.multiSheetSplits;
-    section["hidden_component_splits"] = totals.hiddenComponentSplits;
-    section["multi_vertex_cells"] = totals.multiVertexCells;
+    section["geometric_splits"] = totals.build.geometricSplits;
+    section["multi_sheet_splits"] = totals.build.multiSheetSplits;
+    section["hidden_component_splits"] = totals.build.hiddenComponentSplits;
+    section["multi_vertex_cells"] = a.multiVertexCells;
     section["intersection_free"] = options.intersectionFree;
     section["sharp_features"] = options.sharpFeatures;
-    section["minimal_edges"] = totals.minimalEdges;
-    section["fanned_edges"] = totals.fannedEdges;
-    section["triangles_added_by_fans"] = totals.trianglesAddedByFans;
+    section["minimal_edges"] = a.minimalEdges;
+    section["fanned_edges"] = a.fannedEdges;
+    section["triangles_added_by_fans"] = a.trianglesAddedByFans;
   }
   section["cpu_seconds_read"] = totals.readSeconds;
   section["cpu_seconds_octree"] = totals.octreeSeconds;
