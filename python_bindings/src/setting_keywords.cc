@@ -40,6 +40,24 @@ std::string keywordHelp(std::string_view help) {
   return result;
 }
 
+/// The current value of a setting as Python source (`0.15`, `True`, `'vdb'`): numbers as
+/// the CLI's --help shows them, so that both front ends print the same default.
+std::string pythonSource(const pipeline::Setting& setting) {
+  std::ostringstream out;
+  std::visit(
+      [&out](auto* value) {
+        using T = std::remove_pointer_t<decltype(value)>;
+        if constexpr (std::is_same_v<T, bool>)
+          out << (*value ? "True" : "False");
+        else if constexpr (std::is_same_v<T, std::string>)
+          out << py::repr(py::str(*value)).cast<std::string>();
+        else
+          out << *value;
+      },
+      setting.value);
+  return out.str();
+}
+
 /// `text` wrapped at 88 columns, every line after the first indented by `indent`.
 std::string wrapped(const std::string& text, const std::string& indent) {
   std::istringstream words(text);
@@ -93,7 +111,7 @@ void defineSettingsFunction(py::module_& m, const std::string& name, const std::
   std::string doc = summary + "\n\nSettings (each the CLI flag --name, with '-' for '_'; None: the default):\n";
   for (const pipeline::Setting& setting : settings) {
     const std::string keyword = pipeline::keywordOf(setting.name);
-    const std::string fallback = pipeline::pythonDefault(setting);
+    const std::string fallback = pythonSource(setting);
     parameters += ", " + keyword + "=" + fallback;
     values += "'" + keyword + "': " + keyword + ", ";
     doc += wrapped(keyword + " (" + fallback + "): " + keywordHelp(setting.help), "    ") + "\n";

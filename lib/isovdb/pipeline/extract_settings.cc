@@ -3,7 +3,6 @@
 #include "isovdb/pipeline/extract_settings.h"
 
 #include <algorithm>
-#include <sstream>
 
 #include "isovdb/errors.h"
 
@@ -73,60 +72,48 @@ std::vector<Setting> extractSettings(ExtractChoices& c) {
        "scalars",
        &o.contour.iso},
       {"adaptivity", "vdb method: OpenVDB's adaptivity in [0, 1]", &o.adaptivity},
-      {"meta-cell",
-       "regular/adaptive: meta-cell size in voxels (power of two, 16..512; 0 = one block around the whole volume, no "
-       "stitching)",
-       &o.metaCellSize},
-      {"threads", "Worker threads (0 = every core); the output is the same", &o.threads},
-      {"min-level",
-       "regular/adaptive: uniform subdivision down to this depth under the meta-cell (-1: --max-cell-size decides)",
-       &o.octree.minDepth},
-      {"max-cell-size", "regular/adaptive: largest cell in voxels when --min-level is -1", &o.octree.maxCellSize},
-      {"max-level", "regular/adaptive: deepest level under the meta-cell (-1: --finest-size decides)",
-       &o.octree.maxDepth},
-      {"finest-size", "regular/adaptive: smallest cell in voxels (1, 2, 4, ...) when --max-level is -1",
-       &o.octree.finestCellSize},
-      {"qef-tolerance", "adaptive: split cells whose QEF residual (RMS, voxels) exceeds this; < 0 off",
-       &o.octree.qefTolerance},
-      {"intersection-free",
-       "adaptive: Ju-Udeshi fans where plain dual contouring would self-intersect (off: plain "
-       "DC, for comparison)",
-       &o.contour.intersectionFree, /*negatable=*/true},
-      {"sharp-features",
-       "adaptive: keep the sharp edges and corners of an exact distance field (e.g. a CAD level set .vdb). Off by "
-       "default: a field made from a voxel mask has a crease at every staircase step, and following them costs "
-       "35-50% more triangles",
-       &o.contour.sharpFeatures},
-      {"boundary",
-       "Surfaces reaching the data boundary (survey edge): cap (closed mesh, caps on the boundary) or open (caps "
-       "dropped, the mesh ends on the boundary)",
-       &c.boundary},
-      {"topology",
-       "regular: reading of ambiguous cells. voxels: the voxel object's topology (26-connected inside, 6-connected "
-       "outside; Euler characteristic 2x the mask's), mdmc: Wenger's manifold DMC, auto: voxels for masks, mdmc "
-       "for fields",
-       &c.topology},
   };
-  // The distance settings after --adaptivity.
-  std::vector<Setting> fields = distanceSettings(o.distance, c.distance);
-  result.insert(result.begin() + 3, fields.begin(), fields.end());
+  // Then the distance field's, then the octree methods'.
+  const std::vector<Setting> field = distanceSettings(o.distance, c.distance);
+  result.insert(result.end(), field.begin(), field.end());
+  result.insert(
+      result.end(),
+      {
+          {"meta-cell",
+           "regular/adaptive: meta-cell size in voxels (power of two, 16..512; 0 = one block around the whole "
+           "volume, no stitching)",
+           &o.metaCellSize},
+          {"threads", "Worker threads (0 = every core); the output is the same", &o.threads},
+          {"min-level",
+           "regular/adaptive: uniform subdivision down to this depth under the meta-cell (-1: --max-cell-size decides)",
+           &o.octree.minDepth},
+          {"max-cell-size", "regular/adaptive: largest cell in voxels when --min-level is -1", &o.octree.maxCellSize},
+          {"max-level", "regular/adaptive: deepest level under the meta-cell (-1: --finest-size decides)",
+           &o.octree.maxDepth},
+          {"finest-size", "regular/adaptive: smallest cell in voxels (1, 2, 4, ...) when --max-level is -1",
+           &o.octree.finestCellSize},
+          {"qef-tolerance", "adaptive: split cells whose QEF residual (RMS, voxels) exceeds this; < 0 off",
+           &o.octree.qefTolerance},
+          {"intersection-free",
+           "adaptive: Ju-Udeshi fans where plain dual contouring would self-intersect (off: plain "
+           "DC, for comparison)",
+           &o.contour.intersectionFree, /*negatable=*/true},
+          {"sharp-features",
+           "adaptive: keep the sharp edges and corners of an exact distance field (e.g. a CAD level set .vdb). Off by "
+           "default: a field made from a voxel mask has a crease at every staircase step, and following them costs "
+           "35-50% more triangles",
+           &o.contour.sharpFeatures},
+          {"boundary",
+           "Surfaces reaching the data boundary (survey edge): cap (closed mesh, caps on the boundary) or open (caps "
+           "dropped, the mesh ends on the boundary)",
+           &c.boundary},
+          {"topology",
+           "regular: reading of ambiguous cells. voxels: the voxel object's topology (26-connected inside, 6-connected "
+           "outside; Euler characteristic 2x the mask's), mdmc: Wenger's manifold DMC, auto: voxels for masks, mdmc "
+           "for fields",
+           &c.topology},
+      });
   return result;
-}
-
-std::string pythonDefault(const Setting& setting) {
-  std::ostringstream out;
-  std::visit(
-      [&out](auto* value) {
-        using T = std::remove_pointer_t<decltype(value)>;
-        if constexpr (std::is_same_v<T, bool>)
-          out << (*value ? "True" : "False");
-        else if constexpr (std::is_same_v<T, std::string>)
-          out << "'" << *value << "'";
-        else
-          out << *value;
-      },
-      setting.value);
-  return out.str();
 }
 
 }  // namespace isovdb::pipeline

@@ -62,7 +62,4 @@ inline std::vector<Setting> distanceSettings(DistanceChoices& choices) {
 /// The Python keyword of a setting: dashes as underscores.
 std::string keywordOf(std::string_view name);
 
-/// The default of a setting as Python source (`0.15`, `True`, `'vdb'`).
-std::string pythonDefault(const Setting& setting);
-
 }  // namespace isovdb::pipeline
