@@ -2,47 +2,44 @@
 // Copyright Contributors to the isovdb project.
 #include "isovdb/contour/ju_udeshi.h"
 
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 
 namespace isovdb::contour {
 namespace {
 
-Vec3d sub(const Vec3d& a, const Vec3d& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Vec3d add(const Vec3d& a, const Vec3d& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-Vec3d scale(const Vec3d& a, double s) { return {a[0] * s, a[1] * s, a[2] * s}; }
-double dot(const Vec3d& a, const Vec3d& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3d cross(const Vec3d& a, const Vec3d& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double norm(const Vec3d& a) { return std::sqrt(dot(a, a)); }
-double distance(const Vec3d& a, const Vec3d& b) { return norm(sub(a, b)); }
+/// The envelope test computes on Eigen vectors; the API exchanges plain arrays (vec3.h).
+using Point = Eigen::Vector3d;
+Point toPoint(const Vec3d& a) { return {a[0], a[1], a[2]}; }
+Vec3d toVec3d(const Point& a) { return {a(0), a(1), a(2)}; }
 
 /// Oriented plane n . x + d with |n| = 1.
 struct Plane {
-  Vec3d n{0, 0, 0};
+  Point n = Point::Zero();
   double d = 0.0;
-  double eval(const Vec3d& x) const { return dot(n, x) + d; }
+  double eval(const Point& x) const { return n.dot(x) + d; }
 };
 
 /// Plane through p0, p1, p2 oriented so that `reference` is on the positive side.
 /// @return false if degenerate or `reference` lies (nearly) on it.
-bool orientedPlane(const Vec3d& p0, const Vec3d& p1, const Vec3d& p2, const Vec3d& reference, Plane& out) {
-  Vec3d n = cross(sub(p1, p0), sub(p2, p0));
-  const double len = norm(n);
-  const double scaleRef = std::max({distance(p0, p1), distance(p0, p2), 1e-30});
+bool orientedPlane(const Point& p0, const Point& p1, const Point& p2, const Point& reference, Plane& out) {
+  Point n = (p1 - p0).cross(p2 - p0);
+  const double len = n.norm();
+  const double scaleRef = std::max({(p0 - p1).norm(), (p0 - p2).norm(), 1e-30});
   if (len <= 1e-14 * scaleRef * scaleRef) return false;
-  n = scale(n, 1.0 / len);
-  out = Plane{n, -dot(n, p0)};
+  n *= 1.0 / len;
+  out = Plane{n, -n.dot(p0)};
   const double s = out.eval(reference);
   if (std::abs(s) <= 1e-12 * scaleRef) return false;
-  if (s < 0) out = Plane{scale(n, -1.0), -out.d};
+  if (s < 0) out = Plane{-n, -out.d};
   return true;
 }
 
 /// A convex polygon of at most 8 vertices: a triangle clipped by two planes has at most 5.
 struct SmallPolygon {
-  std::array<Vec3d, 8> points;
+  std::array<Point, 8> points;
   std::size_t size = 0;
 };
 
@@ -51,35 +48,35 @@ void clip(const SmallPolygon& in, const Plane& plane, SmallPolygon& out) {
   out.size = 0;
   const std::size_t n = in.size;
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec3d& p = in.points[i];
-    const Vec3d& q = in.points[(i + 1) % n];
+    const Point& p = in.points[i];
+    const Point& q = in.points[(i + 1) % n];
     const double sp = plane.eval(p), sq = plane.eval(q);
     if (sp >= 0) out.points[out.size++] = p;
     if ((sp >= 0) != (sq >= 0)) {
       const double t = sp / (sp - sq);
-      out.points[out.size++] = add(p, scale(sub(q, p), t));
+      out.points[out.size++] = p + (q - p) * t;
     }
   }
 }
 
 /// Distance from x to segment [p, q].
-double distanceToSegment(const Vec3d& x, const Vec3d& p, const Vec3d& q) {
-  const Vec3d d = sub(q, p);
-  const double len2 = dot(d, d);
-  double t = len2 > 0 ? dot(sub(x, p), d) / len2 : 0.0;
+double distanceToSegment(const Point& x, const Point& p, const Point& q) {
+  const Point d = q - p;
+  const double len2 = d.squaredNorm();
+  double t = len2 > 0 ? (x - p).dot(d) / len2 : 0.0;
   t = std::clamp(t, 0.0, 1.0);
-  return distance(x, add(p, scale(d, t)));
+  return (x - (p + d * t)).norm();
 }
 
 /// One tetrahedron conv(e0, e1, P, Q) of an envelope: the planes of its
 /// angular sector around the edge line and of its two outer faces.
 struct Sector {
-  Vec3d P{0, 0, 0}, Q{0, 0, 0};
+  Point P = Point::Zero(), Q = Point::Zero();
   Plane sectorP, sectorQ, outer0, outer1;
   bool valid = false;  ///< false if degenerate: no triangle is inside it
 };
 
-Sector makeSector(const Vec3d& e0, const Vec3d& e1, const Vec3d& P, const Vec3d& Q) {
+Sector makeSector(const Point& e0, const Point& e1, const Point& P, const Point& Q) {
   Sector sector;
   sector.P = P;
   sector.Q = Q;
@@ -99,14 +96,15 @@ struct EnvelopeSectors {
 
   explicit EnvelopeSectors(const EdgeEnvelope& envelope) {
     const int k = envelope.cellCount;
+    const Point e0 = toPoint(envelope.edgeStart), e1 = toPoint(envelope.edgeEnd);
     for (int i = 0; i < k; ++i) {
-      const Vec3d& face = envelope.facePoints[static_cast<std::size_t>(i)];
-      const Vec3d& before = envelope.cellPoints[static_cast<std::size_t>(i)];
-      const Vec3d& after = envelope.cellPoints[static_cast<std::size_t>((i + 1) % k)];
-      sectors[static_cast<std::size_t>(count++)] = makeSector(envelope.edgeStart, envelope.edgeEnd, before, face);
-      sectors[static_cast<std::size_t>(count++)] = makeSector(envelope.edgeStart, envelope.edgeEnd, after, face);
+      const Point face = toPoint(envelope.facePoints[static_cast<std::size_t>(i)]);
+      const Point before = toPoint(envelope.cellPoints[static_cast<std::size_t>(i)]);
+      const Point after = toPoint(envelope.cellPoints[static_cast<std::size_t>((i + 1) % k)]);
+      sectors[static_cast<std::size_t>(count++)] = makeSector(e0, e1, before, face);
+      sectors[static_cast<std::size_t>(count++)] = makeSector(e0, e1, after, face);
     }
-    touch = 1e-9 * std::max(1.0, distance(envelope.edgeStart, envelope.edgeEnd));
+    touch = 1e-9 * std::max(1.0, (e0 - e1).norm());
   }
 };
 
@@ -118,7 +116,7 @@ bool insideSector(const Sector& sector, double touch, const SmallPolygon& triang
   if (inP.size == 0) return true;
   clip(inP, sector.sectorQ, inBoth);
   for (std::size_t i = 0; i < inBoth.size; ++i) {
-    const Vec3d& x = inBoth.points[i];
+    const Point& x = inBoth.points[i];
     if (sector.outer0.eval(x) >= options.margin && sector.outer1.eval(x) >= options.margin) continue;
     // Allowed contact: the segment v_c v_f, which neighbouring edges share.
     if (distanceToSegment(x, sector.P, sector.Q) <= touch) continue;
@@ -130,9 +128,9 @@ bool insideSector(const Sector& sector, double touch, const SmallPolygon& triang
 bool triangleInSectors(const EnvelopeSectors& envelope, const Vec3d& a, const Vec3d& b, const Vec3d& c,
                        const EnvelopeOptions& options) {
   SmallPolygon triangle;
-  triangle.points[0] = a;
-  triangle.points[1] = b;
-  triangle.points[2] = c;
+  triangle.points[0] = toPoint(a);
+  triangle.points[1] = toPoint(b);
+  triangle.points[2] = toPoint(c);
   triangle.size = 3;
   for (int i = 0; i < envelope.count; ++i)
     if (!insideSector(envelope.sectors[static_cast<std::size_t>(i)], envelope.touch, triangle, options)) return false;
@@ -144,12 +142,13 @@ bool triangleInSectors(const EnvelopeSectors& envelope, const Vec3d& a, const Ve
 FacePoint computeFacePoint(const Vec3d& a, const Vec3d& b, const MinimalFace& face, const EnvelopeOptions& options) {
   const int n = face.axis;
   const double da = a[n] - face.coordinate, db = b[n] - face.coordinate;
+  const Point pa = toPoint(a), pb = toPoint(b);
   Vec3d x;
   if ((da < 0) != (db < 0) && da != db) {
     const double t = da / (da - db);
-    x = add(a, scale(sub(b, a), t));
+    x = toVec3d(pa + (pb - pa) * t);
   } else {
-    x = scale(add(a, b), 0.5);
+    x = toVec3d((pa + pb) * 0.5);
   }
   x[n] = face.coordinate;
   const double m = options.faceMarginFraction * face.size;
@@ -193,7 +192,8 @@ EdgeTriangulation chooseTriangulation(const EdgeEnvelope& envelope, const std::a
   // Apex order: for a quadrilateral the shorter diagonal first, else in polygon order.
   std::vector<int> apexes;
   if (m == 4) {
-    const bool shorter02 = distance(point(at(0)), point(at(2))) <= distance(point(at(1)), point(at(3)));
+    const auto distance = [&](int i, int j) { return (toPoint(point(at(i))) - toPoint(point(at(j)))).norm(); };
+    const bool shorter02 = distance(0, 2) <= distance(1, 3);
     apexes = shorter02 ? std::vector<int>{0, 1} : std::vector<int>{1, 0};
   } else if (m == 3) {
     apexes = {0};
