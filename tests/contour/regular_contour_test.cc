@@ -18,6 +18,7 @@
 #include "generators/shapes.h"
 #include "isovdb/mesh/validate.h"
 #include "isovdb/octree/build.h"
+#include "isovdb/octree/surface_cells.h"
 #include "isovdb/volume/distance_field.h"
 #include "isovdb/volume/grids.h"
 #include "isovdb/volume/ingest.h"
@@ -300,6 +301,35 @@ TEST(RegularContour, BoundaryEdgesAreSkippedAndMismatchedIsoThrows) {
   const octree::LinearOctree tree = octree::buildOctree(samples, {.method = cell::ContourMethod::Regular, .iso = 0.0f},
                                                         {.minDepth = 0, .finestCellSize = 1});
   EXPECT_THROW(contourRegular(samples, tree, {.method = cell::ContourMethod::Regular, .iso = 1.0f}), InputError);
+}
+
+TEST_P(RegularTopologies, SurfaceCellTreeGivesTheSameMeshAndSeamAsTheFullTree) {
+  // extract contours regular mode on octree::surfaceCellTree (the cells the surface
+  // crosses): the mesh, its vertex order and the seam must be the full tree's. Random
+  // signs with samples on the isovalue (every configuration, Wenger's fix, tubes) reach
+  // the meta-cell's boundary, so seam cells and boundary edges are compared too.
+  const RegularTopology topology = GetParam();
+  const cell::ContourSettings settings{.method = cell::ContourMethod::Regular, .topology = topology};
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> d(-1, 1);
+  for (int trial = 0; trial < 6; ++trial) {
+    const cell::MetaCellSamples samples =
+        cell::makeMetaCellSamples(32, {32, -64, 0}, [&](int, int, int) { return float(d(rng)); });
+    RegularContourStats fullStats, surfaceStats;
+    const MetaCellMesh full = contourRegularMetaCell(samples, octree::buildOctree(samples, settings), settings, &fullStats);
+    const MetaCellMesh surface =
+        contourRegularMetaCell(samples, octree::surfaceCellTree(samples, settings.iso), settings, &surfaceStats);
+    ASSERT_GT(full.mesh.triangles.size(), 0u);
+    EXPECT_EQ(full.mesh.positions, surface.mesh.positions) << "trial " << trial;
+    EXPECT_EQ(full.mesh.triangles, surface.mesh.triangles) << "trial " << trial;
+    ASSERT_EQ(full.seam.cells.size(), surface.seam.cells.size());
+    for (std::size_t i = 0; i < full.seam.cells.size(); ++i) {
+      EXPECT_EQ(full.seam.cells[i].key, surface.seam.cells[i].key);
+      EXPECT_EQ(full.seam.cells[i].vertices, surface.seam.cells[i].vertices);
+    }
+    EXPECT_EQ(fullStats.boundaryEdges, surfaceStats.boundaryEdges);
+    EXPECT_EQ(fullStats.manifoldFixes, surfaceStats.manifoldFixes);
+  }
 }
 
 // --- generated volumes (binary masks -> distance field) --------------------

@@ -44,29 +44,27 @@ Vec3f slideIntoCell(const Vec3f& x, const Vec3f& d, std::array<int, 3> cellOrigi
 
 DualVertex computeDualVertex(const cell::MetaCellSamples& samples, std::array<int, 3> cellOrigin, int cellSize,
                              std::uint16_t edgeMask, const DualVertexOptions& options) {
+  EdgeIntersection hit;
+  return dualVertexOfCrossings(samples, cellOrigin, cellSize, edgeMask, options,
+                               [&](const std::array<int, 3>& start, int axis) -> const EdgeIntersection* {
+                                 std::array<int, 3> end = start;
+                                 end[static_cast<std::size_t>(axis)] += cellSize;
+                                 if (isInside(samples.value(start), options.iso) == isInside(samples.value(end), options.iso))
+                                   return nullptr;  // not bipolar
+                                 const bool found =
+                                     intersectEdge(samples, start, axis, cellSize, options.iso, hit, options.sharpFeatures);
+                                 return found ? &hit : nullptr;
+                               });
+}
+
+DualVertex dualVertexFromCrossings(const cell::MetaCellSamples& samples, std::array<int, 3> cellOrigin, int cellSize,
+                                   std::span<const Vec3f> points, std::span<const Vec3f> normals, std::uint16_t edges,
+                                   const DualVertexOptions& options) {
   DualVertex v;
-  std::array<Vec3f, 12> points;
-  std::array<Vec3f, 12> normals;
-  std::size_t n = 0;
-  for (int e = 0; e < 12; ++e) {
-    if (!((edgeMask >> e) & 1)) continue;
-    const int c0 = cell::cellEdgeCorner(e, 0), c1 = cell::cellEdgeCorner(e, 1);
-    const std::array<int, 3> p0{cellOrigin[0] + (c0 & 1) * cellSize, cellOrigin[1] + ((c0 >> 1) & 1) * cellSize,
-                                cellOrigin[2] + ((c0 >> 2) & 1) * cellSize};
-    const std::array<int, 3> p1{cellOrigin[0] + (c1 & 1) * cellSize, cellOrigin[1] + ((c1 >> 1) & 1) * cellSize,
-                                cellOrigin[2] + ((c1 >> 2) & 1) * cellSize};
-    if (cell::isInside(samples.value(p0), options.iso) == cell::isInside(samples.value(p1), options.iso))
-      continue;  // not bipolar
-    EdgeIntersection hit;
-    if (!intersectEdge(samples, p0, cell::cellEdgeAxis(e), cellSize, options.iso, hit, options.sharpFeatures)) continue;
-    points[n] = hit.point;
-    normals[n] = hit.normal;
-    ++n;
-    v.edges = static_cast<std::uint16_t>(v.edges | (1u << e));
-  }
+  const std::size_t n = points.size();
   if (n == 0) return v;
-  const QefSolution s = solveQef(std::span<const Vec3f>(points.data(), n), std::span<const Vec3f>(normals.data(), n),
-                                 QefOptions{.singularValueThreshold = options.singularValueThreshold});
+  v.edges = edges;
+  const QefSolution s = solveQef(points, normals, QefOptions{.singularValueThreshold = options.singularValueThreshold});
   v.intersections = static_cast<std::uint8_t>(n);
   v.rank = static_cast<std::uint8_t>(s.rank);
   for (std::size_t i = 0; i < n; ++i)
@@ -89,7 +87,7 @@ DualVertex computeDualVertex(const cell::MetaCellSamples& samples, std::array<in
     x[a] = std::clamp(x[a], static_cast<float>(cellOrigin[a]), static_cast<float>(cellOrigin[a] + cellSize));
   v.qefError = inside && !options.sharpFeatures
                    ? s.error
-                   : qefError(std::span<const Vec3f>(points.data(), n), std::span<const Vec3f>(normals.data(), n), x);
+                   : qefError(points, normals, x);
   for (int a = 0; a < 3; ++a) v.position[a] = x[a] + static_cast<float>(samples.origin[a]);
   return v;
 }

@@ -14,8 +14,11 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 
+#include "isovdb/cell/cell_geometry.h"
 #include "isovdb/cell/contour_settings.h"
+#include "isovdb/cell/edge_intersection.h"
 #include "isovdb/cell/qef.h"
 #include "isovdb/cell/meta_cell_samples.h"
 
@@ -72,6 +75,40 @@ struct DualVertex {
 /// @pre the cell lies in [0, S]^3.
 DualVertex computeDualVertex(const cell::MetaCellSamples& samples, std::array<int, 3> cellOrigin, int cellSize,
                              std::uint16_t edgeMask, const DualVertexOptions& options = {});
+
+/// @brief What computeDualVertex does once it has the crossings: the vertex of the
+///        cell from `points` and unit `normals` (meta-cell offsets) on the cell
+///        edges in `edges`.
+DualVertex dualVertexFromCrossings(const cell::MetaCellSamples& samples, std::array<int, 3> cellOrigin, int cellSize,
+                                   std::span<const Vec3f> points, std::span<const Vec3f> normals, std::uint16_t edges,
+                                   const DualVertexOptions& options);
+
+/// @brief computeDualVertex with the crossings found by `crossingOf(start, axis)`:
+///        a pointer to the crossing on the cell edge from sample `start` (meta-cell
+///        offsets) along `axis`, nullptr if that edge is not bipolar; the pointer is
+///        read before the next call. Lets a caller look up crossings it found once.
+template <class CrossingOf>
+DualVertex dualVertexOfCrossings(const cell::MetaCellSamples& samples, std::array<int, 3> cellOrigin, int cellSize,
+                                 std::uint16_t edgeMask, const DualVertexOptions& options, CrossingOf&& crossingOf) {
+  std::array<Vec3f, 12> points;
+  std::array<Vec3f, 12> normals;
+  std::size_t n = 0;
+  std::uint16_t edges = 0;
+  for (int e = 0; e < 12; ++e) {
+    if (!((edgeMask >> e) & 1)) continue;
+    const int c0 = cellEdgeCorner(e, 0);
+    const std::array<int, 3> start{cellOrigin[0] + (c0 & 1) * cellSize, cellOrigin[1] + ((c0 >> 1) & 1) * cellSize,
+                                   cellOrigin[2] + ((c0 >> 2) & 1) * cellSize};
+    const EdgeIntersection* hit = crossingOf(start, cellEdgeAxis(e));
+    if (hit == nullptr) continue;
+    points[n] = hit->point;
+    normals[n] = hit->normal;
+    ++n;
+    edges = static_cast<std::uint16_t>(edges | (1u << e));
+  }
+  return dualVertexFromCrossings(samples, cellOrigin, cellSize, std::span<const Vec3f>(points.data(), n),
+                                 std::span<const Vec3f>(normals.data(), n), edges, options);
+}
 
 /// @brief Dual vertex from all bipolar edges of the cell.
 inline DualVertex computeDualVertex(const cell::MetaCellSamples& samples, std::array<int, 3> cellOrigin, int cellSize,

@@ -80,7 +80,8 @@ LeafGroups groupLeaves(const cell::MetaCellSamples& samples, const octree::Linea
 }
 
 std::vector<mesh::Vec3f> placeGroupVertices(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
-                                            const LeafGroups& groups, const cell::DualVertexOptions& options) {
+                                            const LeafGroups& groups, const cell::DualVertexOptions& options,
+                                            const UnitEdgeCrossings* crossings) {
   std::vector<mesh::Vec3f> positions(groups.totalVertices());
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, tree.leafCount(), kGrain / 4), [&](const tbb::blocked_range<std::size_t>& r) {
@@ -120,8 +121,14 @@ std::vector<mesh::Vec3f> placeGroupVertices(const cell::MetaCellSamples& samples
           for (int k = 0; k < count; ++k) {
             cell::DualVertexOptions vertexOptions = groupOptions;
             vertexOptions.massPointOnly = groupOptions.massPointOnly || k >= groupVertices;  // a tube has 2 groups
-            const cell::DualVertex v = cell::computeDualVertex(samples, leaf.origin, leaf.size,
-                                                               vertexEdges[static_cast<std::size_t>(k)], vertexOptions);
+            const std::uint16_t edges = vertexEdges[static_cast<std::size_t>(k)];
+            const cell::DualVertex v =
+                crossings != nullptr && leaf.size == 1
+                    ? cell::dualVertexOfCrossings(samples, leaf.origin, 1, edges, vertexOptions,
+                                                  [&](const std::array<int, 3>& start, int axis) {
+                                                    return crossings->find(start, axis);
+                                                  })
+                    : cell::computeDualVertex(samples, leaf.origin, leaf.size, edges, vertexOptions);
             mesh::Vec3f p = v.position;
             if (!v.valid())  // cannot happen for bipolar edges; keep the cell centre rather than garbage
               for (std::size_t a = 0; a < 3; ++a)

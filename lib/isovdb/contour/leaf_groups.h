@@ -30,6 +30,7 @@
 
 #include "isovdb/cell/dmc_table.h"
 #include "isovdb/cell/dual_vertex.h"
+#include "isovdb/contour/unit_edge_crossings.h"
 #include "isovdb/contour/voxel_dmc.h"
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/octree/linear_octree.h"
@@ -74,7 +75,10 @@ LeafGroups groupLeaves(const cell::MetaCellSamples& samples, const octree::Linea
 ///        no usable crossing), of every tube sector and split face (the mass
 ///        point of their crossings), numbered by LeafGroups::firstVertex.
 ///        Parallel with TBB; deterministic. Global voxel index coordinates.
+///        1-voxel leaves read their crossings from `crossings` if given (the same
+///        values, found once per edge; unit_edge_crossings.h).
 std::vector<mesh::Vec3f> placeGroupVertices(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
-                                            const LeafGroups& groups, const cell::DualVertexOptions& options);
+                                            const LeafGroups& groups, const cell::DualVertexOptions& options,
+                                            const UnitEdgeCrossings* crossings = nullptr);
 
 }  // namespace isovdb::contour

@@ -9,16 +9,19 @@
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "isovdb/cell/dmc_table.h"
 #include "isovdb/cell/dual_vertex.h"
 #include "isovdb/contour/leaf_groups.h"
+#include "isovdb/contour/unit_edge_crossings.h"
 #include "isovdb/contour/voxel_dmc.h"
 #include "isovdb/errors.h"
 #include "isovdb/octree/criteria.h"
 #include "isovdb/octree/morton.h"
+#include "isovdb/octree/unit_leaf_index.h"
 
 namespace isovdb::contour {
 
@@ -121,7 +124,13 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
 
   MetaCellMesh result;
   mesh::Mesh& out = result.mesh;
-  out.positions = placeGroupVertices(samples, regularTree, groups, cell::dualVertexOptions(options));
+  // 1-voxel leaves (every leaf with a vertex at the default depths) read their crossings
+  // from a table that finds each once, not once per cell around the edge.
+  std::optional<UnitEdgeCrossings> crossings;
+  if (std::any_of(leaves.begin(), leaves.end(), [](const OctreeLeaf& l) { return l.size == 1; }))
+    crossings.emplace(samples, options.iso, options.sharpFeatures);
+  out.positions = placeGroupVertices(samples, regularTree, groups, cell::dualVertexOptions(options),
+                                     crossings ? &*crossings : nullptr);
 
   // 4. Quads (voxel topology: polygons): each interior bipolar edge by its owner leaf (the edge is
   // the owner's local edge 4 * axis, the owner in quadrant 3); edges on the meta-cell boundary are
@@ -130,6 +139,13 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
   std::vector<std::vector<mesh::Triangle>> chunkTriangles(chunks);
   std::vector<std::int64_t> chunkEdges(chunks, 0);
   std::vector<std::int32_t> leafBoundaryEdges(n, 0);
+  // Constant-time lookups of the cells around an edge, where the index's bit rows
+  // (S^2 words per 64 cells along x) take no more memory than a few words per leaf:
+  // always for meta-cells, not for one large block around a thin surface.
+  const std::size_t indexWords = static_cast<std::size_t>(metaSize) * static_cast<std::size_t>(metaSize) *
+                                 static_cast<std::size_t>((metaSize + 63) / 64);
+  std::optional<octree::UnitLeafIndex> unitLeaves;
+  if (indexWords <= 8 * n + 4096) unitLeaves.emplace(regularTree);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t c = r.begin(); c != r.end(); ++c) {
       std::vector<mesh::Triangle>& triangles = chunkTriangles[c];
@@ -139,7 +155,8 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
         const OctreeLeaf& leaf = leaves[i];
         for (int axis = 0; axis < 3; ++axis) {
           if (((bipolar >> (4 * axis)) & 1) == 0) continue;
-          const auto around = regularTree.leavesAroundEdge(leaf.origin, axis);
+          const auto around = unitLeaves ? unitLeaves->leavesAroundEdge(leaf.origin, axis)
+                                         : regularTree.leavesAroundEdge(leaf.origin, axis);
           assert(around[3] == static_cast<std::int64_t>(i));
           if (std::find(around.begin(), around.end(), LinearOctree::kNone) != around.end()) {
             ++leafBoundaryEdges[i];

@@ -279,12 +279,13 @@ class Builder {
                   if (*v == kInternal) break;
                   ++stats_.balanceSplits;
                   splitLeafOnce(*v, labeller);
-                  changed = true;
                 }
               }
         internal.swap(nodes);
       }
-      // Complex (or geometrically rough) leaves created by balancing get refined.
+      // Complex (or geometrically rough) leaves created by balancing get refined; their
+      // children are deeper than the pass has looked, so only they call for another pass
+      // (a balancing split makes nodes at depths the pass has yet to visit).
       const std::size_t n = records_.size();
       for (std::size_t i = 0; i < n; ++i)
         if (alive_[i] && records_[i].split) {

@@ -53,6 +53,9 @@ std::int64_t LinearOctree::findLeafContainingVoxel(std::array<int, 3> voxel) con
       std::upper_bound(codes_.begin() + bucketStart_[bucket], codes_.begin() + bucketStart_[bucket + 1], code);
   if (it == codes_.begin()) return kNone;
   const std::int64_t index = (it - codes_.begin()) - 1;
+  // A leaf whose min corner is this voxel contains it: no read of the leaf (a cache miss
+  // per lookup where, as in regular mode, the leaves are 1-voxel cells).
+  if (codes_[static_cast<std::size_t>(index)] == code) return index;
   const OctreeLeaf& l = leaves_[static_cast<std::size_t>(index)];
   for (int a = 0; a < 3; ++a)
     if (voxel[a] < l.origin[a] || voxel[a] >= l.origin[a] + l.size) return kNone;

@@ -15,6 +15,7 @@
 #include "isovdb/contour/adaptive_contour.h"
 #include "isovdb/contour/regular_contour.h"
 #include "isovdb/errors.h"
+#include "isovdb/octree/surface_cells.h"
 #include "isovdb/stitch/stitch_seams.h"
 #include "isovdb/volume/grids.h"
 #include "isovdb/volume/meta_cells.h"
@@ -70,7 +71,8 @@ contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const E
   settings.iso = iso;
   auto t0 = std::chrono::steady_clock::now();
   octree::OctreeBuildStats buildStats;
-  const octree::LinearOctree tree = octree::buildOctree(samples, settings, engine.tree, &buildStats, interrupter);
+  const octree::LinearOctree tree =
+      octree::buildContourTree(samples, settings, engine.tree, &buildStats, interrupter);
   totals.octreeSeconds += secondsSince(t0);
   totals.leaves += static_cast<std::int64_t>(tree.leafCount());
   totals.build += buildStats;
@@ -313,7 +315,7 @@ octree::LinearOctree metaCellOctree(const volume::Volume& field, const cell::Con
   cell::ContourSettings blockSettings = settings;
   blockSettings.iso = engineIso(field, settings.iso, samples);
   if (hasSignChange) *hasSignChange = volume::hasSignChange(samples, blockSettings.iso);
-  return octree::buildOctree(samples, blockSettings, tree, stats, interrupter);
+  return octree::buildContourTree(samples, blockSettings, tree, stats, interrupter);
 }
 
 mesh::Mesh contourWithOctree(const volume::Volume& field, const cell::ContourSettings& settings,

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
+#include "isovdb/contour/unit_edge_crossings.h"
+
+#include <algorithm>
+#include <bit>
+
+#include "isovdb/octree/sample_phases.h"
+
+namespace isovdb::contour {
+
+UnitEdgeCrossings::UnitEdgeCrossings(const cell::MetaCellSamples& samples, float iso, bool sharpFeatures)
+    : size_(samples.size), wordsPerRow_((samples.size + 64) / 64) {
+  const octree::SamplePhases phases(samples, iso);
+  const int s = size_;
+  const std::size_t rows = static_cast<std::size_t>(s + 1) * static_cast<std::size_t>(s + 1);
+  for (int axis = 0; axis < 3; ++axis) {
+    bipolar_[static_cast<std::size_t>(axis)].assign(rows * static_cast<std::size_t>(wordsPerRow_), 0);
+    before_[static_cast<std::size_t>(axis)].assign(rows * static_cast<std::size_t>(wordsPerRow_), 0);
+    crossings_[static_cast<std::size_t>(axis)].clear();
+  }
+  for (int k = 0; k <= s; ++k)
+    for (int j = 0; j <= s; ++j) {
+      const std::size_t row = (static_cast<std::size_t>(k) * static_cast<std::size_t>(s + 1) + static_cast<std::size_t>(j)) *
+                              static_cast<std::size_t>(wordsPerRow_);
+      for (int w = 0; w < wordsPerRow_; ++w) {
+        const int i0 = 64 * w;
+        const int starts = std::min(64, s + 1 - i0);  // edge starts i0 .. i0 + starts - 1 along y and z
+        const std::uint64_t here = phases.row(i0, j, k, starts);
+        std::array<std::uint64_t, 3> bits{};
+        const int along = std::min(64, s - i0);  // x edges start before sample S
+        if (along > 0) bits[0] = phases.row(i0, j, k, along) ^ phases.row(i0 + 1, j, k, along);
+        if (j < s) bits[1] = here ^ phases.row(i0, j + 1, k, starts);
+        if (k < s) bits[2] = here ^ phases.row(i0, j, k + 1, starts);
+        for (int axis = 0; axis < 3; ++axis) {
+          auto& crossings = crossings_[static_cast<std::size_t>(axis)];
+          bipolar_[static_cast<std::size_t>(axis)][row + static_cast<std::size_t>(w)] = bits[static_cast<std::size_t>(axis)];
+          before_[static_cast<std::size_t>(axis)][row + static_cast<std::size_t>(w)] =
+              static_cast<std::uint32_t>(crossings.size());
+          for (std::uint64_t b = bits[static_cast<std::size_t>(axis)]; b != 0; b &= b - 1) {
+            cell::EdgeIntersection hit;
+            cell::intersectEdge(samples, {i0 + std::countr_zero(b), j, k}, axis, 1, iso, hit, sharpFeatures);
+            crossings.push_back(hit);
+          }
+        }
+      }
+    }
+}
+
+const cell::EdgeIntersection* UnitEdgeCrossings::find(const std::array<int, 3>& start, int axis) const noexcept {
+  const std::size_t word =
+      (static_cast<std::size_t>(start[2]) * static_cast<std::size_t>(size_ + 1) + static_cast<std::size_t>(start[1])) *
+          static_cast<std::size_t>(wordsPerRow_) +
+      static_cast<std::size_t>(start[0] >> 6);
+  const std::uint64_t bits = bipolar_[static_cast<std::size_t>(axis)][word];
+  const std::uint64_t bit = std::uint64_t{1} << (start[0] & 63);
+  if ((bits & bit) == 0) return nullptr;
+  const std::uint32_t index = before_[static_cast<std::size_t>(axis)][word] +
+                              static_cast<std::uint32_t>(std::popcount(bits & (bit - 1)));
+  return &crossings_[static_cast<std::size_t>(axis)][index];
+}
+
+}  // namespace isovdb::contour

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
+/// @file unit_edge_crossings.h
+/// @brief The surface crossings of a meta-cell's bipolar unit edges, each found
+///        once.
+///
+/// Every unit edge is shared by four 1-voxel cells, and each cell's dual vertex
+/// reads the crossings of its bipolar edges: found cell by cell, every crossing
+/// and its two Prewitt gradients were computed four times, a third of regular
+/// contouring. Here they are found once, edge by edge, and looked up in O(1):
+/// the bipolar edges of each row of samples are a bit mask (neighbouring phase
+/// bits XORed), and an edge's index is the set bits before it (a prefix count
+/// per 64-bit word plus a popcount), as Flying Edges indexes its edge cases.
+/// The crossings are intersectEdge's, so the vertices are bit for bit the same.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "isovdb/cell/edge_intersection.h"
+#include "isovdb/cell/meta_cell_samples.h"
+
+namespace isovdb::contour {
+
+class UnitEdgeCrossings {
+ public:
+  /// @brief Finds the crossing of every bipolar unit edge of the cells of
+  ///        [0, S]^3 (inside iff value <= iso), as cell::intersectEdge does.
+  UnitEdgeCrossings(const cell::MetaCellSamples& samples, float iso, bool sharpFeatures);
+
+  /// @brief The crossing on the unit edge from sample `start` (meta-cell
+  ///        offsets) along `axis`, or nullptr if the edge is not bipolar.
+  /// @pre the edge lies in [0, S]^3.
+  const cell::EdgeIntersection* find(const std::array<int, 3>& start, int axis) const noexcept;
+
+  /// Bipolar unit edges found.
+  std::size_t size() const noexcept { return crossings_[0].size() + crossings_[1].size() + crossings_[2].size(); }
+
+ private:
+  int size_ = 0;        // S
+  int wordsPerRow_ = 0;  // 64-bit words per row of S + 1 edge starts along x
+  // Per axis: bit i of row (j, k) is the edge from sample (i, j, k); the set bits
+  // before each word; the crossings in row and bit order.
+  std::array<std::vector<std::uint64_t>, 3> bipolar_;
+  std::array<std::vector<std::uint32_t>, 3> before_;
+  std::array<std::vector<cell::EdgeIntersection>, 3> crossings_;
+};
+
+}  // namespace isovdb::contour
