@@ -108,9 +108,10 @@ writing into them changes the mesh; they stay valid as long as any of them or th
 Validates the mesh and returns the figures `isovdb check` reports under "mesh": vertices,
 referenced_vertices, triangles, edges, boundary_edges, non_manifold_edges,
 non_manifold_vertices, inconsistently_oriented_edges, degenerate_triangles, components,
-euler_characteristic, self_intersecting_pairs (-1 when self_intersections=False), closed,
-manifold, and per component its triangles, vertices, edges, Euler characteristic, closed,
-manifold and genus. Exact (CGAL predicates); parallel.)doc")
+euler_characteristic, signed_volume (positive when the triangles face outward),
+self_intersecting_pairs (-1 when self_intersections=False), closed, manifold, and per
+component its triangles, vertices, Euler characteristic, closed, genus and signed_volume
+(negative for a cavity). Exact (CGAL predicates); parallel.)doc")
       .def(
           "write",
           [](const PyMesh& self, const std::filesystem::path& path) {

@@ -28,6 +28,19 @@ def test_every_method_gives_a_closed_genus_one_torus(method, torus_volume):
     assert mesh.statistics["contour"]["triangles"] == mesh.triangle_count
 
 
+@pytest.mark.parametrize("method", ["adaptive", "regular", "vdb"])
+def test_every_method_faces_outward_on_masks_and_scalars(method, torus_volume):
+    # Counter-clockwise seen from outside: a body's signed volume is positive, a cavity's negative.
+    assert isovdb.extract(torus_volume, method=method).check()["signed_volume"] > 0
+    z, y, x = np.mgrid[0:40, 0:40, 0:40]
+    r = np.sqrt((x - 19.6) ** 2 + (y - 20.3) ** 2 + (z - 19.8) ** 2).astype(np.float32)
+    body = isovdb.extract(isovdb.from_numpy(12.0 - r), method=method, iso=0.5).check()
+    assert body["closed"] and body["signed_volume"] > 0
+    # High outside: the inside (value > iso) surrounds the ball, whose surface faces into it.
+    cavity = isovdb.extract(isovdb.from_numpy(r), method=method, iso=12.0, boundary="open").check()
+    assert cavity["closed"] and cavity["signed_volume"] < 0
+
+
 def test_adaptive_uses_far_fewer_triangles_than_regular(torus_volume):
     regular = isovdb.extract(torus_volume, method="regular")
     adaptive = isovdb.extract(torus_volume, method="adaptive")

@@ -29,9 +29,12 @@ mesh::Mesh contourWithOpenVdb(const volume::Volume& field, const VdbMesherOption
   mesh.positions.resize(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) mesh.positions[i] = {points[i][0], points[i][1], points[i][2]};
   mesh.triangles.reserve(triangles.size() + 2 * quads.size());
-  // volumeToMesh orients faces towards increasing values; for a distance field
-  // (inside = below iso) that is outwards, for a scalar (inside = above) inwards.
-  const bool flip = field.kind() == volume::VolumeKind::Scalar;
+  // volumeToMesh winds its faces clockwise seen from the side of lower values (Houdini's
+  // front faces), unless the grid's class is not a level set: then it inverts them
+  // (VolumeToMesh.h, `invertSurfaceOrientation`). We write counter-clockwise faces seen
+  // from outside: outside is above the isovalue on a distance field, below it on a scalar.
+  const bool levelSetClass = grid.getGridClass() == openvdb::GRID_LEVEL_SET;
+  const bool flip = (field.kind() == volume::VolumeKind::Scalar) != levelSetClass;
   auto emit = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
     if (flip)
       mesh.triangles.push_back({a, c, b});

@@ -11,6 +11,8 @@
 #include <string>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <tbb/blocked_range.h>
 #include <tbb/combinable.h>
 #include <tbb/parallel_for.h>
@@ -253,12 +255,18 @@ std::vector<ComponentReport> buildComponents(const Mesh& mesh, const std::vector
   std::vector<ComponentReport> components;
   for (std::size_t t = 0; t < triangleCount; ++t) {
     if (flags[t] == kCollapsed) continue;
-    std::uint32_t& l = label[root[mesh.triangles[t][0]]];
+    const Triangle& tri = mesh.triangles[t];
+    std::uint32_t& l = label[root[tri[0]]];
     if (l == kNone) {
       l = static_cast<std::uint32_t>(components.size());
       components.emplace_back();
     }
     ++components[l].triangles;
+    // The tetrahedron (origin, a, b, c): summed over a closed surface, the volume it encloses.
+    const auto corner = [&](int k) {
+      return Eigen::Map<const Eigen::Vector3f>(mesh.positions[tri[static_cast<std::size_t>(k)]].data()).cast<double>();
+    };
+    components[l].signedVolume += corner(0).dot(corner(1).cross(corner(2))) / 6.0;
   }
   std::vector<std::uint8_t> componentFlags(components.size(), 0);
   for (std::size_t v = 0; v < n; ++v) {
@@ -315,6 +323,7 @@ MeshReport validateMesh(const Mesh& mesh, const ValidateOptions& options) {
 
   report.componentReports = buildComponents(mesh, flags, figures);
   report.components = static_cast<std::int64_t>(report.componentReports.size());
+  for (const ComponentReport& c : report.componentReports) report.signedVolume += c.signedVolume;
 
   if (options.selfIntersections) report.selfIntersectingPairs = countSelfIntersections(mesh);
   return report;

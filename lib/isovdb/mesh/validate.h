@@ -34,6 +34,10 @@ struct ComponentReport {
   /// (2 - χ) / 2 for a closed manifold component; -1 otherwise, and -1 when
   /// 2 - χ is odd (a non-orientable surface such as RP²).
   std::int64_t genus = -1;
+  /// Volume enclosed, signed: positive when a closed component's triangles face
+  /// outward (counter-clockwise seen from outside), negative for a cavity's or an
+  /// inside-out one's; meaningless for an open component.
+  double signedVolume = 0.0;
 };
 
 /// What validateMesh() found. Counts are exact; see the file comment for
@@ -55,6 +59,7 @@ struct MeshReport {
   std::int64_t degenerateTriangles = 0;
   std::int64_t components = 0;           ///< connected through shared vertices
   std::int64_t eulerCharacteristic = 0;  ///< referencedVertices - edges + triangles (not collapsed)
+  double signedVolume = 0.0;             ///< sum of the components' (ComponentReport::signedVolume)
   /// Intersecting triangle pairs (self_intersection.h); -1 when not checked.
   std::int64_t selfIntersectingPairs = -1;
   bool closed = true;    ///< no boundary edge and no non-manifold edge (true for an empty mesh)

@@ -25,13 +25,15 @@ Statistics::Json toJson(const mesh::MeshReport& report) {
   json["self_intersecting_pairs"] = report.selfIntersectingPairs;
   json["components"] = report.components;
   json["euler_characteristic"] = report.eulerCharacteristic;
+  json["signed_volume"] = report.signedVolume;
   Statistics::Json components = Statistics::Json::array();
   for (const mesh::ComponentReport& c : report.componentReports) {
     components.push_back({{"triangles", c.triangles},
                           {"vertices", c.vertices},
                           {"euler_characteristic", c.eulerCharacteristic},
                           {"closed", c.closed},
-                          {"genus", c.genus}});
+                          {"genus", c.genus},
+                          {"signed_volume", c.signedVolume}});
   }
   // Thousands of specks would drown the report: keep the largest 10 in the JSON.
   if (components.size() > 10) {
