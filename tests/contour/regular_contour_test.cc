@@ -316,7 +316,8 @@ TEST_P(RegularTopologies, SurfaceCellTreeGivesTheSameMeshAndSeamAsTheFullTree) {
     const cell::MetaCellSamples samples =
         cell::makeMetaCellSamples(32, {32, -64, 0}, [&](int, int, int) { return float(d(rng)); });
     RegularContourStats fullStats, surfaceStats;
-    const MetaCellMesh full = contourRegularMetaCell(samples, octree::buildOctree(samples, settings), settings, &fullStats);
+    const MetaCellMesh full =
+        contourRegularMetaCell(samples, octree::buildOctree(samples, settings), settings, &fullStats);
     const MetaCellMesh surface =
         contourRegularMetaCell(samples, octree::surfaceCellTree(samples, settings.iso), settings, &surfaceStats);
     ASSERT_GT(full.mesh.triangles.size(), 0u);

@@ -82,8 +82,9 @@ TEST(SurfaceCellTree, OnlyRegularModeWithUnitCellsReadsOnlySurfaceCells) {
 }
 
 TEST(SurfaceCellTree, BuildContourTreeChoosesByTheSettings) {
-  const cell::MetaCellSamples samples = cell::makeMetaCellSamples(
-      32, {0, 0, 0}, [](int x, int y, int z) { return std::sqrt((x - 16.2) * (x - 16.2) + (y - 15.9) * (y - 15.9) + (z - 16.4) * (z - 16.4)) - 9.0; });
+  const cell::MetaCellSamples samples = cell::makeMetaCellSamples(32, {0, 0, 0}, [](int x, int y, int z) {
+    return std::sqrt((x - 16.2) * (x - 16.2) + (y - 15.9) * (y - 15.9) + (z - 16.4) * (z - 16.4)) - 9.0;
+  });
   const std::size_t surface = buildContourTree(samples, kRegular).leafCount();
   const std::size_t full = buildOctree(samples, kRegular).leafCount();
   EXPECT_EQ(surface, crossedLeavesOfRegularTree(samples, 0.0f).size());

@@ -45,16 +45,16 @@ Vec3f slideIntoCell(const Vec3f& x, const Vec3f& d, std::array<int, 3> cellOrigi
 DualVertex computeDualVertex(const cell::MetaCellSamples& samples, std::array<int, 3> cellOrigin, int cellSize,
                              std::uint16_t edgeMask, const DualVertexOptions& options) {
   EdgeIntersection hit;
-  return dualVertexOfCrossings(samples, cellOrigin, cellSize, edgeMask, options,
-                               [&](const std::array<int, 3>& start, int axis) -> const EdgeIntersection* {
-                                 std::array<int, 3> end = start;
-                                 end[static_cast<std::size_t>(axis)] += cellSize;
-                                 if (isInside(samples.value(start), options.iso) == isInside(samples.value(end), options.iso))
-                                   return nullptr;  // not bipolar
-                                 const bool found =
-                                     intersectEdge(samples, start, axis, cellSize, options.iso, hit, options.sharpFeatures);
-                                 return found ? &hit : nullptr;
-                               });
+  return dualVertexOfCrossings(
+      samples, cellOrigin, cellSize, edgeMask, options,
+      [&](const std::array<int, 3>& start, int axis) -> const EdgeIntersection* {
+        std::array<int, 3> end = start;
+        end[static_cast<std::size_t>(axis)] += cellSize;
+        if (isInside(samples.value(start), options.iso) == isInside(samples.value(end), options.iso))
+          return nullptr;  // not bipolar
+        const bool found = intersectEdge(samples, start, axis, cellSize, options.iso, hit, options.sharpFeatures);
+        return found ? &hit : nullptr;
+      });
 }
 
 DualVertex dualVertexFromCrossings(const cell::MetaCellSamples& samples, std::array<int, 3> cellOrigin, int cellSize,
@@ -85,9 +85,7 @@ DualVertex dualVertexFromCrossings(const cell::MetaCellSamples& samples, std::ar
   // moves onto the cell's boundary, no farther than the slack.
   for (int a = 0; a < 3; ++a)
     x[a] = std::clamp(x[a], static_cast<float>(cellOrigin[a]), static_cast<float>(cellOrigin[a] + cellSize));
-  v.qefError = inside && !options.sharpFeatures
-                   ? s.error
-                   : qefError(points, normals, x);
+  v.qefError = inside && !options.sharpFeatures ? s.error : qefError(points, normals, x);
   for (int a = 0; a < 3; ++a) v.position[a] = x[a] + static_cast<float>(samples.origin[a]);
   return v;
 }

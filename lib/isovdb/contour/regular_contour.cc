@@ -2,6 +2,8 @@
 // Copyright Contributors to the isovdb project.
 #include "isovdb/contour/regular_contour.h"
 
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -35,16 +37,13 @@ constexpr std::size_t kGrain = 256;
 
 /// Shape quality of a triangle in [0, 1]: 4 sqrt(3) area / sum of squared edge lengths (1 = equilateral).
 double triangleQuality(const mesh::Vec3f& a, const mesh::Vec3f& b, const mesh::Vec3f& c) noexcept {
-  double u[3], v[3], w[3];
-  for (int i = 0; i < 3; ++i) {
-    u[i] = double(b[i]) - a[i];
-    v[i] = double(c[i]) - a[i];
-    w[i] = double(c[i]) - b[i];
-  }
-  const double cx = u[1] * v[2] - u[2] * v[1], cy = u[2] * v[0] - u[0] * v[2], cz = u[0] * v[1] - u[1] * v[0];
-  const double area2 = std::sqrt(cx * cx + cy * cy + cz * cz);  // twice the area
-  const double sum = u[0] * u[0] + u[1] * u[1] + u[2] * u[2] + v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + w[0] * w[0] +
-                     w[1] * w[1] + w[2] * w[2];
+  const auto point = [](const mesh::Vec3f& p) -> Eigen::Vector3d {
+    return Eigen::Map<const Eigen::Vector3f>(p.data()).cast<double>();
+  };
+  const Eigen::Vector3d pa = point(a), pb = point(b), pc = point(c);
+  const Eigen::Vector3d u = pb - pa, v = pc - pa, w = pc - pb;
+  const double area2 = u.cross(v).norm();  // twice the area
+  const double sum = u.squaredNorm() + v.squaredNorm() + w.squaredNorm();
   return sum > 0.0 ? 2.0 * std::sqrt(3.0) * area2 / sum : 0.0;
 }
 

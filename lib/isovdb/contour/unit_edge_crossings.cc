@@ -21,8 +21,9 @@ UnitEdgeCrossings::UnitEdgeCrossings(const cell::MetaCellSamples& samples, float
   }
   for (int k = 0; k <= s; ++k)
     for (int j = 0; j <= s; ++j) {
-      const std::size_t row = (static_cast<std::size_t>(k) * static_cast<std::size_t>(s + 1) + static_cast<std::size_t>(j)) *
-                              static_cast<std::size_t>(wordsPerRow_);
+      const std::size_t row =
+          (static_cast<std::size_t>(k) * static_cast<std::size_t>(s + 1) + static_cast<std::size_t>(j)) *
+          static_cast<std::size_t>(wordsPerRow_);
       for (int w = 0; w < wordsPerRow_; ++w) {
         const int i0 = 64 * w;
         const int starts = std::min(64, s + 1 - i0);  // edge starts i0 .. i0 + starts - 1 along y and z
@@ -34,7 +35,8 @@ UnitEdgeCrossings::UnitEdgeCrossings(const cell::MetaCellSamples& samples, float
         if (k < s) bits[2] = here ^ phases.row(i0, j, k + 1, starts);
         for (int axis = 0; axis < 3; ++axis) {
           auto& crossings = crossings_[static_cast<std::size_t>(axis)];
-          bipolar_[static_cast<std::size_t>(axis)][row + static_cast<std::size_t>(w)] = bits[static_cast<std::size_t>(axis)];
+          bipolar_[static_cast<std::size_t>(axis)][row + static_cast<std::size_t>(w)] =
+              bits[static_cast<std::size_t>(axis)];
           before_[static_cast<std::size_t>(axis)][row + static_cast<std::size_t>(w)] =
               static_cast<std::uint32_t>(crossings.size());
           for (std::uint64_t b = bits[static_cast<std::size_t>(axis)]; b != 0; b &= b - 1) {
@@ -55,8 +57,8 @@ const cell::EdgeIntersection* UnitEdgeCrossings::find(const std::array<int, 3>& 
   const std::uint64_t bits = bipolar_[static_cast<std::size_t>(axis)][word];
   const std::uint64_t bit = std::uint64_t{1} << (start[0] & 63);
   if ((bits & bit) == 0) return nullptr;
-  const std::uint32_t index = before_[static_cast<std::size_t>(axis)][word] +
-                              static_cast<std::uint32_t>(std::popcount(bits & (bit - 1)));
+  const std::uint32_t index =
+      before_[static_cast<std::size_t>(axis)][word] + static_cast<std::uint32_t>(std::popcount(bits & (bit - 1)));
   return &crossings_[static_cast<std::size_t>(axis)][index];
 }
 

@@ -38,7 +38,7 @@ class UnitEdgeCrossings {
   std::size_t size() const noexcept { return crossings_[0].size() + crossings_[1].size() + crossings_[2].size(); }
 
  private:
-  int size_ = 0;        // S
+  int size_ = 0;         // S
   int wordsPerRow_ = 0;  // 64-bit words per row of S + 1 edge starts along x
   // Per axis: bit i of row (j, k) is the edge from sample (i, j, k); the set bits
   // before each word; the crossings in row and bit order.

@@ -26,9 +26,9 @@ LinearOctree surfaceCellTree(const cell::MetaCellSamples& samples, float iso) {
     for (int j = 0; j < size; ++j)
       for (int i0 = 0; i0 < size; i0 += kCellsPerRun) {
         const int cells = std::min(kCellsPerRun, size - i0);
-        const std::array<std::uint64_t, 4> rows{
-            phases.row(i0, j, k, cells + 1), phases.row(i0, j + 1, k, cells + 1),
-            phases.row(i0, j, k + 1, cells + 1), phases.row(i0, j + 1, k + 1, cells + 1)};
+        const std::array<std::uint64_t, 4> rows{phases.row(i0, j, k, cells + 1), phases.row(i0, j + 1, k, cells + 1),
+                                                phases.row(i0, j, k + 1, cells + 1),
+                                                phases.row(i0, j + 1, k + 1, cells + 1)};
         const std::uint64_t all = rows[0] & rows[1] & rows[2] & rows[3];
         const std::uint64_t any = rows[0] | rows[1] | rows[2] | rows[3];
         std::uint64_t crossed = (any | (any >> 1)) & ~(all & (all >> 1)) & SamplePhases::lowBits(cells);

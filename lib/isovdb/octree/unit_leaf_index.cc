@@ -10,8 +10,8 @@ namespace isovdb::octree {
 
 UnitLeafIndex::UnitLeafIndex(const LinearOctree& tree)
     : tree_(tree), size_(tree.metaCellSize()), wordsPerRow_((tree.metaCellSize() + 63) / 64) {
-  const std::size_t words = static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_) *
-                            static_cast<std::size_t>(wordsPerRow_);
+  const std::size_t words =
+      static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_) * static_cast<std::size_t>(wordsPerRow_);
   rows_.assign(words, 0);
   before_.assign(words, 0);
   const auto wordOf = [&](const std::array<int, 3>& v) {
@@ -36,7 +36,8 @@ UnitLeafIndex::UnitLeafIndex(const LinearOctree& tree)
     if (l.size != 1) continue;
     const std::size_t w = wordOf(l.origin);
     const std::uint64_t below = (std::uint64_t{1} << (l.origin[0] & 63)) - 1;
-    leafOfRank_[before_[w] + static_cast<std::uint32_t>(std::popcount(rows_[w] & below))] = static_cast<std::uint32_t>(i);
+    leafOfRank_[before_[w] + static_cast<std::uint32_t>(std::popcount(rows_[w] & below))] =
+        static_cast<std::uint32_t>(i);
   }
 }
 

@@ -34,10 +34,10 @@ class UnitLeafIndex {
 
  private:
   const LinearOctree& tree_;
-  int size_ = 0;         // S
-  int wordsPerRow_ = 0;  // 64-bit words per row of S cells
-  std::vector<std::uint64_t> rows_;     // bit x of row (y, z): a 1-voxel leaf at (x, y, z)
-  std::vector<std::uint32_t> before_;   // set bits before each word
+  int size_ = 0;                           // S
+  int wordsPerRow_ = 0;                    // 64-bit words per row of S cells
+  std::vector<std::uint64_t> rows_;        // bit x of row (y, z): a 1-voxel leaf at (x, y, z)
+  std::vector<std::uint32_t> before_;      // set bits before each word
   std::vector<std::uint32_t> leafOfRank_;  // row-order rank -> leaf index (Z order)
 };
 
