@@ -66,7 +66,7 @@ void addCheckCommand(CLI::App& app, Context& context) {
       ok = ok && matches;
     }
     stats["passed"] = ok;
-    reportStatistics(stats, state->statsPath);
+    reportStatistics(stats, state->statsPath, context);
     context.exitCode = ok ? 0 : 1;
   });
 }

@@ -17,6 +17,7 @@ namespace isovdb::cli {
 /// State shared by all subcommands: global flags and the exit code of the one that ran.
 struct Context {
   bool quiet = false;
+  bool verbose = false;  ///< print every figure, not the summary
   int exitCode = 0;
   std::unique_ptr<TerminalProgress> progress;
   TerminalProgress* interrupter() {
@@ -34,12 +35,14 @@ void addConvertCommand(CLI::App& app, Context& context);
 void addMorphCommand(CLI::App& app, Context& context);
 void addReservoirCommand(CLI::App& app, Context& context);
 
-/// Prints a statistics report as "section.key: value" lines on stdout.
-void printStatistics(const pipeline::Statistics& stats);
+/// Prints a statistics report on stdout: every figure as "section.key: value" lines,
+/// or a summary of at most ~15 lines (input, what was built, the check, time, memory, output).
+void printStatistics(const pipeline::Statistics& stats, bool everyFigure);
 
 /// The end of every subcommand: the peak memory recorded, the figures written to
-/// `statsPath` as JSON (when not empty) and printed on stdout (`--quiet` silences the
-/// progress on stderr, not the figures).
-void reportStatistics(pipeline::Statistics& stats, const std::string& statsPath);
+/// `statsPath` as JSON (when not empty) and printed on stdout, summarised unless
+/// `--verbose` or `everyFigure` (`--quiet` silences the progress on stderr, not the figures).
+void reportStatistics(pipeline::Statistics& stats, const std::string& statsPath, const Context& context,
+                      bool everyFigure = false);
 
 }  // namespace isovdb::cli

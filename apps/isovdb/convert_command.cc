@@ -52,7 +52,7 @@ void addConvertCommand(CLI::App& app, Context& context) {
         stats["output"]["header"] = written.header.string();
       }
     }
-    reportStatistics(stats, state->statsPath);
+    reportStatistics(stats, state->statsPath, context);
   });
 }
 

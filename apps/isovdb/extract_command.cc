@@ -70,7 +70,7 @@ void addExtractCommand(CLI::App& app, Context& context) {
                                                       report.manifold && report.selfIntersectingPairs <= 0);
       stats["passed"] = passed;
     }
-    reportStatistics(stats, state->statsPath);
+    reportStatistics(stats, state->statsPath, context);
     // Like `isovdb check`: a mesh that fails the check is written, and the run exits 1.
     context.exitCode = passed ? 0 : 1;
   });

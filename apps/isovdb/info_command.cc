@@ -34,7 +34,7 @@ void addInfoCommand(CLI::App& app, Context& context) {
     pipeline::InputOptions options = state->flags.toOptions(state->input);
     options.sampleStatistics = !pipeline::isVdbPath(state->input);  // range, percentiles, active fraction
     pipeline::loadVolume(state->input, options, context.interrupter(), &stats);
-    reportStatistics(stats, state->statsPath);
+    reportStatistics(stats, state->statsPath, context, /*everyFigure=*/true);  // the figures are the report
   });
 }
 

@@ -16,6 +16,9 @@ int main(int argc, char** argv) {
   app.fallthrough();
   cli::Context context;
   app.add_flag("-q,--quiet", context.quiet, "No progress on stderr");
+  app.add_flag(
+      "-v,--verbose", context.verbose,
+      "Print every figure of the run (\"section.key: value\"), not the summary (--stats FILE writes them as JSON)");
   cli::addInfoCommand(app, context);
   cli::addSdfCommand(app, context);
   cli::addExtractCommand(app, context);

@@ -165,7 +165,7 @@ void addMorphCommand(CLI::App& app, Context& context) {
       pipeline::Statistics::StageTimer timer(&stats, "check");
       stats["check"] = pipeline::meshReportJson(mesh, {.selfIntersections = false});
     }
-    reportStatistics(stats, state->statsPath);
+    reportStatistics(stats, state->statsPath, context);
   });
 }
 

@@ -47,7 +47,7 @@ void addOctreeCommand(CLI::App& app, Context& context) {
     const volume::Volume input =
         pipeline::loadVolume(state->input, state->flags.toOptions(state->input), context.interrupter(), &stats);
     pipeline::inspectOctree(input, options, stats, context.interrupter());
-    reportStatistics(stats, state->statsPath);
+    reportStatistics(stats, state->statsPath, context);
   });
 }
 

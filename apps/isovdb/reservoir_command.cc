@@ -58,7 +58,7 @@ void addReservoirCommand(CLI::App& app, Context& context) {
     stats["output"]["path"] = state->output;
     stats["output"]["triangles"] = mesh.triangleCount();
     stats["output"]["vertices"] = mesh.vertexCount();
-    reportStatistics(stats, state->statsPath);
+    reportStatistics(stats, state->statsPath, context);
     context.exitCode = 0;
   });
 }

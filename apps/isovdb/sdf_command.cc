@@ -33,7 +33,7 @@ void addSdfCommand(CLI::App& app, Context& context) {
         pipeline::loadVolume(state->input, state->flags.toOptions(state->input), context.interrupter(), &stats);
     pipeline::writeDistanceFieldVdb(input, distance, state->output, state->gridName, context.interrupter(), &stats);
     stats["output"]["path"] = state->output;
-    reportStatistics(stats, state->statsPath);
+    reportStatistics(stats, state->statsPath, context);
   });
 }
 

@@ -141,7 +141,13 @@ TEST(CliCheck, FailsOnATopologyMismatch) {
   ASSERT_EQ(runCommand(cliPath().string() + " -q extract " + sphere.string() + " -o " + mesh.string(), &output), 0);
   EXPECT_EQ(runCommand(cliPath().string() + " -q check " + mesh.string() + " --against " + torus.string(), &output), 1)
       << output;
-  EXPECT_NE(output.find("topology.matches: false"), std::string::npos) << output;
+  EXPECT_NE(output.find("the mesh does NOT match it"), std::string::npos) << output;  // the summary
+  EXPECT_NE(output.find("passed: NO"), std::string::npos) << output;
+  EXPECT_EQ(
+      runCommand(cliPath().string() + " -q check " + mesh.string() + " --against " + torus.string() + " --verbose",
+                 &output),
+      1);
+  EXPECT_NE(output.find("topology.matches: false"), std::string::npos) << output;  // every figure
 }
 
 // --check fails the run like `isovdb check` does: plain dual contouring (no
@@ -205,10 +211,10 @@ TEST(CliSdf, WritesALevelSetThatOpenVdbReads) {
 
   // And the .vdb is itself a valid input: contour it directly. It is the field
   // `extract` computes in memory from the same mask, so the meshes are the same bytes.
-  ASSERT_EQ(
-      runCommand(cliPath().string() + " -q extract " + vdb.string() + " -o " + (dir / "m.ply").string() + " --check",
-                 &output),
-      0)
+  ASSERT_EQ(runCommand(cliPath().string() + " -q extract " + vdb.string() + " -o " + (dir / "m.ply").string() +
+                           " --check --verbose",
+                       &output),
+            0)
       << output;
   EXPECT_NE(output.find("check.closed: true"), std::string::npos) << output;
   ASSERT_EQ(runCommand(cliPath().string() + " -q extract " + input.string() + " -o " + (dir / "direct.ply").string(),
@@ -250,6 +256,24 @@ TEST(CliExtract, SharpFeaturesOnALevelSetKeepTheGuarantees) {
   }
   // The rims' leaves are refined (at 0.25 the QEF criterion alone leaves them coarse).
   EXPECT_GT(triangles[1], 2 * triangles[0]);
+}
+
+TEST(CliExtract, PrintsAShortSummaryAndEveryFigureWithVerbose) {
+  TempDir dir;
+  const auto torus = writeShape(dir, samples::ShapeKind::Torus, 48);
+  const std::string run = cliPath().string() + " -q extract " + torus.string() + " -o " + (dir / "t.ply").string() +
+                          " --method regular --check";
+  std::string summary, every;
+  ASSERT_EQ(runCommand(run, &summary), 0) << summary;
+  ASSERT_EQ(runCommand(run + " --verbose", &every), 0) << every;
+  const auto lines = [](const std::string& s) { return std::count(s.begin(), s.end(), '\n'); };
+  EXPECT_LE(lines(summary), 15) << summary;
+  EXPECT_GT(lines(every), 60) << every;
+  for (const char* fragment : {"input: ", "distance field: ", "mesh: ", " triangles",
+                               "check: closed, manifold, 0 self-intersecting pairs, Euler characteristic 0",
+                               "passed: yes", "time: read ", "peak memory: ", "output: "})
+    EXPECT_NE(summary.find(fragment), std::string::npos) << fragment << " in\n" << summary;
+  EXPECT_NE(every.find("check.euler_characteristic: 0"), std::string::npos) << every;
 }
 
 TEST(CliInfo, ReportsTheSparseGrid) {
