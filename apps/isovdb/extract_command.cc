@@ -1,11 +1,15 @@
 // SPDX-License-Identifier: MPL-2.0
 // Copyright Contributors to the isovdb project.
 // `isovdb extract IN -o OUT.ply`: the main job, volume -> closed triangle mesh.
+#include <filesystem>
+
 #include "commands.h"
 #include "input_flags.h"
 #include "isovdb/errors.h"
 #include "isovdb/io/atomic_file.h"
 #include "isovdb/io/mesh_file.h"
+#include "isovdb/io/png_file.h"
+#include "isovdb/mesh/preview.h"
 #include "isovdb/pipeline/extract.h"
 #include "isovdb/pipeline/extract_to_file.h"
 #include "isovdb/pipeline/load_volume.h"
@@ -19,6 +23,7 @@ void addExtractCommand(CLI::App& app, Context& context) {
     std::string input, output, statsPath;
     InputFlags flags;
     pipeline::ExtractChoices choices;
+    std::string previewPath;
     bool check = false;
     bool noSelfIntersections = false;
   };
@@ -32,6 +37,9 @@ void addExtractCommand(CLI::App& app, Context& context) {
   command->add_flag("--no-self-intersections", state->noSelfIntersections,
                     "With --check: skip the self-intersection test");
   command->add_option("--stats", state->statsPath, "Write every figure shown as JSON");
+  command->add_option("--preview", state->previewPath,
+                      "Draw the mesh into this .png (oblique view; outside faces bone-coloured, faces seen from "
+                      "behind red)");
   state->flags.add(*command);
   command->callback([state, &context] {
     mesh::Mesh mesh;
@@ -40,6 +48,11 @@ void addExtractCommand(CLI::App& app, Context& context) {
       throw InputError("'" + state->output + "': unknown mesh format, expected .ply or .obj");
     io::AtomicFile::checkWritable(state->output);
     if (!state->statsPath.empty()) io::AtomicFile::checkWritable(state->statsPath);
+    if (!state->previewPath.empty()) {
+      if (std::filesystem::path(state->previewPath).extension() != ".png")
+        throw InputError("'" + state->previewPath + "': --preview writes a .png");
+      io::AtomicFile::checkWritable(state->previewPath);
+    }
 
     pipeline::Statistics stats;
     volume::Volume input =
@@ -69,6 +82,13 @@ void addExtractCommand(CLI::App& app, Context& context) {
       passed = pipeline::passesGuarantees(report) || (options.boundary == pipeline::BoundaryMode::Open &&
                                                       report.manifold && report.selfIntersectingPairs <= 0);
       stats["passed"] = passed;
+    }
+    if (!state->previewPath.empty()) {
+      pipeline::Statistics::StageTimer timer(&stats, "preview");
+      // A streamed mesh was never held whole: the picture reads it back.
+      const mesh::PreviewImage image = mesh::renderPreview(state->check ? mesh : io::readMesh(state->output));
+      io::writePng(state->previewPath, image.width, image.height, 3, image.rgb);
+      stats["preview"]["path"] = state->previewPath;
     }
     reportStatistics(stats, state->statsPath, context);
     // Like `isovdb check`: a mesh that fails the check is written, and the run exits 1.

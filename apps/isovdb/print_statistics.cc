@@ -168,6 +168,7 @@ void printSummary(const Json& json) {
                 [](const Json& v) { return count(Json(v.get<std::int64_t>() >> 20)) + " MB"; }))
       .print();
   Line("output").add(part(section("output"), "path", text)).print();
+  Line("preview").add(part(section("preview"), "path", text)).print();
   std::printf("(every figure: --verbose, or --stats FILE.json)\n");
 }
 

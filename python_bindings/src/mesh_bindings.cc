@@ -5,8 +5,13 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
+#include <optional>
+
 #include "bindings.h"
 #include "isovdb/io/mesh_file.h"
+#include "isovdb/io/png_file.h"
+#include "isovdb/mesh/preview.h"
 #include "isovdb/mesh/validate.h"
 #include "isovdb/pipeline/mesh_report.h"
 
@@ -122,6 +127,24 @@ component its triangles, vertices, Euler characteristic, closed, genus and signe
 Writes the mesh by extension: .ply (binary little-endian, the same bytes as the CLI writes)
 or .obj, through a temporary file. Raises ValueError for another extension, OSError when
 the path is not writable.)doc")
+      .def(
+          "render",
+          [](const PyMesh& self, const std::optional<std::filesystem::path>& path, int width, int height) {
+            mesh::PreviewImage image;
+            {
+              py::gil_scoped_release release;
+              image = mesh::renderPreview(self.mesh, {.width = width, .height = height});
+              if (path) io::writePng(*path, image.width, image.height, 3, image.rgb);
+            }
+            py::array_t<std::uint8_t> pixels({image.height, image.width, 3});
+            std::copy(image.rgb.begin(), image.rgb.end(), pixels.mutable_data());
+            return pixels;
+          },
+          py::arg("path") = py::none(), py::arg("width") = 800, py::arg("height") = 600, R"doc(
+A shaded picture of the mesh, as `isovdb extract --preview` draws it: an oblique view from
+the front, right and above, faces seen from outside bone-coloured, faces seen from behind
+red. Returns a (height, width, 3) uint8 array (display it with matplotlib's imshow or
+IPython); writes it as a PNG too when `path` is given.)doc")
       .def("__repr__", [](const PyMesh& m) {
         return "<isovdb.Mesh " + std::to_string(m.mesh.vertexCount()) + " vertices, " +
                std::to_string(m.mesh.triangleCount()) + " triangles>";

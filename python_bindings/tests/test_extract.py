@@ -41,6 +41,15 @@ def test_every_method_faces_outward_on_masks_and_scalars(method, torus_volume):
     assert cavity["closed"] and cavity["signed_volume"] < 0
 
 
+def test_render_draws_the_mesh(torus_volume, tmp_path):
+    mesh = isovdb.extract(torus_volume, method="adaptive")
+    picture = mesh.render(tmp_path / "torus.png", width=320, height=240)
+    assert picture.shape == (240, 320, 3) and picture.dtype == np.uint8
+    drawn = (picture != picture[0, 0]).any(axis=2)
+    assert 0.05 < drawn.mean() < 0.9  # the torus, fitted into the picture
+    assert (tmp_path / "torus.png").read_bytes().startswith(b"\x89PNG")
+
+
 def test_adaptive_uses_far_fewer_triangles_than_regular(torus_volume):
     regular = isovdb.extract(torus_volume, method="regular")
     adaptive = isovdb.extract(torus_volume, method="adaptive")

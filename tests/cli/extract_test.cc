@@ -11,8 +11,10 @@
 #include <nlohmann/json.hpp>
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
+#include <stb_image.h>
 
 #include "generators/shapes.h"
+#include "isovdb/mesh/preview.h"
 #include "isovdb/volume/grids.h"
 #include "support/analytic_sdf.h"
 #include "support/test_support.h"
@@ -274,6 +276,36 @@ TEST(CliExtract, PrintsAShortSummaryAndEveryFigureWithVerbose) {
                                "passed: yes", "time: read ", "peak memory: ", "output: "})
     EXPECT_NE(summary.find(fragment), std::string::npos) << fragment << " in\n" << summary;
   EXPECT_NE(every.find("check.euler_characteristic: 0"), std::string::npos) << every;
+}
+
+TEST(CliExtract, PreviewDrawsTheStreamedMesh) {
+  TempDir dir;
+  const auto torus = writeShape(dir, samples::ShapeKind::Torus, 48);
+  const auto png = dir / "torus.png";
+  std::string output;
+  ASSERT_EQ(runCommand(cliPath().string() + " -q extract " + torus.string() + " -o " + (dir / "t.ply").string() +
+                           " --method adaptive --preview " + png.string(),
+                       &output),
+            0)
+      << output;
+  EXPECT_NE(output.find("preview: " + png.string()), std::string::npos) << output;
+  int width = 0, height = 0, channels = 0;
+  unsigned char* pixels = stbi_load(png.c_str(), &width, &height, &channels, 3);
+  ASSERT_NE(pixels, nullptr);
+  EXPECT_EQ(width, 800);
+  EXPECT_EQ(height, 600);
+  std::size_t object = 0;
+  for (int i = 0; i < width * height; ++i) object += pixels[3 * i] != mesh::kPreviewBackground;
+  stbi_image_free(pixels);
+  EXPECT_GT(object, std::size_t(width * height / 20));  // the torus fills part of the picture
+  // Only .png; nothing written on the error.
+  const auto bad = dir / "torus.jpg";
+  EXPECT_EQ(runCommand(cliPath().string() + " -q extract " + torus.string() + " -o " + (dir / "u.ply").string() +
+                           " --preview " + bad.string(),
+                       &output),
+            2);
+  EXPECT_NE(output.find("--preview writes a .png"), std::string::npos) << output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "u.ply"));
 }
 
 TEST(CliInfo, ReportsTheSparseGrid) {

@@ -3,13 +3,13 @@
 #include "isovdb/morph/slice_image.h"
 
 #include <stb_image.h>
-#include <stb_image_write.h>
 
 #include <fstream>
 #include <iterator>
 #include <string>
 
 #include "isovdb/errors.h"
+#include "isovdb/io/png_file.h"
 #include "isovdb/io/atomic_file.h"
 #include "isovdb/io/path_util.h"
 #include "isovdb/morph/contour_fill.h"
@@ -52,15 +52,7 @@ Mask2 readSliceImage(const std::filesystem::path& path) {
 void writeSliceImage(const std::filesystem::path& path, const Mask2& mask) {
   std::vector<std::uint8_t> grey(mask.inside.size());
   for (std::size_t i = 0; i < grey.size(); ++i) grey[i] = mask.inside[i] ? 255 : 0;
-  // stb calls back from C: collect the bytes, write them (and maybe throw) afterwards.
-  std::string png;
-  const int ok = stbi_write_png_to_func(
-      [](void* out, void* data, int size) { static_cast<std::string*>(out)->append(static_cast<char*>(data), size); },
-      &png, mask.width, mask.height, 1, grey.data(), mask.width);
-  if (!ok) throw IoError("'" + path.string() + "': PNG encoding failed");
-  io::AtomicFile file(path);
-  file.write(png);
-  file.commit();
+  io::writePng(path, mask.width, mask.height, 1, grey);
 }
 
 }  // namespace isovdb::morph
