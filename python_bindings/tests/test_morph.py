@@ -52,6 +52,9 @@ def test_volume_with_every_fourth_slice_labelled(tmp_path):
     assert inside[20, 19, 16] and not inside[2, 2, 16]
     report = isovdb.extract(sdf, method="adaptive").check()
     assert report["closed"] and report["components"] == 1
+    # A morphed stack meshes outward in every method, like any other distance field.
+    for method in ("vdb", "regular", "adaptive"):
+        assert isovdb.extract(sdf, method=method).check()["signed_volume"] > 0, method
 
 
 @pytest.mark.parametrize("interpolate", ["nearest", "linear"])
