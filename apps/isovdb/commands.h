@@ -30,6 +30,7 @@ void addInfoCommand(CLI::App& app, Context& context);
 void addSdfCommand(CLI::App& app, Context& context);
 void addExtractCommand(CLI::App& app, Context& context);
 void addCheckCommand(CLI::App& app, Context& context);
+void addCompareCommand(CLI::App& app, Context& context);
 void addOctreeCommand(CLI::App& app, Context& context);
 void addConvertCommand(CLI::App& app, Context& context);
 void addMorphCommand(CLI::App& app, Context& context);

@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   cli::addSdfCommand(app, context);
   cli::addExtractCommand(app, context);
   cli::addCheckCommand(app, context);
+  cli::addCompareCommand(app, context);
   cli::addOctreeCommand(app, context);
   cli::addConvertCommand(app, context);
   cli::addMorphCommand(app, context);

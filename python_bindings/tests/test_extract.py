@@ -227,3 +227,25 @@ def test_ctrl_c_stops_the_work_with_keyboard_interrupt(big_ball):
     # Stopped early: compared with a full run in the same moment, so a loaded machine
     # (ctest -j, CI) slows both alike.
     assert time.perf_counter() - start < delay + 0.5 * full_run, full_run
+
+
+def test_max_error_bounds_how_far_adaptive_vertices_stray_from_a_smooth_surface():
+    # The field: exp(-(r/30)^2) at 0.5 is a sphere of radius 30 sqrt(ln 2).
+    # Without a bound, adaptive mode put vertices 2.9 voxels off it.
+    n = 80
+    x, y, z = np.mgrid[0:n, 0:n, 0:n]  # from_numpy: the first axis is x
+    centre = np.array([39.3, 40.1, 38.7])
+    r = np.sqrt((x - centre[0]) ** 2 + (y - centre[1]) ** 2 + (z - centre[2]) ** 2)
+    field = isovdb.from_numpy(np.exp(-(r / 30.0) ** 2).astype(np.float32))
+    radius = 30.0 * np.sqrt(np.log(2.0))
+    counts = []
+    for bound in (1.0, 0.5, 0.25):
+        mesh = isovdb.extract(field, method="adaptive", iso=0.5, max_error=bound)
+        assert mesh.check()["closed"]
+        off = np.abs(np.linalg.norm(mesh.vertices - centre, axis=1) - radius)
+        # The regular mesh itself lies within a few hundredths of the sphere.
+        assert off.max() <= bound + 0.05, (bound, off.max())
+        counts.append(len(mesh.triangles))
+    assert counts[0] < counts[1] < counts[2]
+    with pytest.raises(TypeError):
+        isovdb.extract(field, method="adaptive", iso=0.5, max_error="tight")

@@ -14,6 +14,7 @@
 #include "isovdb/cell/dual_vertex.h"
 #include "isovdb/errors.h"
 #include "isovdb/octree/criteria.h"
+#include "isovdb/octree/surface_deviation.h"
 #include "isovdb/octree/surface_gap.h"
 
 namespace isovdb::octree {
@@ -66,6 +67,12 @@ constexpr std::int32_t kInternal = -1;
 /// feature, whose vertex the sharp-feature gap checks (a smooth leaf's planes are close).
 constexpr float kFeatureCone = 0.5f;
 
+/// The share of the error bound the full-resolution surface may stray from a leaf's vertex
+/// plane: the mesh around the vertex is not that plane but triangles to the neighbours'
+/// vertices, each off by as much in its own cell (measured: a share of 1 let a one-voxel
+/// bump under a leaf of E = 1 end 1.27 voxels from the adaptive mesh).
+constexpr float kPlaneShare = 0.5f;
+
 /// Result of evaluating one cell.
 struct Evaluation {
   OctreeLeaf leaf;
@@ -74,6 +81,7 @@ struct Evaluation {
   bool complex = false;
   bool geometric = false;   // split only because of the QEF criterion
   bool feature = false;     // of those, because of the sharp-feature gap
+  bool bounded = false;     // of those, because of the error bound (--max-error)
   bool multiSheet = false;  // split only because one vertex cannot stand for the cell (adaptive)
   bool hidden = false;      // split only because of a component hidden inside (adaptive)
   bool interiorOnly = false;
@@ -103,6 +111,11 @@ class Builder {
     ev.leaf.size = size;
     ev.leaf.origin = {c.xyz[0] * size, c.xyz[1] * size, c.xyz[2] * size};
     if (c.depth < depths_.minDepth) {
+      ev.split = true;
+      return ev;
+    }
+    if (c.depth < depths_.maxDepth && !options_.forcedSplits.empty() &&
+        std::binary_search(options_.forcedSplits.begin(), options_.forcedSplits.end(), key)) {
       ev.split = true;
       return ev;
     }
@@ -139,14 +152,18 @@ class Builder {
       // non-manifold, so such cells are refined; at the maximum depth each group
       // gets its vertex (contour/leaf_groups.h).
       ev.split = ev.multiSheet = true;
-    } else if (options_.qefTolerance >= 0.0f && ev.leaf.surface) {
+    } else if ((options_.qefTolerance >= 0.0f || options_.maxError > 0.0f) && ev.leaf.surface) {
       const cell::DualVertex v = cell::computeDualVertex(samples_, ev.leaf.origin, size, ev.leaf.bipolarEdges(),
                                                          cell::dualVertexOptions(settings_));
-      ev.split = ev.geometric = v.valid() && v.rmsError() > options_.qefTolerance;
+      ev.split = ev.geometric = v.valid() && options_.qefTolerance >= 0.0f && v.rmsError() > options_.qefTolerance;
+      if (!ev.split && v.valid() && options_.maxError > 0.0f) {
+        const Vec3f x = toMetaCellOffsets(v.position);
+        ev.split = ev.geometric = ev.bounded = surfaceDeviation(samples_, phases_, ev.leaf.origin, size, x,
+                                                                settings_.iso) > kPlaneShare * options_.maxError;
+      }
       if (!ev.split && settings_.sharpFeatures && v.valid() && v.minNormalDot < kFeatureCone) {
         // A few tangent planes of a curved crease meet off it while fitting almost exactly.
-        std::array<float, 3> x;
-        for (int a = 0; a < 3; ++a) x[a] = v.position[a] - static_cast<float>(samples_.origin[a]);
+        const Vec3f x = toMetaCellOffsets(v.position);
         ev.split = ev.geometric = ev.feature =
             surfaceGap(samples_, ev.leaf.origin, size, x, settings_.iso) > options_.featureTolerance;
       }
@@ -165,6 +182,11 @@ class Builder {
     return ev;
   }
 
+  Vec3f toMetaCellOffsets(const Vec3f& global) const noexcept {
+    return {global[0] - static_cast<float>(samples_.origin[0]), global[1] - static_cast<float>(samples_.origin[1]),
+            global[2] - static_cast<float>(samples_.origin[2])};
+  }
+
   void count(const Evaluation& ev) {
     if (!ev.classified) return;
     ++stats_.cellsClassified[ev.leaf.depth];
@@ -174,6 +196,7 @@ class Builder {
     stats_.complexCells += ev.complex;
     stats_.geometricSplits += ev.geometric;
     stats_.featureSplits += ev.feature;
+    stats_.errorBoundSplits += ev.bounded;
     stats_.multiSheetSplits += ev.multiSheet;
     stats_.hiddenComponentSplits += ev.hidden;
   }
@@ -398,6 +421,7 @@ OctreeBuildStats& OctreeBuildStats::operator+=(const OctreeBuildStats& o) {
   unresolvedComplexLeaves += o.unresolvedComplexLeaves;
   geometricSplits += o.geometricSplits;
   featureSplits += o.featureSplits;
+  errorBoundSplits += o.errorBoundSplits;
   multiSheetSplits += o.multiSheetSplits;
   hiddenComponentSplits += o.hiddenComponentSplits;
   balanceSplits += o.balanceSplits;

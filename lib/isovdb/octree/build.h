@@ -13,9 +13,9 @@
 ///   vertex cannot stand for them) or that hide a component of samples inside
 ///   (criteria.h, hasHiddenComponent), are subdivided; the tree is then kept 2:1
 ///   balanced (leaves that share a face, an edge or a corner differ by at most
-///   one depth); optionally a geometric criterion (QEF error above a
-///   tolerance; with sharp features, a vertex off a curved crease) refines
-///   further. For octree dual contouring + Ju–Udeshi.
+///   one depth); optionally geometric criteria (QEF error above a tolerance;
+///   the full-resolution surface farther than the error bound from the vertex's
+///   plane; with sharp features, a vertex off a curved crease) refine further. For octree dual contouring + Ju–Udeshi.
 /// Memory: O(leaves) beside the dense cell::MetaCellSamples block. Deterministic:
 /// the result does not depend on the number of threads.
 #pragma once
@@ -54,6 +54,13 @@ struct OctreeOptions {
   /// the zero level by the field's Lipschitz bound (surface_gap.h): on a curved rim the
   /// tangent planes of a coarse leaf meet outside the rim, with an almost exact fit.
   float featureTolerance = 0.05f;
+  /// Adaptive: also split a surface leaf where the full-resolution surface strays
+  /// farther than this (voxels) from the plane of its dual vertex (surface_deviation.h):
+  /// the adaptive mesh then stays within about this distance of the regular mesh; <= 0 off.
+  float maxError = -1.0f;
+  /// Cells split whatever the criteria say (sorted Morton keys): where the mesh of an
+  /// earlier pass broke the error bound (contour/error_bound.h).
+  std::vector<MortonKey> forcedSplits{};
   bool detectInteriorComponents = true;  ///< a cell with one-phase faces but a sample of the other phase inside
                                          ///< is complex (catches blobs that touch no face; one pass over such cells)
   bool parallel = true;                  ///< evaluate each level's cells with TBB (the result is the same)
@@ -78,8 +85,9 @@ struct OctreeBuildStats {
   std::size_t interiorComponents = 0;        ///< cells complex only through an interior component
   std::size_t complexCells = 0;              ///< complex cells found (subdivided or left at the maximum depth)
   std::size_t unresolvedComplexLeaves = 0;   ///< complex leaves at the maximum depth
-  std::size_t geometricSplits = 0;           ///< cells subdivided by the QEF criterion
+  std::size_t geometricSplits = 0;           ///< cells subdivided by a geometric criterion (QEF, error bound)
   std::size_t featureSplits = 0;             ///< of them, by the sharp-feature gap (OctreeOptions::sharpFeatures)
+  std::size_t errorBoundSplits = 0;          ///< of them, by the error bound (OctreeOptions::maxError)
   std::size_t multiSheetSplits = 0;          ///< adaptive: cells subdivided because their configuration has several
                                      ///< DMC groups or a doubled ambiguous face (one vertex cannot stand for them)
   std::size_t hiddenComponentSplits = 0;  ///< adaptive: cells subdivided because a component of samples hides

@@ -68,6 +68,7 @@ void inspectOctree(const volume::Volume& input, const InspectOctreeOptions& opti
   out["complex_cells"] = buildStats.complexCells;
   out["unresolved_complex_leaves"] = buildStats.unresolvedComplexLeaves;
   out["geometric_splits"] = buildStats.geometricSplits;
+  out["error_bound_splits"] = buildStats.errorBoundSplits;
   out["multi_sheet_splits"] = buildStats.multiSheetSplits;
   out["hidden_component_splits"] = buildStats.hiddenComponentSplits;
   out["balance_splits"] = buildStats.balanceSplits;

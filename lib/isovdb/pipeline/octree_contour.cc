@@ -9,10 +9,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <iterator>
 #include <cmath>
 #include <memory>
 
 #include "isovdb/contour/adaptive_contour.h"
+#include "isovdb/contour/error_bound.h"
 #include "isovdb/contour/regular_contour.h"
 #include "isovdb/errors.h"
 #include "isovdb/octree/surface_cells.h"
@@ -44,6 +46,8 @@ struct Engine {
 struct MetaCellTotals {
   double readSeconds = 0, octreeSeconds = 0, contourSeconds = 0;
   std::int64_t leaves = 0;
+  std::int64_t errorBoundPasses = 0;       // blocks built again because their mesh broke the error bound
+  std::int64_t errorBoundLeavesSplit = 0;  // leaves those passes split
   octree::OctreeBuildStats build;
   contour::RegularContourStats regular;
   contour::AdaptiveContourStats adaptive;
@@ -53,6 +57,8 @@ struct MetaCellTotals {
     octreeSeconds += o.octreeSeconds;
     contourSeconds += o.contourSeconds;
     leaves += o.leaves;
+    errorBoundPasses += o.errorBoundPasses;
+    errorBoundLeavesSplit += o.errorBoundLeavesSplit;
     build += o.build;
     regular += o.regular;
     adaptive += o.adaptive;
@@ -69,26 +75,41 @@ contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const E
                                    MetaCellTotals& totals, Interrupter* interrupter) {
   cell::ContourSettings settings = engine.settings;
   settings.iso = iso;
-  auto t0 = std::chrono::steady_clock::now();
-  octree::OctreeBuildStats buildStats;
-  const octree::LinearOctree tree =
-      octree::buildContourTree(samples, settings, engine.tree, &buildStats, interrupter);
-  totals.octreeSeconds += secondsSince(t0);
-  totals.leaves += static_cast<std::int64_t>(tree.leafCount());
-  totals.build += buildStats;
-  t0 = std::chrono::steady_clock::now();
-  contour::MetaCellMesh result;
-  if (settings.method == cell::ContourMethod::Regular) {
-    contour::RegularContourStats s;
-    result = contour::contourRegularMetaCell(samples, tree, settings, &s);
-    totals.regular += s;
-  } else {
-    contour::AdaptiveContourStats s;
-    result = contour::contourAdaptiveMetaCell(samples, tree, settings, &s);
-    totals.adaptive += s;
+  octree::OctreeOptions options = engine.tree;
+  const bool bounded = settings.method == cell::ContourMethod::Adaptive && options.maxError > 0.0f;
+  for (;;) {
+    auto t0 = std::chrono::steady_clock::now();
+    octree::OctreeBuildStats buildStats;
+    const octree::LinearOctree tree = octree::buildContourTree(samples, settings, options, &buildStats, interrupter);
+    totals.octreeSeconds += secondsSince(t0);
+    t0 = std::chrono::steady_clock::now();
+    contour::MetaCellMesh result;
+    contour::RegularContourStats regularStats;
+    contour::AdaptiveContourStats adaptiveStats;
+    if (settings.method == cell::ContourMethod::Regular)
+      result = contour::contourRegularMetaCell(samples, tree, settings, &regularStats);
+    else
+      result = contour::contourAdaptiveMetaCell(samples, tree, settings, &adaptiveStats);
+    // The error bound's second look: leaves whose mesh strays beyond it are split and
+    // the block built again (each pass only deepens the tree, so this ends).
+    std::vector<octree::MortonKey> beyond;
+    if (bounded) beyond = contour::leavesBeyondErrorBound(samples, tree, result.mesh, settings.iso, options.maxError);
+    totals.contourSeconds += secondsSince(t0);
+    if (!beyond.empty()) {
+      ++totals.errorBoundPasses;
+      totals.errorBoundLeavesSplit += static_cast<std::int64_t>(beyond.size());
+      std::vector<octree::MortonKey> forced;
+      std::merge(options.forcedSplits.begin(), options.forcedSplits.end(), beyond.begin(), beyond.end(),
+                 std::back_inserter(forced));
+      options.forcedSplits = std::move(forced);
+      continue;
+    }
+    totals.leaves += static_cast<std::int64_t>(tree.leafCount());
+    totals.build += buildStats;
+    totals.regular += regularStats;
+    totals.adaptive += adaptiveStats;
+    return result;
   }
-  totals.contourSeconds += secondsSince(t0);
-  return result;
 }
 
 /// The engine's inside is value <= iso; a scalar's inside is above the isovalue.
@@ -114,6 +135,9 @@ void recordTotals(const MetaCellTotals& totals, const cell::ContourSettings& opt
     if (options.topology == cell::RegularTopology::Voxels) section["tube_cells"] = r.tubeCells;
   } else {
     section["geometric_splits"] = totals.build.geometricSplits;
+    section["error_bound_splits"] = totals.build.errorBoundSplits;
+    section["error_bound_passes"] = totals.errorBoundPasses;
+    section["error_bound_leaves_split"] = totals.errorBoundLeavesSplit;
     section["multi_sheet_splits"] = totals.build.multiSheetSplits;
     section["hidden_component_splits"] = totals.build.hiddenComponentSplits;
     section["multi_vertex_cells"] = a.multiVertexCells;
