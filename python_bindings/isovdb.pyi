@@ -83,7 +83,7 @@ def extract(volume: Volume, *, method: Literal["adaptive", "regular", "vdb"] = "
             adaptivity: float = 0, distance: Literal["interface", "tracker"] = "interface", half_width: int = 3,
             sdf_chunk: int = 64, closing: int = 0, meta_cell: int = 128, threads: int | None = 0,
             min_level: int = -1, max_cell_size: int = 16, max_level: int = -1, finest_size: int = 1,
-            qef_tolerance: float = 0.15, max_error: float = -1, intersection_free: bool = True,
+            qef_tolerance: float = 0.15, max_error: float = 1, intersection_free: bool = True,
             sharp_features: bool = False, boundary: Literal["cap", "open"] = "cap", topology: Literal["auto", "voxels", "mdmc"] = "auto",
             progress: Progress = None, output: PathLike | None = None) -> Mesh | dict[str, Any]: ...
 def read_mesh(path: PathLike) -> Mesh: ...

@@ -137,6 +137,7 @@ void printSummary(const Json& json) {
       .add(part(contour, "triangles", [](const Json& v) { return count(v) + " triangles"; }))
       .add(part(contour, "vertices", [](const Json& v) { return count(v) + " vertices"; }))
       .add(part(contour, "method", [](const Json& v) { return "method " + text(v); }))
+      .add(part(contour, "max_error", [](const Json& v) { return "within " + text(v) + " voxel (--max-error)"; }))
       .print();
   if (json.contains("mesh")) printMeshCheck("mesh", json["mesh"]);
   if (json.contains("check")) printMeshCheck("check", json["check"]);

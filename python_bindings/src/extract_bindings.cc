@@ -66,7 +66,8 @@ void bindExtract(py::module_& m) {
                          "distance_field() or a level-set .vdb) or a scalar field (from_numpy of floats, SEG-Y).\n"
                          "Every setting is the CLI flag of the same name with the same default, except method:\n"
                          "'adaptive' here (closed, manifold, free of self-intersections away from the data\n"
-                         "boundary's caps, far fewer triangles), 'vdb' (OpenVDB's volumeToMesh) on the CLI.");
+                         "boundary's caps, far fewer triangles; within max_error=1 voxel of the full-resolution\n"
+                         "surface), 'vdb' (OpenVDB's volumeToMesh) on the CLI.");
 }
 
 }  // namespace isovdb::python

@@ -114,6 +114,8 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
     section["method"] = std::string(contourMethodName(method));
     section["iso"] = iso;
     if (method == ContourMethod::Vdb) section["adaptivity"] = options.adaptivity;
+    if (method == ContourMethod::Adaptive && options.octree.maxError > 0.0f)
+      section["max_error"] = options.octree.maxError;
     section["vertices"] = sink.vertexCount();
     section["triangles"] = sink.triangleCount();
   }

@@ -95,9 +95,9 @@ std::vector<Setting> extractSettings(ExtractChoices& c) {
           {"qef-tolerance", "adaptive: split cells whose QEF residual (RMS, voxels) exceeds this; < 0 off",
            &o.octree.qefTolerance},
           {"max-error",
-           "adaptive: error bound in voxels: cells are split until the full-resolution surface inside each lies "
-           "within this distance of its vertex's plane, so the mesh stays within it of regular mode's (isovdb "
-           "compare measures it); <= 0 off",
+           "adaptive: error bound in voxels: the mesh stays within this distance of the full-resolution surface "
+           "(regular mode's mesh), both ways (isovdb compare measures it); 1 keeps most of adaptive mode's savings "
+           "on smooth bodies; <= 0 off",
            &o.octree.maxError},
           {"intersection-free",
            "adaptive: Ju-Udeshi fans where plain dual contouring would self-intersect (off: plain "

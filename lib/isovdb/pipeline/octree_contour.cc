@@ -71,8 +71,10 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 /// Builds the octree of one block of samples and contours it (edges inside the block; the seam kept).
 /// `iso` is the settings' isovalue as the engine reads this block (negated on a scalar field).
+/// `finalTree` (optional) receives the tree the mesh was contoured from.
 contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const Engine& engine, float iso,
-                                   MetaCellTotals& totals, Interrupter* interrupter) {
+                                   MetaCellTotals& totals, Interrupter* interrupter,
+                                   octree::LinearOctree* finalTree = nullptr) {
   cell::ContourSettings settings = engine.settings;
   settings.iso = iso;
   octree::OctreeOptions options = engine.tree;
@@ -108,6 +110,7 @@ contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const E
     totals.build += buildStats;
     totals.regular += regularStats;
     totals.adaptive += adaptiveStats;
+    if (finalTree) *finalTree = tree;
     return result;
   }
 }
@@ -339,7 +342,14 @@ octree::LinearOctree metaCellOctree(const volume::Volume& field, const cell::Con
   cell::ContourSettings blockSettings = settings;
   blockSettings.iso = engineIso(field, settings.iso, samples);
   if (hasSignChange) *hasSignChange = volume::hasSignChange(samples, blockSettings.iso);
-  return octree::buildContourTree(samples, blockSettings, tree, stats, interrupter);
+  if (settings.method != cell::ContourMethod::Adaptive || tree.maxError <= 0.0f)
+    return octree::buildContourTree(samples, blockSettings, tree, stats, interrupter);
+  // Under an error bound the tree extract keeps is the one its mesh holds the bound on.
+  MetaCellTotals totals;
+  octree::LinearOctree result;
+  contourBlock(samples, engine, blockSettings.iso, totals, interrupter, &result);
+  if (stats) *stats = totals.build;
+  return result;
 }
 
 mesh::Mesh contourWithOctree(const volume::Volume& field, const cell::ContourSettings& settings,
