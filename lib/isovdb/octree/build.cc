@@ -82,6 +82,7 @@ struct Evaluation {
   bool geometric = false;   // split only because of the QEF criterion
   bool feature = false;     // of those, because of the sharp-feature gap
   bool bounded = false;     // of those, because of the error bound (--max-error)
+  bool capped = false;      // split because it lies across a face of the data's box (adaptive)
   bool multiSheet = false;  // split only because one vertex cannot stand for the cell (adaptive)
   bool hidden = false;      // split only because of a component hidden inside (adaptive)
   bool interiorOnly = false;
@@ -145,6 +146,8 @@ class Builder {
       ev.split = true;
     } else if (settings_.method == cell::ContourMethod::Regular) {
       ev.split = ev.leaf.surface;
+    } else if (ev.leaf.surface && crossesDataBoxFace(ev.leaf.origin, size)) {
+      ev.split = ev.capped = true;
     } else if (const cell::DmcEntry& entry = cell::dmcEntry(ev.leaf.cornerSigns);
                entry.vertexCount > 1 || entry.doubleFace >= 0) {
       // Dual contouring gives a coarse leaf one vertex: a configuration with several
@@ -182,6 +185,18 @@ class Builder {
     return ev;
   }
 
+  /// The cell [origin, origin + size] (meta-cell offsets) reaches past a face of the data's
+  /// box, from the face's plane on: it holds samples on both sides of it, or lies just beyond.
+  bool crossesDataBoxFace(const std::array<int, 3>& origin, int size) const noexcept {
+    if (!options_.dataBox || size <= 1) return false;
+    for (int a = 0; a < 3; ++a) {
+      const int lo = origin[a] + samples_.origin[a], hi = lo + size;
+      if (lo < (*options_.dataBox)[0][a] && hi >= (*options_.dataBox)[0][a]) return true;
+      if (lo <= (*options_.dataBox)[1][a] && hi > (*options_.dataBox)[1][a]) return true;
+    }
+    return false;
+  }
+
   Vec3f toMetaCellOffsets(const Vec3f& global) const noexcept {
     return {global[0] - static_cast<float>(samples_.origin[0]), global[1] - static_cast<float>(samples_.origin[1]),
             global[2] - static_cast<float>(samples_.origin[2])};
@@ -197,6 +212,7 @@ class Builder {
     stats_.geometricSplits += ev.geometric;
     stats_.featureSplits += ev.feature;
     stats_.errorBoundSplits += ev.bounded;
+    stats_.dataBoxSplits += ev.capped;
     stats_.multiSheetSplits += ev.multiSheet;
     stats_.hiddenComponentSplits += ev.hidden;
   }
@@ -422,6 +438,7 @@ OctreeBuildStats& OctreeBuildStats::operator+=(const OctreeBuildStats& o) {
   geometricSplits += o.geometricSplits;
   featureSplits += o.featureSplits;
   errorBoundSplits += o.errorBoundSplits;
+  dataBoxSplits += o.dataBoxSplits;
   multiSheetSplits += o.multiSheetSplits;
   hiddenComponentSplits += o.hiddenComponentSplits;
   balanceSplits += o.balanceSplits;

@@ -23,6 +23,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "isovdb/octree/linear_octree.h"
@@ -58,6 +59,13 @@ struct OctreeOptions {
   /// farther than this (voxels) from the plane of its dual vertex (surface_deviation.h):
   /// the adaptive mesh then stays within about this distance of the regular mesh; <= 0 off.
   float maxError = -1.0f;
+  /// The sampled data's box (global index coordinates, the outermost samples), when the
+  /// data have one: adaptive leaves the surface crosses on the far side of a box face are
+  /// refined to the finest size. Outside the box reads as outside, so a surface leaving the
+  /// data is closed by a cap within one voxel beyond the face, which pipeline/data_boundary
+  /// flattens onto it; a coarse leaf there would put its vertex anywhere across the face,
+  /// and flattening its triangles folded them over the cap's.
+  std::optional<std::array<std::array<int, 3>, 2>> dataBox{};
   /// Cells split whatever the criteria say (sorted Morton keys): where the mesh of an
   /// earlier pass broke the error bound (contour/error_bound.h).
   std::vector<MortonKey> forcedSplits{};
@@ -88,7 +96,8 @@ struct OctreeBuildStats {
   std::size_t geometricSplits = 0;           ///< cells subdivided by a geometric criterion (QEF, error bound)
   std::size_t featureSplits = 0;             ///< of them, by the sharp-feature gap (OctreeOptions::sharpFeatures)
   std::size_t errorBoundSplits = 0;          ///< of them, by the error bound (OctreeOptions::maxError)
-  std::size_t multiSheetSplits = 0;          ///< adaptive: cells subdivided because their configuration has several
+  std::size_t dataBoxSplits = 0;     ///< adaptive: cells subdivided because they lie across a face of the data's box
+  std::size_t multiSheetSplits = 0;  ///< adaptive: cells subdivided because their configuration has several
                                      ///< DMC groups or a doubled ambiguous face (one vertex cannot stand for them)
   std::size_t hiddenComponentSplits = 0;  ///< adaptive: cells subdivided because a component of samples hides
                                           ///< inside them (criteria.h, hasHiddenComponent)

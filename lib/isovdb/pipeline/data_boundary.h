@@ -14,7 +14,9 @@
 ///   are dropped and unused vertices removed. The mesh's boundary edges lie on
 ///   the box faces, and only there.
 /// The box is the sampled box's sample positions, [min, max] in index space: the
-/// outermost traces and samples, not half a voxel beyond.
+/// outermost traces and samples, not half a voxel beyond. Adaptive mode refines its
+/// leaves across a box face to one voxel (octree::OctreeOptions::dataBox), so a cap's
+/// vertices move by less than a voxel here and its triangles do not fold over.
 #pragma once
 
 #include <cstdint>

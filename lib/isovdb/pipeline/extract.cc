@@ -97,7 +97,9 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
   } else {
     cell::ContourSettings settings = options.contour;
     settings.topology = regularTopologyFor(options.regularTopology, kind);
-    contourWithOctree(field, settings, options.octree, options.metaCellSize, capped, interrupter, stats);
+    octree::OctreeOptions tree = options.octree;
+    if (box) tree.dataBox = {{box->min, box->max}};
+    contourWithOctree(field, settings, tree, options.metaCellSize, capped, interrupter, stats);
   }
   std::int64_t dropped = 0;
   if (open) {

@@ -142,6 +142,7 @@ void recordTotals(const MetaCellTotals& totals, const cell::ContourSettings& opt
     section["error_bound_passes"] = totals.errorBoundPasses;
     section["error_bound_leaves_split"] = totals.errorBoundLeavesSplit;
     section["multi_sheet_splits"] = totals.build.multiSheetSplits;
+    section["data_box_splits"] = totals.build.dataBoxSplits;
     section["hidden_component_splits"] = totals.build.hiddenComponentSplits;
     section["multi_vertex_cells"] = a.multiVertexCells;
     section["intersection_free"] = options.intersectionFree;
