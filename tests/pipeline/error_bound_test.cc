@@ -81,5 +81,17 @@ TEST(ErrorBound, HoldsExactlyOnASmoothGaussianField) {
   expectBound(volume::ingestScalar(stream), "gaussian", false, 0.5f);
 }
 
+// Leaves at the finest size cannot be split: a bound they cannot meet ends the passes
+// instead of asking for the same splits forever (it hung with --finest-size 2).
+TEST(ErrorBound, EndsWhereTheFinestCellsCannotMeetIt) {
+  auto stream = samples::makeShapeStream(samples::ShapeKind::Torus, {.size = 64});
+  const volume::Volume field = toContourable(volume::ingestMask(*stream, {}), {});
+  octree::OctreeOptions tree;
+  tree.finestCellSize = 4;
+  tree.maxError = 0.05f;
+  const mesh::Mesh mesh = contourWithOctree(field, {.method = ContourMethod::Adaptive}, tree, kMetaCell);
+  EXPECT_GT(mesh.triangleCount(), 0u);
+}
+
 }  // namespace
 }  // namespace isovdb::pipeline

@@ -10,7 +10,7 @@ namespace isovdb::contour {
 
 std::vector<octree::MortonKey> leavesBeyondErrorBound(const cell::MetaCellSamples& samples,
                                                       const octree::LinearOctree& tree, const mesh::Mesh& mesh,
-                                                      float iso, float maxError) {
+                                                      float iso, float maxError, int finestSize) {
   std::vector<octree::MortonKey> keys;
   const auto check = [&](Vec3f p) {
     for (int a = 0; a < 3; ++a) p[a] -= static_cast<float>(samples.origin[a]);
@@ -21,7 +21,7 @@ std::vector<octree::MortonKey> leavesBeyondErrorBound(const cell::MetaCellSample
       Vec3f q = p;
       for (int a = 0; a < 3; ++a) q[a] += ((corner >> a) & 1) ? kNudge : -kNudge;
       const std::int64_t leaf = tree.findLeafContaining(q);
-      if (leaf != octree::LinearOctree::kNone && tree.leaf(static_cast<std::size_t>(leaf)).size > 1)
+      if (leaf != octree::LinearOctree::kNone && tree.leaf(static_cast<std::size_t>(leaf)).size > finestSize)
         keys.push_back(tree.leaf(static_cast<std::size_t>(leaf)).key);
     }
   };

@@ -23,11 +23,12 @@
 
 namespace isovdb::contour {
 
-/// @brief Keys of the leaves of `tree` larger than one voxel whose closed box holds a
+/// @brief Keys of the leaves of `tree` larger than `finestSize` voxels (the octree's
+///        finest cells, which cannot be split) whose closed box holds a
 ///        vertex, triangle centroid or edge midpoint of `mesh` (global voxel index coordinates) farther
 ///        than `maxError` from the level `iso`: sorted, unique.
 std::vector<octree::MortonKey> leavesBeyondErrorBound(const cell::MetaCellSamples& samples,
                                                       const octree::LinearOctree& tree, const mesh::Mesh& mesh,
-                                                      float iso, float maxError);
+                                                      float iso, float maxError, int finestSize = 1);
 
 }  // namespace isovdb::contour

@@ -95,14 +95,18 @@ contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const E
     // The error bound's second look: leaves whose mesh strays beyond it are split and
     // the block built again (each pass only deepens the tree, so this ends).
     std::vector<octree::MortonKey> beyond;
-    if (bounded) beyond = contour::leavesBeyondErrorBound(samples, tree, result.mesh, settings.iso, options.maxError);
+    if (bounded) {
+      const int finest = octree::cellSizeAtDepth(samples.size, octree::resolveDepths(options, samples.size).maxDepth);
+      beyond = contour::leavesBeyondErrorBound(samples, tree, result.mesh, settings.iso, options.maxError, finest);
+    }
     totals.contourSeconds += secondsSince(t0);
-    if (!beyond.empty()) {
+    std::vector<octree::MortonKey> forced;
+    std::set_union(options.forcedSplits.begin(), options.forcedSplits.end(), beyond.begin(), beyond.end(),
+                   std::back_inserter(forced));
+    // A pass that would split nothing new (none should: beyond holds leaves only) ends the loop.
+    if (forced.size() > options.forcedSplits.size()) {
       ++totals.errorBoundPasses;
-      totals.errorBoundLeavesSplit += static_cast<std::int64_t>(beyond.size());
-      std::vector<octree::MortonKey> forced;
-      std::merge(options.forcedSplits.begin(), options.forcedSplits.end(), beyond.begin(), beyond.end(),
-                 std::back_inserter(forced));
+      totals.errorBoundLeavesSplit += static_cast<std::int64_t>(forced.size() - options.forcedSplits.size());
       options.forcedSplits = std::move(forced);
       continue;
     }
