@@ -185,6 +185,31 @@ TEST(StitchedOutput, SameBytesForOneTwoAndEightThreads) {
   }
 }
 
+TEST(StitchedOutput, AMaskContouredLayerByLayerIsTheWholeFieldsMesh) {
+  // extract() computes a mask's distance field one layer of meta-cells at a time
+  // (volume/slab_band.h); the mesh must be the one of the whole field, for every
+  // thread count.
+  for (const auto kind : {samples::ShapeKind::SaltDome, samples::ShapeKind::GyroidSlab}) {
+    auto stream = samples::makeShapeStream(kind, {.size = 64});
+    const volume::Volume mask = volume::ingestMask(*stream, {});
+    const volume::Volume sdf = toContourable(mask, {});
+    for (const auto method : {ContourMethod::Regular, ContourMethod::Adaptive})
+      for (const int threads : {1, 2}) {
+        ExtractOptions options;
+        options.contour.method = method;
+        options.metaCellSize = 16;
+        options.threads = threads;
+        Statistics stats;
+        const mesh::Mesh layered = extractMesh(mask, options, nullptr, &stats);
+        const mesh::Mesh whole = extractMesh(sdf, options);
+        ASSERT_GT(whole.triangles.size(), 0u);
+        EXPECT_EQ(layered.positions, whole.positions) << contourMethodName(method) << ", " << threads << " threads";
+        EXPECT_EQ(layered.triangles, whole.triangles) << contourMethodName(method) << ", " << threads << " threads";
+        EXPECT_TRUE(stats.json()["distance_field"]["computed_by_meta_cell_layer"].get<bool>());
+      }
+  }
+}
+
 TEST(StitchedOutput, RejectsAMetaCellSizeOutsideTheRange) {
   const volume::Volume sdf = shapeSdf(samples::ShapeKind::Sphere, 32);
   for (const int size : {8, 24, 1024}) {

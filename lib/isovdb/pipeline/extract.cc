@@ -31,10 +31,7 @@ volume::Volume toContourable(const volume::Volume& volume, const volume::Distanc
     sdf = volume::distanceField(volume, options, interrupter);
   }
   if (stats) {
-    Statistics::Json section = Statistics::Json::object();
-    section["method"] = std::string(volume::distanceMethodName(options.method));
-    section["half_width_voxels"] = options.halfWidth;
-    section["closing_steps"] = options.closingSteps;
+    Statistics::Json section = distanceFieldSection(options);
     recordGridStats(sdf, section);
     (*stats)["distance_field"] = section;
   }
@@ -79,15 +76,24 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
   }
   const volume::VolumeKind kind = volume.kind();
   const std::optional<volume::IndexBox> box = volume::sampledBox(volume);
-  const volume::Volume field = toContourable(volume, options.distance, interrupter, stats);
-  // The contouring reads only the field: a mask is freed here unless the caller keeps it.
-  volume = volume::Volume();
+  const ContourMethod method = options.contour.method;
+  // A mask contoured by meta-cells gets its distance field layer by layer, as the
+  // meta-cells need it; otherwise the whole field is made first.
+  const bool byLayers = kind == volume::VolumeKind::Mask && method != ContourMethod::Vdb && options.metaCellSize > 0 &&
+                        options.distance.method == volume::DistanceMethod::Interface;
+  volume::Volume field;
+  if (byLayers) {
+    volume::checkDistanceFieldOptions(options.distance);
+  } else {
+    field = toContourable(volume, options.distance, interrupter, stats);
+    // The contouring reads only the field: a mask is freed here unless the caller keeps it.
+    volume = volume::Volume();
+  }
   // Caps are flattened piece by piece (the mesh still streams); dropping them
   // (Open) needs the whole mesh, so it is collected first.
   const bool open = box && options.boundary == BoundaryMode::Open;
   mesh::MeshCollector whole;
   CappingSink capped(open ? static_cast<mesh::MeshSink&>(whole) : sink, box);
-  const ContourMethod method = options.contour.method;
   if (method == ContourMethod::Vdb) {
     Statistics::StageTimer timer(stats, "contour");
     const mesh::Mesh mesh =
@@ -99,7 +105,10 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
     settings.topology = regularTopologyFor(options.regularTopology, kind);
     octree::OctreeOptions tree = options.octree;
     if (box) tree.dataBox = {{box->min, box->max}};
-    contourWithOctree(field, settings, tree, options.metaCellSize, capped, interrupter, stats);
+    if (byLayers)
+      contourMaskWithOctree(volume, options.distance, settings, tree, options.metaCellSize, capped, interrupter, stats);
+    else
+      contourWithOctree(field, settings, tree, options.metaCellSize, capped, interrupter, stats);
   }
   std::int64_t dropped = 0;
   if (open) {

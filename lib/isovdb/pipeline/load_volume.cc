@@ -16,6 +16,14 @@ namespace isovdb::pipeline {
 
 bool isVdbPath(const std::filesystem::path& path) { return io::lowerExtension(path) == ".vdb"; }
 
+Statistics::Json distanceFieldSection(const volume::DistanceFieldOptions& options) {
+  Statistics::Json section = Statistics::Json::object();
+  section["method"] = std::string(volume::distanceMethodName(options.method));
+  section["half_width_voxels"] = options.halfWidth;
+  section["closing_steps"] = options.closingSteps;
+  return section;
+}
+
 void recordGridStats(const volume::Volume& volume, Statistics::Json& section) {
   const volume::GridStats stats = volume.stats();
   section["kind"] = std::string(volume::volumeKindName(volume.kind()));

@@ -12,6 +12,7 @@
 #include "isovdb/io/segy_reader.h"
 #include "isovdb/pipeline/statistics.h"
 #include "isovdb/progress.h"
+#include "isovdb/volume/distance_field.h"
 #include "isovdb/volume/mask_rule.h"
 #include "isovdb/volume/volume.h"
 
@@ -54,5 +55,25 @@ bool isVdbPath(const std::filesystem::path& path);
 /// Adds a volume's grid figures (kind, active voxels, leaves, tiles, memory,
 /// bounding box, value range) to `section`.
 void recordGridStats(const volume::Volume& volume, Statistics::Json& section);
+
+/// The "distance_field" section of a mask's band: the settings it was made with.
+Statistics::Json distanceFieldSection(const volume::DistanceFieldOptions& options);
+
+/// Adds the figures of a band never held as one grid (streamed to a .vdb, or made
+/// one layer of meta-cells at a time) to `section`, under recordGridStats' keys.
+/// `Figures` has leafCount, activeVoxels, bboxMin, bboxMax, minValue and maxValue.
+template <typename Figures>
+void recordBandFigures(const Figures& figures, const volume::Geometry& geometry, Statistics::Json& section) {
+  section["kind"] = std::string(volume::volumeKindName(volume::VolumeKind::DistanceField));
+  section["active_voxels"] = figures.activeVoxels;
+  section["leaf_nodes"] = figures.leafCount;
+  section["active_tiles"] = 0;
+  section["bbox_min"] = figures.bboxMin;
+  section["bbox_max"] = figures.bboxMax;
+  section["spacing"] = geometry.spacing;
+  section["origin"] = geometry.origin;
+  section["min_value"] = figures.minValue;
+  section["max_value"] = figures.maxValue;
+}
 
 }  // namespace isovdb::pipeline

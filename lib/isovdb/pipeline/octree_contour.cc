@@ -11,16 +11,20 @@
 #include <chrono>
 #include <iterator>
 #include <cmath>
+#include <functional>
 #include <memory>
+#include <optional>
 
 #include "isovdb/contour/adaptive_contour.h"
 #include "isovdb/contour/error_bound.h"
 #include "isovdb/contour/regular_contour.h"
 #include "isovdb/errors.h"
+#include "isovdb/pipeline/load_volume.h"
 #include "isovdb/octree/surface_cells.h"
 #include "isovdb/stitch/stitch_seams.h"
 #include "isovdb/volume/grids.h"
 #include "isovdb/volume/meta_cells.h"
+#include "isovdb/volume/slab_band.h"
 
 namespace isovdb::pipeline {
 
@@ -120,8 +124,8 @@ contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const E
 }
 
 /// The engine's inside is value <= iso; a scalar's inside is above the isovalue.
-float engineIso(const volume::Volume& field, float iso, cell::MetaCellSamples& samples) {
-  if (field.kind() != volume::VolumeKind::Scalar) return iso;
+float engineIso(volume::VolumeKind kind, float iso, cell::MetaCellSamples& samples) {
+  if (kind != volume::VolumeKind::Scalar) return iso;
   for (float& v : samples.values) v = -v;
   return -iso;
 }
@@ -186,7 +190,7 @@ void contourSingleBlock(const volume::Volume& field, const Engine& engine, mesh:
   {
     Statistics::StageTimer timer(stats, "read_meta_cells");
     volume::readBlock(field, origin, size, samples);
-    iso = engineIso(field, iso, samples);
+    iso = engineIso(field.kind(), iso, samples);
   }
   contour::MetaCellMesh block;
   {
@@ -221,94 +225,95 @@ struct MetaCellJob {
   MetaCellTotals totals;
 };
 
-/// Every meta-cell in parallel, output in meta-cell order, then the seams.
-void contourMetaCells(const volume::Volume& field, const Engine& engine, mesh::MeshSink& sink, Interrupter* interrupter,
-                      Statistics* stats) {
-  const cell::ContourSettings& options = engine.settings;
-  const int s = engine.metaCellSize;
+void checkMetaCellSize(int s) {
   if (s < 16 || s > 512 || (s & (s - 1)) != 0)
     throw InputError("--meta-cell: expected a power of two in 16..512 (or 0 for one block), got " + std::to_string(s));
-  volume::MetaCellPartition partition;
-  {
-    Statistics::StageTimer timer(stats, "partition");
-    partition = volume::partitionMetaCells(field, s, options.iso);
-  }
-  // Regular mode reads one finest cell beyond the meta-cell, for Wenger's fix across the seam.
-  const int apron = metaCellApron(engine);
+}
 
-  const std::size_t tokens =
-      std::max<std::size_t>(1, tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
-  stitch::SeamStore seams;
-  MetaCellTotals totals;
-  std::size_t next = 0, contoured = 0, done = 0;
-  const std::size_t total = partition.cells.size();
-  // One sample block per thread, reused meta-cell after meta-cell: a fresh 9 MB
-  // block per meta-cell had every page faulted in again.
-  tbb::enumerable_thread_specific<cell::MetaCellSamples> sampleBlocks;
-  {
-    Statistics::StageTimer timer(stats, "contour_meta_cells");
-    ProgressStage progress(interrupter, "contouring meta-cells");
-    tbb::parallel_pipeline(tokens, tbb::make_filter<void, std::shared_ptr<MetaCellJob>>(
-                                       tbb::filter_mode::serial_in_order,
-                                       [&](tbb::flow_control& control) -> std::shared_ptr<MetaCellJob> {
-                                         if (next >= total) {
-                                           control.stop();
-                                           return nullptr;
-                                         }
-                                         auto job = std::make_shared<MetaCellJob>();
-                                         job->position = next++;
-                                         return job;
-                                       }) &
-                                       tbb::make_filter<std::shared_ptr<MetaCellJob>, std::shared_ptr<MetaCellJob>>(
-                                           tbb::filter_mode::parallel,
-                                           [&](std::shared_ptr<MetaCellJob> job) {
-                                             const auto t0 = std::chrono::steady_clock::now();
-                                             cell::MetaCellSamples& samples = sampleBlocks.local();
-                                             volume::readMetaCell(field, partition.cells[job->position], s, samples,
-                                                                  apron);
-                                             const float iso = engineIso(field, options.iso, samples);
-                                             job->totals.readSeconds += secondsSince(t0);
-                                             job->contoured = volume::hasSignChange(samples, iso);
-                                             if (job->contoured)
-                                               job->result = contourBlock(samples, engine, iso, job->totals, nullptr);
-                                             return job;
-                                           }) &
-                                       tbb::make_filter<std::shared_ptr<MetaCellJob>, void>(
-                                           tbb::filter_mode::serial_in_order, [&](std::shared_ptr<MetaCellJob> job) {
-                                             totals.add(job->totals);
-                                             if (job->contoured) {
-                                               ++contoured;
-                                               const auto base = static_cast<std::uint32_t>(sink.vertexCount());
-                                               for (mesh::Triangle& t : job->result.mesh.triangles)
-                                                 for (std::uint32_t& v : t) v += base;
-                                               sink.addVertices(job->result.mesh.positions);
-                                               sink.addTriangles(job->result.mesh.triangles);
-                                               contour::rebaseSeam(job->result.seam, base);
-                                               seams.add(partition.cells[job->position], std::move(job->result.seam));
-                                             }
-                                             progress.update(static_cast<double>(++done), static_cast<double>(total));
-                                           }));
+/// Meta-cells contoured in parallel, their meshes handed to the sink in the order
+/// given and their seams kept; finish() stitches the seams. Batches of meta-cells
+/// (all of them, or one layer at a time) are contoured one after the other.
+class MetaCellRun {
+ public:
+  /// Fills a meta-cell's samples; called from several threads at once.
+  using Reader = std::function<void(const volume::MetaCellIndex&, cell::MetaCellSamples&)>;
+
+  MetaCellRun(const Engine& engine, volume::VolumeKind kind, mesh::MeshSink& sink)
+      : engine_(engine),
+        kind_(kind),
+        sink_(sink),
+        tokens_(std::max<std::size_t>(
+            1, tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism))) {}
+
+  /// Contours `cells` (in this order), reporting each one done to `cellDone`.
+  void contour(const std::vector<volume::MetaCellIndex>& cells, const Reader& read,
+               const std::function<void()>& cellDone) {
+    const cell::ContourSettings& options = engine_.settings;
+    std::size_t next = 0;
+    candidates_ += cells.size();
+    tbb::parallel_pipeline(tokens_, tbb::make_filter<void, std::shared_ptr<MetaCellJob>>(
+                                        tbb::filter_mode::serial_in_order,
+                                        [&](tbb::flow_control& control) -> std::shared_ptr<MetaCellJob> {
+                                          if (next >= cells.size()) {
+                                            control.stop();
+                                            return nullptr;
+                                          }
+                                          auto job = std::make_shared<MetaCellJob>();
+                                          job->position = next++;
+                                          return job;
+                                        }) &
+                                        tbb::make_filter<std::shared_ptr<MetaCellJob>, std::shared_ptr<MetaCellJob>>(
+                                            tbb::filter_mode::parallel,
+                                            [&](std::shared_ptr<MetaCellJob> job) {
+                                              const auto t0 = std::chrono::steady_clock::now();
+                                              cell::MetaCellSamples& samples = sampleBlocks_.local();
+                                              read(cells[job->position], samples);
+                                              const float iso = engineIso(kind_, options.iso, samples);
+                                              job->totals.readSeconds += secondsSince(t0);
+                                              job->contoured = volume::hasSignChange(samples, iso);
+                                              if (job->contoured)
+                                                job->result = contourBlock(samples, engine_, iso, job->totals, nullptr);
+                                              return job;
+                                            }) &
+                                        tbb::make_filter<std::shared_ptr<MetaCellJob>, void>(
+                                            tbb::filter_mode::serial_in_order, [&](std::shared_ptr<MetaCellJob> job) {
+                                              totals_.add(job->totals);
+                                              if (job->contoured) {
+                                                ++contoured_;
+                                                const auto base = static_cast<std::uint32_t>(sink_.vertexCount());
+                                                for (mesh::Triangle& t : job->result.mesh.triangles)
+                                                  for (std::uint32_t& v : t) v += base;
+                                                sink_.addVertices(job->result.mesh.positions);
+                                                sink_.addTriangles(job->result.mesh.triangles);
+                                                contour::rebaseSeam(job->result.seam, base);
+                                                seams_.add(cells[job->position], std::move(job->result.seam));
+                                              }
+                                              cellDone();
+                                            }));
   }
 
-  stitch::StitchStats stitchStats;
-  {
-    Statistics::StageTimer timer(stats, "stitch");
-    mesh::Mesh tail;
-    stitch::stitchSeams(seams, options, s, static_cast<std::uint32_t>(sink.vertexCount()), tail, &stitchStats,
-                        interrupter);
-    sink.addVertices(tail.positions);
-    sink.addTriangles(tail.triangles);
-  }
-  if (stats) {
+  /// Stitches the seams and records the figures of the whole run.
+  void finish(int apron, std::int64_t leavesScanned, Interrupter* interrupter, Statistics* stats) {
+    const cell::ContourSettings& options = engine_.settings;
+    stitch::StitchStats stitchStats;
+    {
+      Statistics::StageTimer timer(stats, "stitch");
+      mesh::Mesh tail;
+      stitch::stitchSeams(seams_, options, engine_.metaCellSize, static_cast<std::uint32_t>(sink_.vertexCount()), tail,
+                          &stitchStats, interrupter);
+      sink_.addVertices(tail.positions);
+      sink_.addTriangles(tail.triangles);
+    }
+    if (!stats) return;
     Statistics::Json section = Statistics::Json::object();
-    section["meta_cell_size"] = s;
+    section["meta_cell_size"] = engine_.metaCellSize;
     section["apron"] = apron;
-    section["threads"] = tokens;
-    section["candidates"] = total;
-    section["contoured"] = contoured;
-    section["skipped_without_sign_change"] = total - contoured;
-    section["leaves_scanned_for_partition"] = partition.leavesScanned;
-    recordTotals(totals, options, section);
+    section["threads"] = tokens_;
+    section["candidates"] = candidates_;
+    section["contoured"] = contoured_;
+    section["skipped_without_sign_change"] = candidates_ - contoured_;
+    section["leaves_scanned_for_partition"] = leavesScanned;
+    recordTotals(totals_, options, section);
     (*stats)["meta_cells"] = section;
     Statistics::Json st = Statistics::Json::object();
     st["meta_faces"] = stitchStats.metaFaces;
@@ -319,6 +324,86 @@ void contourMetaCells(const volume::Volume& field, const Engine& engine, mesh::M
     st["missing_cells"] = stitchStats.missingCells;
     (*stats)["stitch"] = st;
   }
+
+ private:
+  const Engine& engine_;
+  volume::VolumeKind kind_;
+  mesh::MeshSink& sink_;
+  std::size_t tokens_;
+  stitch::SeamStore seams_;
+  MetaCellTotals totals_;
+  std::size_t candidates_ = 0, contoured_ = 0;
+  // One sample block per thread, reused meta-cell after meta-cell: a fresh 9 MB
+  // block per meta-cell had every page faulted in again.
+  tbb::enumerable_thread_specific<cell::MetaCellSamples> sampleBlocks_;
+};
+
+/// Every meta-cell in parallel, output in meta-cell order, then the seams.
+void contourMetaCells(const volume::Volume& field, const Engine& engine, mesh::MeshSink& sink, Interrupter* interrupter,
+                      Statistics* stats) {
+  const int s = engine.metaCellSize;
+  checkMetaCellSize(s);
+  volume::MetaCellPartition partition;
+  {
+    Statistics::StageTimer timer(stats, "partition");
+    partition = volume::partitionMetaCells(field, s, engine.settings.iso);
+  }
+  const int apron = metaCellApron(engine);
+  MetaCellRun run(engine, field.kind(), sink);
+  {
+    Statistics::StageTimer timer(stats, "contour_meta_cells");
+    ProgressStage progress(interrupter, "contouring meta-cells");
+    std::size_t done = 0;
+    const auto total = static_cast<double>(partition.cells.size());
+    run.contour(
+        partition.cells,
+        [&](const volume::MetaCellIndex& index, cell::MetaCellSamples& samples) {
+          volume::readMetaCell(field, index, s, samples, apron);
+        },
+        [&] { progress.update(static_cast<double>(++done), total); });
+  }
+  run.finish(apron, partition.leavesScanned, interrupter, stats);
+}
+
+/// A mask's meta-cells layer by layer, each layer's distance field computed just
+/// before it is contoured (volume/slab_band.h): the same meshes as contourMetaCells
+/// on distanceField(mask), without the whole band in memory.
+void contourMaskMetaCells(const volume::Volume& mask, const volume::DistanceFieldOptions& distance,
+                          const Engine& engine, mesh::MeshSink& sink, Interrupter* interrupter, Statistics* stats) {
+  const int s = engine.metaCellSize;
+  checkMetaCellSize(s);
+  const int apron = metaCellApron(engine);
+  std::optional<volume::SlabBand> band;
+  {
+    Statistics::StageTimer timer(stats, "distance_field");
+    band.emplace(mask, distance, s, apron);
+  }
+  MetaCellRun run(engine, volume::VolumeKind::DistanceField, sink);
+  ProgressStage progress(interrupter, "contouring meta-cells");
+  const int layers = band->endLayer() - band->firstLayer();
+  for (int k = band->firstLayer(); k < band->endLayer(); ++k) {
+    std::vector<volume::MetaCellIndex> cells;
+    {
+      Statistics::StageTimer timer(stats, "distance_field");
+      cells = band->advanceTo(k, engine.settings.iso);
+    }
+    Statistics::StageTimer timer(stats, "contour_meta_cells");
+    std::size_t done = 0;
+    const double layer = k - band->firstLayer();
+    run.contour(
+        cells, [&](const volume::MetaCellIndex& index, cell::MetaCellSamples& samples) { band->read(index, samples); },
+        [&] { progress.update(layer + static_cast<double>(++done) / static_cast<double>(cells.size()), layers); });
+    progress.update(layer + 1, layers);
+  }
+  if (stats) {
+    Statistics::Json section = distanceFieldSection(distance);
+    recordBandFigures(band->figures(), mask.geometry(), section);
+    section["computed_by_meta_cell_layer"] = true;
+    section["peak_band_memory_bytes"] = band->figures().peakBytes;
+    (*stats)["distance_field"] = section;
+  }
+  band.reset();
+  run.finish(apron, 0, interrupter, stats);
 }
 
 }  // namespace
@@ -345,7 +430,7 @@ octree::LinearOctree metaCellOctree(const volume::Volume& field, const cell::Con
   cell::MetaCellSamples samples;
   volume::readMetaCell(field, index, metaCellSize, samples, metaCellApron(engine));
   cell::ContourSettings blockSettings = settings;
-  blockSettings.iso = engineIso(field, settings.iso, samples);
+  blockSettings.iso = engineIso(field.kind(), settings.iso, samples);
   if (hasSignChange) *hasSignChange = volume::hasSignChange(samples, blockSettings.iso);
   if (settings.method != cell::ContourMethod::Adaptive || tree.maxError <= 0.0f)
     return octree::buildContourTree(samples, blockSettings, tree, stats, interrupter);
@@ -355,6 +440,18 @@ octree::LinearOctree metaCellOctree(const volume::Volume& field, const cell::Con
   contourBlock(samples, engine, blockSettings.iso, totals, interrupter, &result);
   if (stats) *stats = totals.build;
   return result;
+}
+
+void contourMaskWithOctree(const volume::Volume& mask, const volume::DistanceFieldOptions& distance,
+                           const cell::ContourSettings& settings, const octree::OctreeOptions& tree, int metaCellSize,
+                           mesh::MeshSink& sink, Interrupter* interrupter, Statistics* stats) {
+  if (mask.kind() != volume::VolumeKind::Mask)
+    throw InputError("'" + mask.name() + "': contouring by meta-cell layers needs a mask");
+  if (distance.method != volume::DistanceMethod::Interface)
+    throw InputError("contouring by meta-cell layers: the distance field must be the interface band");
+  if (settings.method == cell::ContourMethod::Vdb)
+    throw InputError("octree contouring: the method is vdb; expected regular or adaptive");
+  contourMaskMetaCells(mask, distance, Engine{settings, tree, metaCellSize}, sink, interrupter, stats);
 }
 
 mesh::Mesh contourWithOctree(const volume::Volume& field, const cell::ContourSettings& settings,

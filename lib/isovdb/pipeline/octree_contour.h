@@ -24,6 +24,7 @@
 #include "isovdb/octree/build.h"
 #include "isovdb/pipeline/statistics.h"
 #include "isovdb/progress.h"
+#include "isovdb/volume/distance_field.h"
 #include "isovdb/volume/volume.h"
 
 namespace isovdb::pipeline {
@@ -40,6 +41,18 @@ namespace isovdb::pipeline {
 void contourWithOctree(const volume::Volume& field, const cell::ContourSettings& settings,
                        const octree::OctreeOptions& tree, int metaCellSize, mesh::MeshSink& sink,
                        Interrupter* interrupter = nullptr, Statistics* stats = nullptr);
+
+/// Contours a Mask volume in meta-cells of `metaCellSize` (16..512), its distance
+/// field (`distance`: the Interface method) computed one layer of meta-cells at a
+/// time just before they are contoured (volume/slab_band.h), so the whole band is
+/// never held: the mask, a few layers of band and one meta-cell per token. The
+/// same bytes as contourWithOctree(distanceField(mask, distance), ...). Records the
+/// "distance_field" statistics too.
+/// @throw InputError for another kind, the tracker method, an invalid meta-cell size;
+///        Interrupted on cancellation.
+void contourMaskWithOctree(const volume::Volume& mask, const volume::DistanceFieldOptions& distance,
+                           const cell::ContourSettings& settings, const octree::OctreeOptions& tree, int metaCellSize,
+                           mesh::MeshSink& sink, Interrupter* interrupter = nullptr, Statistics* stats = nullptr);
 
 /// The same, collected into a mesh.
 mesh::Mesh contourWithOctree(const volume::Volume& field, const cell::ContourSettings& settings,

@@ -31,7 +31,9 @@ class Statistics {
     ~StageTimer() {
       if (!stats_) return;
       const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start_;
-      stats_->json_["timings_s"][stage_] = elapsed.count();
+      // A stage timed several times (interleaved with another) adds up.
+      Json& seconds = stats_->json_["timings_s"][stage_];
+      seconds = (seconds.is_number() ? seconds.get<double>() : 0.0) + elapsed.count();
       stats_->recordStageMemory(stage_);
     }
     StageTimer(const StageTimer&) = delete;

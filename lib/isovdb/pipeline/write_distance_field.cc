@@ -34,20 +34,8 @@ void writeDistanceFieldVdb(const volume::Volume& volume, const volume::DistanceF
     summary = writer.commit(interrupter);
   }
   if (!stats) return;
-  Statistics::Json section = Statistics::Json::object();
-  section["method"] = std::string(volume::distanceMethodName(options.method));
-  section["half_width_voxels"] = options.halfWidth;
-  section["closing_steps"] = options.closingSteps;
-  section["kind"] = std::string(volume::volumeKindName(volume::VolumeKind::DistanceField));
-  section["active_voxels"] = summary.activeVoxels;
-  section["leaf_nodes"] = summary.leafCount;
-  section["active_tiles"] = 0;
-  section["bbox_min"] = summary.bboxMin;
-  section["bbox_max"] = summary.bboxMax;
-  section["spacing"] = volume.geometry().spacing;
-  section["origin"] = volume.geometry().origin;
-  section["min_value"] = summary.minValue;
-  section["max_value"] = summary.maxValue;
+  Statistics::Json section = distanceFieldSection(options);
+  recordBandFigures(summary, volume.geometry(), section);
   // Streamed: the band was never a grid in memory, so there is no grid_memory_bytes.
   section["streamed_to_file"] = true;
   section["spill_bytes"] = summary.spillBytes;

@@ -65,23 +65,24 @@ FieldGrid::Ptr bandOf(const MaskGrid& mask, const DistanceFieldOptions& options,
 
 namespace {
 
-/// The interface band of the mask, after the morphological closing asked for
-/// (OpenVDB's face-neighbour dilation then erosion, as topologyToLevelSet does).
+/// The interface band of the mask, after the morphological closing asked for.
 std::size_t interfaceBandInChunks(const MaskGrid& mask, const DistanceFieldOptions& options, const BandLeafSink& sink,
                                   Interrupter* interrupter) {
   constexpr int kDefaultChunk = 64;
   const int chunk = options.chunkSize > 0 ? options.chunkSize : kDefaultChunk;
   if (options.closingSteps == 0) return computeInterfaceBand(mask, options.halfWidth, chunk, sink, interrupter);
-  MaskGrid::Ptr closed = mask.deepCopy();
-  openvdb::tools::dilateActiveValues(closed->tree(), options.closingSteps, openvdb::tools::NN_FACE,
-                                     openvdb::tools::PRESERVE_TILES);
-  openvdb::tools::erodeActiveValues(closed->tree(), options.closingSteps, openvdb::tools::NN_FACE,
-                                    openvdb::tools::PRESERVE_TILES);
-  openvdb::tools::pruneInactive(closed->tree());
-  return computeInterfaceBand(*closed, options.halfWidth, chunk, sink, interrupter);
+  return computeInterfaceBand(*closedMask(mask, options.closingSteps), options.halfWidth, chunk, sink, interrupter);
 }
 
 }  // namespace
+
+MaskGrid::Ptr closedMask(const MaskGrid& mask, int steps) {
+  MaskGrid::Ptr closed = mask.deepCopy();
+  openvdb::tools::dilateActiveValues(closed->tree(), steps, openvdb::tools::NN_FACE, openvdb::tools::PRESERVE_TILES);
+  openvdb::tools::erodeActiveValues(closed->tree(), steps, openvdb::tools::NN_FACE, openvdb::tools::PRESERVE_TILES);
+  openvdb::tools::pruneInactive(closed->tree());
+  return closed;
+}
 
 std::size_t computeBandInChunks(const MaskGrid& mask, const DistanceFieldOptions& options, const BandLeafSink& sink,
                                 Interrupter* interrupter) {

@@ -22,6 +22,10 @@ namespace isovdb::volume {
 /// that adds to a tree takes a lock).
 using BandLeafSink = std::function<void(std::vector<std::unique_ptr<FieldLeaf>>&&)>;
 
+/// The mask closed by `steps` voxels: OpenVDB's face-neighbour dilation then
+/// erosion, as topologyToLevelSet does before its band.
+MaskGrid::Ptr closedMask(const MaskGrid& mask, int steps);
+
 /// The band of the whole mask with OpenVDB's tools at once: topologyToLevelSet,
 /// then (options.redistance) one fast-sweeping pass.
 FieldGrid::Ptr bandOf(const MaskGrid& mask, const DistanceFieldOptions& options, Interrupter* interrupter);

@@ -801,32 +801,66 @@ std::vector<Coord> candidateChunks(const MaskGrid& mask, const Layout& layout) {
 
 }  // namespace
 
-std::size_t computeInterfaceBand(const MaskGrid& mask, int halfWidth, int chunkSize, const BandLeafSink& sink,
-                                 Interrupter* interrupter) {
-  ProgressStage progress(interrupter, "distance field");
-  const Layout layout(halfWidth, chunkSize);
-  const std::vector<Coord> chunks = candidateChunks(mask, layout);
-  const ChunkBand band(mask, layout);
+struct InterfaceBandChunks::Impl {
+  Impl(const MaskGrid& mask, int halfWidth, int chunkSize)
+      : layout(halfWidth, chunkSize), chunks(candidateChunks(mask, layout)), band(mask, layout) {}
+  Layout layout;
+  std::vector<Coord> chunks;  ///< sorted (x, y, z)
+  ChunkBand band;
   tbb::enumerable_thread_specific<std::unique_ptr<Scratch>> scratch;
+};
+
+InterfaceBandChunks::InterfaceBandChunks(const MaskGrid& mask, int halfWidth, int chunkSize)
+    : impl_(std::make_unique<Impl>(mask, halfWidth, chunkSize)) {}
+
+InterfaceBandChunks::~InterfaceBandChunks() = default;
+
+int InterfaceBandChunks::chunkSize() const { return impl_->layout.chunk; }
+
+std::size_t InterfaceBandChunks::chunkCount() const { return impl_->chunks.size(); }
+
+std::optional<std::pair<int, int>> InterfaceBandChunks::zRange() const {
+  if (impl_->chunks.empty()) return std::nullopt;
+  const auto [lo, hi] = std::minmax_element(impl_->chunks.begin(), impl_->chunks.end(),
+                                            [](const Coord& a, const Coord& b) { return a.z() < b.z(); });
+  return std::make_pair(lo->z(), hi->z() + impl_->layout.chunk);
+}
+
+std::size_t InterfaceBandChunks::compute(int zBegin, int zEnd, const BandLeafSink& sink,
+                                         const std::function<void()>& chunkDone) {
+  std::vector<Coord> chunks;
+  for (const Coord& c : impl_->chunks)
+    if (c.z() >= zBegin && c.z() < zEnd) chunks.push_back(c);
   std::mutex handOut;
-  std::size_t done = 0, withBand = 0;
+  std::size_t withBand = 0;
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, chunks.size(), 1),
       [&](const tbb::blocked_range<std::size_t>& range) {
-        std::unique_ptr<Scratch>& mine = scratch.local();
-        if (!mine) mine = std::make_unique<Scratch>(layout);
+        std::unique_ptr<Scratch>& mine = impl_->scratch.local();
+        if (!mine) mine = std::make_unique<Scratch>(impl_->layout);
         for (std::size_t c = range.begin(); c != range.end(); ++c) {
           std::vector<std::unique_ptr<FieldLeaf>> leaves;
-          band.compute(chunks[c], *mine, leaves);
+          impl_->band.compute(chunks[c], *mine, leaves);
           const bool any = !leaves.empty();
           if (any) sink(std::move(leaves));
           const std::lock_guard<std::mutex> lock(handOut);
           withBand += any ? 1 : 0;
-          progress.update(static_cast<double>(++done), static_cast<double>(chunks.size()));
+          if (chunkDone) chunkDone();
         }
       },
       tbb::simple_partitioner());
   return withBand;
+}
+
+std::size_t computeInterfaceBand(const MaskGrid& mask, int halfWidth, int chunkSize, const BandLeafSink& sink,
+                                 Interrupter* interrupter) {
+  ProgressStage progress(interrupter, "distance field");
+  InterfaceBandChunks chunks(mask, halfWidth, chunkSize);
+  std::size_t done = 0;
+  const auto total = static_cast<double>(chunks.chunkCount());
+  // chunkDone runs under the hand-out lock.
+  return chunks.compute(std::numeric_limits<int>::min(), std::numeric_limits<int>::max(), sink,
+                        [&] { progress.update(static_cast<double>(++done), total); });
 }
 
 }  // namespace isovdb::volume

@@ -25,6 +25,10 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <utility>
 
 #include "isovdb/volume/band_chunks.h"
 
@@ -38,5 +42,30 @@ namespace isovdb::volume {
 /// @throw Interrupted on cancellation.
 std::size_t computeInterfaceBand(const MaskGrid& mask, int halfWidth, int chunkSize, const BandLeafSink& sink,
                                  Interrupter* interrupter);
+
+/// The same band, computed on demand in slabs along z: a caller that consumes the
+/// band slab by slab (volume/slab_band.h) never holds all of it. Chunk cubes start
+/// at multiples of chunkSize, as in computeInterfaceBand, so the values are the same.
+class InterfaceBandChunks {
+ public:
+  InterfaceBandChunks(const MaskGrid& mask, int halfWidth, int chunkSize);
+  ~InterfaceBandChunks();
+  InterfaceBandChunks(const InterfaceBandChunks&) = delete;
+  InterfaceBandChunks& operator=(const InterfaceBandChunks&) = delete;
+
+  int chunkSize() const;
+  /// Chunks whose region may hold an interface.
+  std::size_t chunkCount() const;
+  /// [first z, last z + chunkSize) of those chunks; nullopt when there are none.
+  std::optional<std::pair<int, int>> zRange() const;
+  /// Computes the chunks whose cube starts at z in [zBegin, zEnd), in parallel,
+  /// handing their leaves to `sink` as computeInterfaceBand does; `chunkDone` (optional)
+  /// runs after each chunk, one call at a time. Returns the chunks that held an interface.
+  std::size_t compute(int zBegin, int zEnd, const BandLeafSink& sink, const std::function<void()>& chunkDone = {});
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace isovdb::volume

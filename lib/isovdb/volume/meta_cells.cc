@@ -60,11 +60,13 @@ MetaCellPartition partitionMetaCells(const Volume& field, int size, float iso) {
   return partition;
 }
 
-void readMetaCell(const Volume& field, const MetaCellIndex& index, int size, cell::MetaCellSamples& out, int apron) {
-  readBlock(field, {index[0] * size, index[1] * size, index[2] * size}, size, out, apron);
+void readMetaCell(const Volume& field, const MetaCellIndex& index, int size, cell::MetaCellSamples& out, int apron,
+                  const BlockWithoutLeaf& blockWithoutLeaf) {
+  readBlock(field, {index[0] * size, index[1] * size, index[2] * size}, size, out, apron, blockWithoutLeaf);
 }
 
-void readBlock(const Volume& field, const std::array<int, 3>& origin, int size, cell::MetaCellSamples& out, int apron) {
+void readBlock(const Volume& field, const std::array<int, 3>& origin, int size, cell::MetaCellSamples& out, int apron,
+               const BlockWithoutLeaf& blockWithoutLeaf) {
   using Leaf = FieldGrid::TreeType::LeafNodeType;
   constexpr int kLeafDim = static_cast<int>(Leaf::DIM);
   const FieldGrid& grid = fieldGrid(field);
@@ -86,7 +88,7 @@ void readBlock(const Volume& field, const std::array<int, 3>& origin, int size, 
         const openvdb::Coord from = openvdb::Coord::maxComponent(block, lo);
         const openvdb::Coord to = openvdb::Coord::minComponent(block.offsetBy(kLeafDim - 1), hi);
         const Leaf* leaf = accessor.probeConstLeaf(block);
-        const float tile = leaf ? 0.0f : accessor.getValue(block);
+        const float tile = leaf ? 0.0f : blockWithoutLeaf ? blockWithoutLeaf({bx, by, bz}) : accessor.getValue(block);
         for (int z = from.z(); z <= to.z(); ++z)
           for (int y = from.y(); y <= to.y(); ++y) {
             float* row = out.values.data() + static_cast<std::size_t>(z - lo.z()) * sliceStride +

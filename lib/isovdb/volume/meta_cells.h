@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "isovdb/cell/meta_cell_samples.h"
@@ -39,14 +40,19 @@ struct MetaCellPartition {
 /// @throw InputError otherwise.
 MetaCellPartition partitionMetaCells(const Volume& field, int size, float iso = 0.f);
 
+/// The value of every voxel of the leaf-sized block at this origin (multiples of 8)
+/// where the grid holds no leaf; empty: the grid's own tile or background value.
+using BlockWithoutLeaf = std::function<float(const std::array<int, 3>&)>;
+
 /// Fills `out` with the samples of meta-cell `index` (offsets -A..S+A on each
 /// axis, A = `apron`), inactive voxels reading as the grid's signed background.
-void readMetaCell(const Volume& field, const MetaCellIndex& index, int size, cell::MetaCellSamples& out, int apron = 1);
+void readMetaCell(const Volume& field, const MetaCellIndex& index, int size, cell::MetaCellSamples& out, int apron = 1,
+                  const BlockWithoutLeaf& blockWithoutLeaf = {});
 
 /// Fills `out` with the samples of the cube of `size` cells whose minimum corner
 /// is `origin` (any index position, not only multiples of size), apron included.
 void readBlock(const Volume& field, const std::array<int, 3>& origin, int size, cell::MetaCellSamples& out,
-               int apron = 1);
+               int apron = 1, const BlockWithoutLeaf& blockWithoutLeaf = {});
 
 /// True when the samples 0..S of `samples` hold both sides of `iso` (inside: value <= iso).
 bool hasSignChange(const cell::MetaCellSamples& samples, float iso);
