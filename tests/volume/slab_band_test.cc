@@ -55,6 +55,10 @@ void expectSameAsTheWholeField(const Volume& mask, const DistanceFieldOptions& o
   const SlabBand::Figures figures = band.figures();
   EXPECT_EQ(figures.activeVoxels, static_cast<std::int64_t>(fieldGrid(whole).activeVoxelCount()));
   EXPECT_EQ(figures.leafCount, static_cast<std::int64_t>(fieldGrid(whole).tree().leafCount()));
+  openvdb::CoordBBox box;
+  ASSERT_TRUE(fieldGrid(whole).tree().evalActiveVoxelBoundingBox(box));
+  EXPECT_EQ(figures.bboxMin, (std::array<int, 3>{box.min().x(), box.min().y(), box.min().z()}));
+  EXPECT_EQ(figures.bboxMax, (std::array<int, 3>{box.max().x(), box.max().y(), box.max().z()}));
 }
 
 TEST(SlabBand, EveryLayerReadsWhatTheWholeFieldHolds) {

@@ -52,20 +52,31 @@ std::vector<MetaCellIndex> SlabBand::advanceTo(int k, float iso) {
   if (reachEnd > computedEnd_) {
     std::mutex adding;
     chunks_->compute(computedEnd_, reachEnd, [&](std::vector<std::unique_ptr<FieldLeaf>>&& leaves) {
-      const std::lock_guard<std::mutex> lock(adding);
-      for (auto& leaf : leaves) {
-        if (const auto active = static_cast<std::int64_t>(leaf->onVoxelCount()); active > 0) {
-          figures_.activeVoxels += active;
-          ++figures_.leafCount;
-          for (auto v = leaf->cbeginValueOn(); v; ++v) {
-            figures_.minValue = std::min(figures_.minValue, *v);
-            figures_.maxValue = std::max(figures_.maxValue, *v);
-            activeBox_.expand(v.getCoord());
-          }
+      // The chunk's figures first, outside the lock (chunks arrive from every thread).
+      Figures chunk;
+      chunk.minValue = std::numeric_limits<float>::max();
+      chunk.maxValue = std::numeric_limits<float>::lowest();
+      openvdb::CoordBBox box;
+      std::int64_t bytes = 0;
+      for (const auto& leaf : leaves) {
+        bytes += static_cast<std::int64_t>(leaf->memUsage());
+        if (leaf->isEmpty()) continue;
+        chunk.activeVoxels += static_cast<std::int64_t>(leaf->onVoxelCount());
+        ++chunk.leafCount;
+        for (auto v = leaf->cbeginValueOn(); v; ++v) {
+          chunk.minValue = std::min(chunk.minValue, *v);
+          chunk.maxValue = std::max(chunk.maxValue, *v);
         }
-        heldBytes_ += static_cast<std::int64_t>(leaf->memUsage());
-        band_->tree().addLeaf(leaf.release());
+        leaf->evalActiveBoundingBox(box);
       }
+      const std::lock_guard<std::mutex> lock(adding);
+      for (auto& leaf : leaves) band_->tree().addLeaf(leaf.release());
+      figures_.activeVoxels += chunk.activeVoxels;
+      figures_.leafCount += chunk.leafCount;
+      figures_.minValue = std::min(figures_.minValue, chunk.minValue);
+      figures_.maxValue = std::max(figures_.maxValue, chunk.maxValue);
+      activeBox_.expand(box);
+      heldBytes_ += bytes;
       figures_.peakBytes = std::max(figures_.peakBytes, heldBytes_);
     });
     computedEnd_ = reachEnd;
