@@ -76,6 +76,19 @@ TEST(CliSegy, InfoPrintsGeometryPercentilesAndTheActiveFractionOfAClip) {
             static_cast<std::int64_t>(std::llround(fraction * kDims[0] * kDims[1] * kDims[2])));
 }
 
+TEST(CliSegy, InfoNamesTheRevisionAndTheHeadersItSteppedOver) {
+  TempDir dir;
+  const auto path = dataDir() / "seismic" / "segyio" / "trace-header-extensions.sgy";
+  const nlohmann::json segy = runJson("info " + path.string(), dir)["input"]["segy"];
+  EXPECT_EQ(segy["revision"], "2.1");
+  EXPECT_EQ(segy["extended_text_headers"], 1);
+  EXPECT_EQ(segy["trace_header_extensions"], 2);
+  const nlohmann::json stanzas = runJson(
+      "info " + (dataDir() / "seismic" / "segyio" / "stanzas-unknown-count.sgy").string(), dir)["input"]["segy"];
+  EXPECT_EQ(stanzas["extended_text_headers"], 3);
+  EXPECT_TRUE(stanzas["extended_text_headers_ended_by_endtext"].get<bool>());
+}
+
 TEST(CliSegy, CappedIsosurfaceIsClosedAndOpenOneEndsExactlyOnTheSurveyBoundary) {
   TempDir dir;
   const auto capPly = dir / "cap.ply", openPly = dir / "open.ply";

@@ -7,7 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -234,6 +236,103 @@ TEST_F(SegyBadInput, LineNumbersFromTheWrongBytesMakeAnAlmostEmptyGrid) {
   const auto path = writeCube(dir, {.inlines = 3, .crosslines = 8, .samples = 6});
   expectError<InputError>([&] { openSegy(path, {.inlineByte = 1}); },
                           {path.string(), "make a 24 x 8 grid for only 24 traces", "--inline-byte 1"});
+}
+
+TEST_F(SegyBadInput, LineNumbersBeyondAnIntAreRejectedNotWrapped) {
+  // Inlines -2^31, -2^31 + 1 and 2^31 - 1: a step of 1 over 2^32 numbers; and
+  // -2^31, 2^31 - 1 alone: one step of 2^32 - 1. Neither fits the grid's ints.
+  const SegyCubeSpec spec{.inlines = 3, .crosslines = 1, .samples = 4, .firstInline = std::numeric_limits<int>::min()};
+  std::string bytes = readFile(writeCube(dir, spec));
+  const std::size_t trace2 = 3600 + 2 * (240 + 4 * 4);
+  bytes.replace(trace2 + 188, 4, std::string("\x7f\xff\xff\xff", 4));
+  const auto three = withBytes(bytes);
+  expectError<InputError>([&] { openSegy(three); },
+                          {three.string(), "inline numbers -2147483648..2147483647", "beyond 2^31 - 1"});
+  const std::size_t trace1 = 3600 + 1 * (240 + 4 * 4);
+  bytes.replace(trace1 + 188, 4, std::string("\x7f\xff\xff\xff", 4));
+  const auto path = dir / "two.sgy";
+  writeFile(path, bytes.substr(0, trace2));
+  expectError<InputError>([&] { openSegy(path); }, {path.string(), "beyond 2^31 - 1"});
+}
+
+// --- Header rules, on segyio's own test files (data/seismic/segyio) ---------------
+
+std::filesystem::path segyio(const std::string& name) { return dataDir() / "seismic" / "segyio" / name; }
+
+TEST(SegyHeaders, DelayScalarIntervalsAndExtendedTextualHeadersAsUpstreamReadsThem) {
+  // Upstream segyio: delay 10000 with scalar -10 is 1000 ms.
+  EXPECT_EQ(openSegy(segyio("delay-scalar.sgy"))->geometry().firstSampleMs, 1000.0);
+  // A non-positive interval in one header is ignored in favour of the other.
+  EXPECT_EQ(openSegy(segyio("interval-pos-bin-neg-trace.sgy"))->geometry().sampleIntervalUs, 2000.0);
+  EXPECT_EQ(openSegy(segyio("interval-neg-bin-pos-trace.sgy"))->geometry().sampleIntervalUs, 4000.0);
+  // Extended textual headers: counted, or (-1) up to the ((SEG: EndText)) stanza.
+  const SegyGeometry unknown = openSegy(segyio("stanzas-unknown-count.sgy"))->geometry();
+  EXPECT_EQ(unknown.extendedTextHeaders, 3);
+  EXPECT_TRUE(unknown.extendedTextHeaderCountVariable);
+  EXPECT_EQ(unknown.traces, 6);
+  const SegyGeometry known = openSegy(segyio("stanzas-known-count.sgy"))->geometry();
+  EXPECT_EQ(known.extendedTextHeaders, 3);
+  EXPECT_FALSE(known.extendedTextHeaderCountVariable);
+  EXPECT_EQ(known.traces, 6);
+  EXPECT_EQ(openSegy(segyio("multi-text.sgy"))->geometry().extendedTextHeaders, 4);
+}
+
+/// IBM single-precision float from its four big-endian bytes.
+float ibmFloat(const unsigned char* b) {
+  const std::uint32_t w = (std::uint32_t{b[0]} << 24) | (std::uint32_t{b[1]} << 16) | (std::uint32_t{b[2]} << 8) | b[3];
+  const double mantissa = static_cast<double>(w & 0xffffffu) / 16777216.0;
+  const double value = mantissa * std::pow(16.0, static_cast<int>((w >> 24) & 0x7f) - 64);
+  return static_cast<float>((w >> 31) ? -value : value);
+}
+
+TEST(SegyHeaders, Revision2TraceHeaderExtensionsAreSteppedOver) {
+  // rotated-small-rev2 holds small.sgy's samples behind one extension per trace.
+  auto rev2 = openSegy(segyio("rotated-small-rev2.sgy"));
+  EXPECT_EQ(rev2->geometry().revision, 2);
+  EXPECT_EQ(rev2->geometry().traceHeaderExtensions, 1);
+  auto small = openSegy(f3("small.sgy"));
+  const std::vector<float> a = readAll(*rev2), b = readAll(*small);
+  ASSERT_EQ(a.size(), 5u * 5u * 50u);
+  EXPECT_EQ(a, b);
+  // Two extensions and one extended textual header: each trace's samples where the
+  // layout puts them, decoded here from the file's bytes.
+  const auto path = segyio("trace-header-extensions.sgy");
+  auto stream = openSegy(path);
+  const SegyGeometry& g = stream->geometry();
+  EXPECT_EQ(g.revision, 2);
+  EXPECT_EQ(g.revisionMinor, 1);
+  EXPECT_EQ(g.extendedTextHeaders, 1);
+  EXPECT_EQ(g.traceHeaderExtensions, 2);
+  ASSERT_EQ(g.formatCode, 1);
+  const std::string bytes = readFile(path);
+  const std::vector<float> values = readAll(*stream);
+  const int samples = g.samples;
+  ASSERT_EQ(static_cast<std::int64_t>(values.size()), g.traces * samples);
+  for (std::int64_t t = 0; t < g.traces; ++t)
+    for (int k = 0; k < samples; ++k) {
+      const std::size_t at = 3600 + 3200 + static_cast<std::size_t>(t) * (3 * 240 + 4 * samples) + 3 * 240 + 4 * k;
+      const float expected = ibmFloat(reinterpret_cast<const unsigned char*>(bytes.data()) + at);
+      // readAll is in stream order: line by line, trace by trace, sample fastest.
+      EXPECT_EQ(values[static_cast<std::size_t>(t * samples + k)], expected) << "trace " << t << " sample " << k;
+    }
+}
+
+TEST(SegyHeaders, SampleCountsAreUnsigned) {
+  TempDir dir;
+  const auto path = writeCube(dir, {.inlines = 2, .crosslines = 2, .samples = 40000, .formatCode = 8});
+  auto stream = openSegy(path);
+  EXPECT_EQ(stream->geometry().samples, 40000);
+  const std::vector<float> values = readAll(*stream);
+  ASSERT_EQ(values.size(), 4u * 40000u);
+  EXPECT_EQ(values[1], std::clamp(cubeValue(0, 0, 1), -128.f, 127.f));
+}
+
+TEST(SegyHeaders, PreStackFilesAndImpossibleCountsSayWhy) {
+  const auto preStack = segyio("small-ps.sgy");
+  expectError<InputError>([&] { openSegy(preStack); },
+                          {preStack.string(), "several traces per bin", "pre-stack", "keep one offset"});
+  const auto maxed = segyio("decrement.sgy");
+  expectError<InputError>([&] { openSegy(maxed); }, {maxed.string(), "65527 IBM float samples", "sample count"});
 }
 
 // --- SampleStatistics ------------------------------------------------------------

@@ -8,11 +8,14 @@
 #include <bit>
 #include <cerrno>
 #include <cmath>
+#include <cctype>
 #include <cstring>
+#include <fstream>
 #include <limits>
 #include <numbers>
 #include <numeric>
 #include <optional>
+#include <string_view>
 
 #include "isovdb/errors.h"
 #include "isovdb/io/path_util.h"
@@ -21,8 +24,11 @@ namespace isovdb::io {
 
 struct SegyStream::File {
   segy_file* handle = nullptr;
-  long trace0 = 0;     ///< byte offset of the first trace header
-  int traceBytes = 0;  ///< sample bytes per trace (without the 240-byte header)
+  long trace0 = 0;         ///< byte offset of the first trace header
+  int traceBytes = 0;      ///< sample bytes per trace (without the 240-byte header)
+  int extensionBytes = 0;  ///< 240 per trace header extension (SEG-Y rev 2), between the header and the samples
+  /// What segyio 1.8 calls a trace's size: it steps over the header extensions as if they were samples.
+  int strideBytes() const { return traceBytes + extensionBytes; }
   ~File() {
     if (handle) segy_close(handle);
   }
@@ -62,7 +68,7 @@ class HeaderScan {
   }
 
   void readTraceHeader(std::int64_t trace, char* buf) {
-    if (segy_traceheader(file_.handle, static_cast<int>(trace), buf, file_.trace0, file_.traceBytes) != SEGY_OK)
+    if (segy_traceheader(file_.handle, static_cast<int>(trace), buf, file_.trace0, file_.strideBytes()) != SEGY_OK)
       throw IoError(where_ + "cannot read the header of trace " + std::to_string(trace));
   }
 
@@ -87,12 +93,98 @@ std::array<double, 2> cdpOf(const HeaderScan& scan, const char* header) {
           scan.field(header, SEGY_TR_CDP_Y, "trace header byte") * factor};
 }
 
+/// The binary header as the file holds it: segyio 1.8 knows the fields of revision 1
+/// only, so the revision 2 ones (and unsigned counts) are read from these bytes.
+class RawBinaryHeader {
+ public:
+  RawBinaryHeader(const std::string& source, bool littleEndian) : little_(littleEndian) {
+    std::ifstream in(source, std::ios::binary);
+    in.seekg(SEGY_TEXT_HEADER_SIZE);
+    if (!in.read(reinterpret_cast<char*>(bytes_.data()), SEGY_BINARY_HEADER_SIZE))
+      throw IoError("'" + source + "': cannot read the binary header");
+  }
+  /// The byte at file position `byte` (1-based, 3201..3600).
+  int byteAt(int byte) const { return bytes_[static_cast<std::size_t>(byte - SEGY_TEXT_HEADER_SIZE - 1)]; }
+  std::uint32_t unsigned16(int byte) const { return word(byte, 2); }
+  std::int32_t signed16(int byte) const { return static_cast<std::int16_t>(word(byte, 2)); }
+  std::int32_t signed32(int byte) const { return static_cast<std::int32_t>(word(byte, 4)); }
+
+ private:
+  std::uint32_t word(int byte, int size) const {
+    std::uint32_t value = 0;
+    for (int i = 0; i < size; ++i) {
+      const int at = little_ ? byte + size - 1 - i : byte + i;
+      value = (value << 8) | static_cast<std::uint32_t>(byteAt(at));
+    }
+    return value;
+  }
+  std::array<unsigned char, SEGY_BINARY_HEADER_SIZE> bytes_{};
+  bool little_;
+};
+
+/// True when a 3200-byte extended textual header is the ((SEG: EndText)) stanza that
+/// ends a variable count (SEG-Y rev 2), in ASCII or EBCDIC, any letter case and spacing.
+bool isEndTextStanza(const char* block) {
+  // EBCDIC letters, digits, '(', ')', ':' and ' ' as ASCII (the others do not matter here).
+  const auto ascii = [](unsigned char c) -> char {
+    if (c < 0x80 && c != 0x40 && c != 0x4D && c != 0x5D && c != 0x7A) return static_cast<char>(c);
+    static const std::string_view lower = "abcdefghi", lower2 = "jklmnopqr", lower3 = "stuvwxyz";
+    if (c >= 0x81 && c <= 0x89) return lower[c - 0x81];
+    if (c >= 0x91 && c <= 0x99) return lower2[c - 0x91];
+    if (c >= 0xA2 && c <= 0xA9) return lower3[c - 0xA2];
+    if (c >= 0xC1 && c <= 0xC9) return lower[c - 0xC1];
+    if (c >= 0xD1 && c <= 0xD9) return lower2[c - 0xD1];
+    if (c >= 0xE2 && c <= 0xE9) return lower3[c - 0xE2];
+    switch (c) {
+      case 0x40:
+        return ' ';
+      case 0x4D:
+        return '(';
+      case 0x5D:
+        return ')';
+      case 0x7A:
+        return ':';
+      default:
+        return '?';
+    }
+  };
+  std::string text;
+  for (int i = 0; i < 80; ++i) {
+    const char c = ascii(static_cast<unsigned char>(block[i]));
+    if (c != ' ') text += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return text.rfind("((seg:endtext))", 0) == 0;
+}
+
+/// Extended textual headers counted by the binary header (bytes 3505-3506), or, for
+/// -1 (a variable count), up to and including the ((SEG: EndText)) stanza.
+int extendedTextHeaderCount(const std::string& source, std::int32_t declared, std::int64_t fileSize) {
+  if (declared >= 0) return declared;
+  if (declared != -1)
+    throw InputError("'" + source + "': " + std::to_string(declared) +
+                     " extended textual headers (binary header bytes 3505-3506): expected 0 or more, or -1 for a "
+                     "count ended by ((SEG: EndText))");
+  std::ifstream in(source, std::ios::binary);
+  std::array<char, SEGY_TEXT_HEADER_SIZE> block{};
+  for (int count = 1;; ++count) {
+    const std::int64_t at = std::int64_t{SEGY_TEXT_HEADER_SIZE} * count + SEGY_BINARY_HEADER_SIZE;
+    in.seekg(at);
+    if (at + SEGY_TEXT_HEADER_SIZE > fileSize || !in.read(block.data(), SEGY_TEXT_HEADER_SIZE))
+      throw InputError("'" + source +
+                       "': the binary header (bytes 3505-3506) says the extended textual headers end with a "
+                       "((SEG: EndText)) stanza, but the file has none");
+    if (isEndTextStanza(block.data())) return count;
+  }
+}
+
 struct LineKeys {
   std::vector<std::int32_t> slow, fast;  ///< per trace: number of its line, and along the line
 };
 
 /// Index along a line axis whose numbers are first + i * step.
-int indexOf(int number, const SegyLineAxis& axis) { return (number - axis.first) / axis.step; }
+int indexOf(int number, const SegyLineAxis& axis) {
+  return static_cast<int>((std::int64_t{number} - axis.first) / axis.step);
+}
 
 }  // namespace
 
@@ -167,37 +259,60 @@ std::unique_ptr<SegyStream> openSegy(const std::filesystem::path& path, const Se
   g.formatCode = format;
   segy_set_format(file.handle, format | (g.littleEndian ? SEGY_LSB : SEGY_MSB));
 
-  file.trace0 = segy_trace0(binary);
-  if (file.trace0 < kHeaderBytes)
-    throw scan.error("negative number of extended textual headers (binary header bytes 3505-3506)");
+  const RawBinaryHeader raw(source, g.littleEndian);
+  g.revision = raw.byteAt(3501);
+  g.revisionMinor = raw.byteAt(3502);
+  g.extendedTextHeaders = extendedTextHeaderCount(source, raw.signed16(3505), fileSize);
+  g.extendedTextHeaderCountVariable = raw.signed16(3505) == -1;
+  // Bytes 3507-3508 are unassigned before revision 2 (old files may hold anything there).
+  g.traceHeaderExtensions = g.revision >= 2 ? static_cast<int>(raw.unsigned16(3507)) : 0;
+  file.trace0 = kHeaderBytes + std::int64_t{SEGY_TEXT_HEADER_SIZE} * g.extendedTextHeaders;
+  file.extensionBytes = SEGY_TRACE_HEADER_SIZE * g.traceHeaderExtensions;
   if (fileSize <= file.trace0)
     throw scan.error("no traces: the file ends after its " + std::to_string(file.trace0) + " header bytes");
 
   char header[SEGY_TRACE_HEADER_SIZE];
-  g.samples = segy_samples(binary);
-  if (g.samples <= 0) {  // rev 0 files may leave the binary header empty
+  // The count is unsigned (60000 samples are valid); revision 2 may put it in bytes 3269-3272.
+  const std::uint32_t binarySamples = raw.unsigned16(3221);
+  g.samples = static_cast<int>(binarySamples);
+  if (g.samples == 0 && g.revision >= 2 && raw.signed32(3269) > 0) g.samples = raw.signed32(3269);
+  if (g.samples == 0) {  // rev 0 files may leave the binary header empty
     scan.readTraceHeader(0, header);
-    g.samples = scan.field(header, SEGY_TR_SAMPLE_COUNT, "trace header byte");
-    if (g.samples <= 0)
-      throw scan.error("no sample count: 0 in the binary header (bytes 3221-3222) and in trace header bytes 115-116");
+    g.samples = scan.field(header, SEGY_TR_SAMPLE_COUNT, "trace header byte") & 0xFFFF;
+    if (g.samples == 0)
+      throw scan.error("no sample count: binary header bytes 3221-3222 hold 0 and trace header bytes 115-116 hold 0");
   }
+  constexpr int kMaxSamples = 1 << 26;  // 256 MiB per trace: beyond it the header is wrong, not the survey
+  if (g.samples > kMaxSamples)
+    throw scan.error(std::to_string(g.samples) + " samples per trace (binary header bytes 3269-3272): more than " +
+                     std::to_string(kMaxSamples));
   file.traceBytes = segy_trsize(format, g.samples);
-  const std::int64_t traceSize = SEGY_TRACE_HEADER_SIZE + std::int64_t{file.traceBytes};
+  const std::int64_t traceSize = SEGY_TRACE_HEADER_SIZE + std::int64_t{file.extensionBytes} + file.traceBytes;
   const std::int64_t dataBytes = fileSize - file.trace0;
+  const std::string extensions = g.traceHeaderExtensions > 0
+                                     ? " + " + std::to_string(g.traceHeaderExtensions) +
+                                           " trace header extensions of 240 bytes (binary header bytes 3507-3508)"
+                                     : "";
   if (dataBytes % traceSize != 0)
     throw scan.error(std::to_string(dataBytes) + " bytes of traces are not a whole number of " +
-                     std::to_string(traceSize) + "-byte traces (240-byte header + " + std::to_string(g.samples) + " " +
-                     segyFormatName(format) + " samples): the file is truncated (last trace has " +
-                     std::to_string(dataBytes % traceSize) +
-                     " bytes) or the sample count (binary header bytes "
-                     "3221-3222) does not match the traces");
+                     std::to_string(traceSize) + "-byte traces (240-byte header" + extensions + " + " +
+                     std::to_string(g.samples) + " " + segyFormatName(format) +
+                     " samples): the file is truncated (last trace has " + std::to_string(dataBytes % traceSize) +
+                     " bytes) or the sample count (binary header bytes 3221-3222) does not match the traces");
   g.traces = dataBytes / traceSize;
   if (g.traces > std::numeric_limits<std::int32_t>::max())
     throw scan.error(std::to_string(g.traces) + " traces, more than segyio's limit of 2^31 - 1");
 
-  float dt = 0;
-  if (segy_sample_interval(file.handle, 4000.f, &dt) != SEGY_OK || !(dt > 0)) dt = 4000.f;
-  g.sampleIntervalUs = dt;
+  // Sample interval as segyio 2 chooses it: a header's non-positive value is ignored,
+  // and two positive values that disagree give the fallback (4 ms).
+  scan.readTraceHeader(0, header);
+  const int binaryInterval = raw.signed16(3217);
+  const int traceInterval = static_cast<std::int16_t>(scan.field(header, SEGY_TR_SAMPLE_INTER, "trace header byte"));
+  g.sampleIntervalUs = 4000.0;
+  if (binaryInterval > 0 && (traceInterval <= 0 || traceInterval == binaryInterval))
+    g.sampleIntervalUs = binaryInterval;
+  else if (binaryInterval <= 0 && traceInterval > 0)
+    g.sampleIntervalUs = traceInterval;
 
   // One pass over the trace headers for the line numbers. (Trace header byte 115
   // is not checked: real files keep the uncropped count there, as F3 does.)
@@ -210,7 +325,12 @@ std::unique_ptr<SegyStream> openSegy(const std::filesystem::path& path, const Se
     scan.readTraceHeader(t, header);
     inl[static_cast<std::size_t>(t)] = scan.field(header, options.inlineByte, "--inline-byte");
     xl[static_cast<std::size_t>(t)] = scan.field(header, options.crosslineByte, "--crossline-byte");
-    if (t == 0) g.firstSampleMs = scan.field(header, SEGY_TR_DELAY_REC_TIME, "trace header byte");
+    if (t == 0) {
+      // The delay (bytes 109-110) is scaled by bytes 215-216 like a coordinate: > 0 multiplies, < 0 divides.
+      const int scalar = scan.field(header, SEGY_TR_SCALAR_TRACE_HEADER, "trace header byte");
+      const double factor = scalar == 0 ? 1.0 : scalar > 0 ? scalar : 1.0 / -scalar;
+      g.firstSampleMs = scan.field(header, SEGY_TR_DELAY_REC_TIME, "trace header byte") * factor;
+    }
   }
 
   // Sorting: which number stays constant from the first trace to the second
@@ -244,23 +364,30 @@ std::unique_ptr<SegyStream> openSegy(const std::filesystem::path& path, const Se
     lineStarts.push_back(t);
   }
   if (direction == 0) direction = 1;  // a single line
-  slow.first = keys.slow.front();
-  slow.step = static_cast<int>(direction * std::max<std::int64_t>(slowGcd, 1));
-  slow.count = static_cast<int>((std::int64_t{keys.slow.back()} - slow.first) / slow.step + 1);
-
   const auto [fastMin, fastMax] = std::minmax_element(keys.fast.begin(), keys.fast.end());
   std::int64_t fastGcd = 0;
   for (std::int32_t number : keys.fast) fastGcd = std::gcd(fastGcd, std::int64_t{number} - *fastMin);
-  fast.first = *fastMin;
-  fast.step = static_cast<int>(std::max<std::int64_t>(fastGcd, 1));
-  fast.count = static_cast<int>((std::int64_t{*fastMax} - *fastMin) / fast.step + 1);
-
-  const std::int64_t positions = std::int64_t{slow.count} * fast.count;
-  if (positions > 4 * g.traces)
-    throw scan.error("the inline and crossline numbers make a " +
-                     std::to_string(inlineSorted ? slow.count : fast.count) + " x " +
-                     std::to_string(inlineSorted ? fast.count : slow.count) + " grid for only " +
+  // Counts and steps in 64 bits first: line numbers may span more than an int.
+  const std::int64_t slowStep = direction * std::max<std::int64_t>(slowGcd, 1);
+  const std::int64_t slowCount = (std::int64_t{keys.slow.back()} - keys.slow.front()) / slowStep + 1;
+  const std::int64_t fastStep = std::max<std::int64_t>(fastGcd, 1);
+  const std::int64_t fastCount = (std::int64_t{*fastMax} - *fastMin) / fastStep + 1;
+  constexpr std::int64_t kIntMax = std::numeric_limits<int>::max();
+  if (std::abs(slowStep) > kIntMax || fastStep > kIntMax || slowCount > kIntMax || fastCount > kIntMax)
+    throw scan.error(std::string(slowName) + " numbers " + std::to_string(keys.slow.front()) + ".." +
+                     std::to_string(keys.slow.back()) + " and " + fastName + " numbers " + std::to_string(*fastMin) +
+                     ".." + std::to_string(*fastMax) + " step or count beyond 2^31 - 1 " + checkBytes);
+  if (slowCount * fastCount > 4 * g.traces)
+    throw scan.error("the inline and crossline numbers make a " + std::to_string(inlineSorted ? slowCount : fastCount) +
+                     " x " + std::to_string(inlineSorted ? fastCount : slowCount) + " grid for only " +
                      std::to_string(g.traces) + " traces " + checkBytes);
+  slow.first = keys.slow.front();
+  slow.step = static_cast<int>(slowStep);
+  slow.count = static_cast<int>(slowCount);
+  fast.first = *fastMin;
+  fast.step = static_cast<int>(fastStep);
+  fast.count = static_cast<int>(fastCount);
+  const std::int64_t positions = slowCount * fastCount;
   g.missingTraces = positions - g.traces;
 
   // Per line: first trace and count; per trace: index along its line; no duplicates.
@@ -280,7 +407,11 @@ std::unique_ptr<SegyStream> openSegy(const std::filesystem::path& path, const Se
       if (previous >= begin)
         throw scan.error("traces " + std::to_string(previous) + " and " + std::to_string(t) + " both have " + slowName +
                          " " + std::to_string(keys.slow[static_cast<std::size_t>(t)]) + " and " + fastName + " " +
-                         std::to_string(keys.fast[static_cast<std::size_t>(t)]) + " " + checkBytes);
+                         std::to_string(keys.fast[static_cast<std::size_t>(t)]) +
+                         ": several traces per bin, as in a pre-stack file (offsets, shot or CDP gathers); isovdb "
+                         "reads post-stack cubes (one trace per inline and crossline): stack the gathers or keep "
+                         "one offset first, or, if the lines are numbered elsewhere, " +
+                         checkBytes.substr(1, checkBytes.size() - 2));
       previous = t;
       stream->positionOfTrace_[static_cast<std::size_t>(t)] = position;
     }
@@ -338,8 +469,9 @@ void SegyStream::readSlice(float* out) {
   std::fill_n(out, samples * static_cast<std::size_t>(header_.dims[1]), std::numeric_limits<float>::quiet_NaN());
   const std::int64_t first = lineFirstTrace_[static_cast<std::size_t>(line)];
   for (std::int64_t t = first; first >= 0 && t < first + lineTraceCount_[static_cast<std::size_t>(line)]; ++t) {
-    if (segy_readtrace(file_->handle, static_cast<int>(t), traceBytes_.data(), file_->trace0, file_->traceBytes) !=
-        SEGY_OK)
+    // segyio 1.8 knows no header extensions: the samples start after them, and the stride steps over them.
+    if (segy_readsubtr(file_->handle, static_cast<int>(t), 0, geometry_.samples, 1, traceBytes_.data(), nullptr,
+                       file_->trace0 + file_->extensionBytes, file_->strideBytes()) != SEGY_OK)
       throw IoError("'" + source_ + "': cannot read trace " + std::to_string(t));
     const bool ibm = geometry_.formatCode == SEGY_IBM_FLOAT_4_BYTE;
     if (ibm) segy_to_native(SEGY_IBM_FLOAT_4_BYTE, static_cast<long long>(samples), traceBytes_.data());

@@ -1,15 +1,19 @@
 // SPDX-License-Identifier: MPL-2.0
 // Copyright Contributors to the isovdb project.
 /// @file segy_reader.h
-/// @brief SEG-Y (rev 0/1) post-stack amplitude cubes, read trace by trace with
-///        segyio's C API, as a SliceStream.
+/// @brief SEG-Y (rev 0, 1 and 2) post-stack amplitude cubes, read trace by trace
+///        with segyio's C API, as a SliceStream.
 ///
 /// Geometry comes from the trace headers: the inline and crossline numbers
 /// (bytes 189/193 by default, configurable), the sorting (which number stays
 /// constant over consecutive traces), the CDP coordinates (bytes 181/185,
 /// scaled by byte 71) for the line spacings, the sample interval (binary header
 /// byte 3217 or trace header byte 117) and the delay of the first sample (trace
-/// header byte 109). Byte order is detected from the binary header's format code.
+/// header byte 109, scaled by byte 215). Byte order is detected from the binary
+/// header's format code. Revision 2: a variable count of extended textual
+/// headers (-1, ended by ((SEG: EndText))), the extended sample count (bytes
+/// 3269-3272) and trace header extensions (bytes 3507-3508: skipped; the
+/// geometry comes from the standard header). Sample counts are unsigned.
 ///
 /// Grid axes: x = inline index, y = crossline index, z = sample index (time or
 /// depth grows with z): with inlines north and crosslines east, a right-handed
@@ -67,9 +71,14 @@ struct SegyGeometry {
   SegyLineAxis inlines, crosslines;
   /// Line spacings come from CDP coordinates; false when the file has none (spacing 1 per line).
   bool spacingFromCoordinates = false;
-  std::array<double, 2> originCdp{0.0, 0.0};  ///< CDP X, Y of index (0, 0) (extrapolated if it is a hole)
-  double rotationDegrees = 0.0;               ///< azimuth of the inline axis (x), clockwise from CDP-Y ("north")
-  SegyOptions bytes;                          ///< the header byte positions used
+  std::array<double, 2> originCdp{0.0, 0.0};     ///< CDP X, Y of index (0, 0) (extrapolated if it is a hole)
+  double rotationDegrees = 0.0;                  ///< azimuth of the inline axis (x), clockwise from CDP-Y ("north")
+  SegyOptions bytes;                             ///< the header byte positions used
+  int revision = 0;                              ///< SEG-Y major revision (binary header byte 3501)
+  int revisionMinor = 0;                         ///< minor revision (byte 3502)
+  int extendedTextHeaders = 0;                   ///< 3200-byte headers after the binary one (bytes 3505-3506)
+  bool extendedTextHeaderCountVariable = false;  ///< -1 in the binary header: counted up to ((SEG: EndText))
+  int traceHeaderExtensions = 0;  ///< 240-byte headers after each trace header (rev 2, bytes 3507-3508), skipped
 };
 
 /// "IBM float", "int32", "int16", "IEEE float" or "int8".

@@ -53,6 +53,10 @@ Statistics::Json lineAxisJson(const io::SegyLineAxis& axis) {
 
 Statistics::Json segyJson(const io::SegyGeometry& g) {
   Statistics::Json json = Statistics::Json::object();
+  json["revision"] = std::to_string(g.revision) + "." + std::to_string(g.revisionMinor);
+  json["extended_text_headers"] = g.extendedTextHeaders;
+  if (g.extendedTextHeaderCountVariable) json["extended_text_headers_ended_by_endtext"] = true;
+  json["trace_header_extensions"] = g.traceHeaderExtensions;
   json["sample_format"] = io::segyFormatName(g.formatCode);
   json["byte_order"] = g.littleEndian ? "little-endian" : "big-endian";
   json["sorting"] = g.sorting == io::SegySorting::Inline ? "inline" : "crossline";
