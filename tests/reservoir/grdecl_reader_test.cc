@@ -65,6 +65,98 @@ TEST(GrdeclReader, UnknownKeywordIsSkippedWithAWarning) {
   EXPECT_EQ(buildCornerPointGrid(deck).activeCells, 2);
 }
 
+TEST(GrdeclReader, BoxEditsAreAppliedInTheDecksOrder) {
+  // A 3x2x2 grid (12 cells, index i + 3 (j + 2 k)).
+  TempDir dir;
+  writeFile(dir / "deck.grdecl",
+            "SPECGRID\n 3 2 2 1 F /\n"
+            "PORO\n 12*0.1 /\n"
+            "EQUALS\n 'PORO' 0.3 2 3 1 1 1 1 /\n"  // cells 1, 2
+            "  PERMX 50 /\n"                       // a new property, every cell
+            "/\n"
+            "BOX\n 1 1 1 2 2 2 /\n"         // cells 6, 9
+            "NTG\n 0.7 0.8 /\n"             // an array inside a box fills the box
+            "MULTIPLY\n 'PERMX' 2 /\n /\n"  // within the current BOX
+            "ENDBOX\n"
+            "COPY\n 'PORO' 'SWL' 1* 1* 2 2 1* 1* /\n /\n"  // j = 2: cells 3-5, 9-11
+            "ADD\n 'PORO' 0.05 3 3 2 2 2 2 /\n /\n"        // cell 11
+            "MAXVALUE\n 'PERMX' 60 /\n /\n"
+            "MINVALUE\n 'PORO' 0.12 1 1 1 1 1 1 /\n /\n"  // cell 0
+            "MULTREGT\n 1 2 0.5 /\n /\n"                  // not about cells: skipped, named
+            "FAULTS\n 'F1' 1 1 1 2 1 2 'X' /\n 'F1' 2 2 1 1 1 2 'Y-' /\n 'F2' 3 3 1 2 1 1 'Z' /\n /\n"
+            "MULTFLT\n 'F1' 0.1 /\n F2 0 /\n /\n");
+  const GrdeclDeck deck = readGrdecl(dir / "deck.grdecl");
+  const auto& poro = deck.properties.at("PORO");
+  EXPECT_DOUBLE_EQ(poro[0], 0.12);
+  EXPECT_DOUBLE_EQ(poro[1], 0.3);
+  EXPECT_DOUBLE_EQ(poro[2], 0.3);
+  EXPECT_DOUBLE_EQ(poro[11], 0.15);
+  EXPECT_DOUBLE_EQ(poro[10], 0.1);
+  const auto& permx = deck.properties.at("PERMX");
+  EXPECT_EQ(permx[0], 50.0);
+  EXPECT_EQ(permx[6], 60.0);  // 50 * 2 in the box, then at most 60
+  EXPECT_EQ(permx[9], 60.0);
+  const auto& ntg = deck.properties.at("NTG");
+  EXPECT_EQ(ntg[6], 0.7);
+  EXPECT_EQ(ntg[9], 0.8);
+  EXPECT_EQ(ntg[0], 0.0);
+  const auto& swl = deck.properties.at("SWL");
+  EXPECT_DOUBLE_EQ(swl[3], 0.1);
+  EXPECT_EQ(swl[0], 0.0);
+  EXPECT_EQ(deck.editsApplied, 7);
+  ASSERT_EQ(deck.faults.size(), 3u);
+  EXPECT_EQ(deck.faults[1].name, "F1");
+  EXPECT_EQ(deck.faults[1].box, (std::array<int, 6>{2, 2, 1, 1, 1, 2}));
+  EXPECT_EQ(deck.faults[1].face, "Y-");
+  EXPECT_EQ(deck.faultMultipliers.at("F1"), 0.1);
+  EXPECT_EQ(deck.faultMultipliers.at("F2"), 0.0);
+  ASSERT_EQ(deck.warnings.size(), 1u);
+  EXPECT_NE(deck.warnings[0].find("MULTREGT"), std::string::npos);
+}
+
+TEST(GrdeclReader, EditsThatCannotApplySayWhy) {
+  TempDir dir;
+  writeFile(dir / "early.grdecl", "EQUALS\n 'PORO' 0.3 /\n /\n");
+  EXPECT_THROW(
+      {
+        try {
+          readGrdecl(dir / "early.grdecl");
+        } catch (const InputError& e) {
+          EXPECT_NE(std::string(e.what()).find("before SPECGRID or DIMENS"), std::string::npos) << e.what();
+          throw;
+        }
+      },
+      InputError);
+  writeFile(dir / "box.grdecl", "SPECGRID\n 3 2 2 1 F /\nEQUALS\n 'PORO' 0.3 1 4 1 1 1 1 /\n /\n");
+  try {
+    readGrdecl(dir / "box.grdecl");
+    ADD_FAILURE() << "a box beyond the grid was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("box.grdecl:3"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("I2 = 4 outside 1..3"), std::string::npos) << e.what();
+  }
+  writeFile(dir / "missing.grdecl", "SPECGRID\n 3 2 2 1 F /\nMULTIPLY\n 'PERMZ' 0.1 /\n /\n");
+  const GrdeclDeck deck = readGrdecl(dir / "missing.grdecl");
+  ASSERT_EQ(deck.warnings.size(), 1u);
+  EXPECT_NE(deck.warnings[0].find("MULTIPLY of PERMZ, which has no value per cell yet"), std::string::npos);
+}
+
+TEST(GrdeclReader, FaultDecksOfOtherProjectsLoad) {
+  // ResInsight's TestModels/fault_test: FAULTS in the deck and in two levels of INCLUDE.
+  const GrdeclDeck deck = readGrdecl(test::dataDir() / "reservoir/fault_test/regular27cell.DATA");
+  EXPECT_EQ(deck.dims, (std::array<int, 3>{3, 3, 3}));
+  EXPECT_EQ(deck.faults.size(), 10u);
+  EXPECT_EQ(deck.faults.front().name, "grid_C202");  // the innermost INCLUDE comes first
+  EXPECT_EQ(deck.faults.back().name, "DATA_FILE_MAIN");
+  EXPECT_TRUE(deck.warnings.empty());
+  EXPECT_EQ(buildCornerPointGrid(deck).activeCells, 27);
+  // resdata's test-data/local/ECLIPSE/FAULTS/fault1.grdecl: 73 records of three faults.
+  const GrdeclDeck faults = readGrdecl(test::dataDir() / "reservoir/fault_test/fault1.grdecl");
+  ASSERT_EQ(faults.faults.size(), 73u);
+  EXPECT_EQ(faults.faults[72].name, "F3");
+  EXPECT_EQ(faults.faults[72].box, (std::array<int, 6>{130, 130, 32, 32, 1, 43}));
+}
+
 TEST(GrdeclReader, CountsNotMatchingSpecgridNameTheFileAndKeyword) {
   TempDir dir;
   std::string zcornShort = kTiny;
@@ -176,7 +268,15 @@ TEST(GrdeclReader, BundledSpe9LoadsThroughInclude) {
   EXPECT_DOUBLE_EQ(deck.properties.at("PORO")[0], 0.087);
   EXPECT_DOUBLE_EQ(deck.properties.at("PORO")[8999], 0.157);
   EXPECT_EQ(deck.properties.at("PERMX").size(), 9000u);
-  EXPECT_EQ(deck.warnings.size(), 2u) << "COPY and MULTIPLY are reported as not applied";
+  // PERMVALUES.DATA: COPY PERMX to PERMY and PERMZ, then MULTIPLY PERMZ by 0.01, applied in order.
+  EXPECT_TRUE(deck.warnings.empty()) << deck.warnings.front();
+  EXPECT_EQ(deck.editsApplied, 3);
+  ASSERT_EQ(deck.properties.at("PERMY").size(), 9000u);
+  ASSERT_EQ(deck.properties.at("PERMZ").size(), 9000u);
+  for (const std::size_t c : {std::size_t{0}, std::size_t{4321}, std::size_t{8999}}) {
+    EXPECT_EQ(deck.properties.at("PERMY")[c], deck.properties.at("PERMX")[c]);
+    EXPECT_DOUBLE_EQ(deck.properties.at("PERMZ")[c], deck.properties.at("PERMX")[c] * 0.01);
+  }
 }
 
 TEST(GrdeclReader, SharedSamplesLoad) {

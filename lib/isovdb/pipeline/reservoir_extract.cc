@@ -8,6 +8,7 @@
 #include "isovdb/reservoir/pn_tessellation.h"
 
 #include <algorithm>
+#include <set>
 
 namespace isovdb::pipeline {
 
@@ -42,6 +43,14 @@ mesh::Mesh extractReservoir(const ReservoirOptions& options, Statistics& stats) 
   section["ambiguous_faces"] = contour.ambiguousFaces;
   section["mc_triangles"] = contour.mesh.triangleCount();
   section["mc_vertices"] = contour.mesh.vertexCount();
+  // Faults are already in the corner-point geometry (ZCORN); their records are reported.
+  std::set<std::string> faultNames;
+  for (const reservoir::GrdeclFault& fault : deck.faults) faultNames.insert(fault.name);
+  section["fault_records"] = deck.faults.size();
+  section["faults"] = faultNames.size();
+  section["property_edits_applied"] = deck.editsApplied;
+  // MAPAXES is not applied: the mesh is in the deck's grid coordinates; the axes are stated.
+  if (!deck.mapaxes.empty()) section["mapaxes_not_applied"] = deck.mapaxes;
   auto warnings = grid.warnings;
   warnings.insert(warnings.end(), field.warnings.begin(), field.warnings.end());
   section["warnings"] = warnings;

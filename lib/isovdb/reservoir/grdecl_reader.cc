@@ -7,10 +7,13 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <set>
+#include <stdexcept>
 #include <sstream>
 
 #include "isovdb/errors.h"
+#include "isovdb/reservoir/grdecl_edits.h"
 #include "isovdb/reservoir/grdecl_tokens.h"
 
 namespace isovdb::reservoir {
@@ -18,16 +21,19 @@ namespace {
 
 // Keywords that carry no record.
 const std::set<std::string> kFlagKeywords = {
-    "RUNSPEC", "GRID",    "EDIT",    "NOECHO", "ECHO",    "OIL",    "WATER",        "GAS",    "DISGAS",
-    "VAPOIL",  "FIELD",   "METRIC",  "LAB",    "UNIFOUT", "UNIFIN", "FMTOUT",       "FMTIN",  "INIT",
-    "NOSIM",   "NEWTRAN", "OLDTRAN", "ENDBOX", "NONNC",   "NOGGF",  "GRIDFILE_OFF", "MULTOUT"};
+    "RUNSPEC", "GRID",    "EDIT",    "NOECHO", "ECHO",    "OIL",          "WATER",  "GAS",   "DISGAS",
+    "VAPOIL",  "FIELD",   "METRIC",  "LAB",    "UNIFOUT", "UNIFIN",       "FMTOUT", "FMTIN", "INIT",
+    "NOSIM",   "NEWTRAN", "OLDTRAN", "NONNC",  "NOGGF",   "GRIDFILE_OFF", "MULTOUT"};
 // Sections after the grid: nothing there describes the grid, stop reading.
 const std::set<std::string> kStopKeywords = {"PROPS", "REGIONS", "SOLUTION", "SUMMARY", "SCHEDULE", "END"};
 // Keywords with one non-numeric (or defaulted) record that need no warning.
 const std::set<std::string> kKnownTextKeywords = {"MAPUNITS", "GRIDUNIT", "GDORIENT", "START",  "WELLDIMS",
                                                   "TABDIMS",  "EQLDIMS",  "REGDIMS",  "NSTACK", "COORDSYS"};
-// Keywords made of records ended by an empty record.
-const std::set<std::string> kMultiRecordKeywords = {"COPY", "MULTIPLY", "ADD", "EQUALS", "MINVALUE", "MAXVALUE"};
+// Keywords that change properties in a box of cells, records ended by an empty record.
+const std::set<std::string> kEditKeywords = {"COPY", "MULTIPLY", "ADD", "EQUALS", "MINVALUE", "MAXVALUE"};
+// Keywords of several records (ended by an empty one) that describe no cell property.
+const std::set<std::string> kSkippedMultiRecordKeywords = {"MULTREGT", "NNC",     "EDITNNC", "EQUALREG",
+                                                           "MULTIREG", "COPYREG", "ADDREG",  "THPRES"};
 
 bool looksLikeKeyword(const GrdeclToken& t) {
   if (t.quoted || t.text.empty() || t.text.size() > 8) return false;
@@ -55,10 +61,77 @@ bool parseDouble(const std::string& s, double& out) {
   return ec == std::errc() && ptr == end;
 }
 
+/// A record's entries: a value, or std::nullopt where `n*` defaults n of them.
+using RecordItems = std::vector<std::optional<std::string>>;
+
 struct Parser {
   GrdeclDeck& deck;
   int depth = 0;
   bool stopped = false;
+  std::optional<CellBox> currentBox{};  ///< BOX ... ENDBOX
+
+  /// The entries of the record t[i..end), `n*` expanded.
+  static RecordItems recordItems(const std::vector<GrdeclToken>& t, std::size_t i, std::size_t end) {
+    RecordItems items;
+    for (std::size_t k = i; k < end; ++k) {
+      const std::string& s = t[k].text;
+      const std::size_t star = t[k].quoted ? std::string::npos : s.find('*');
+      long long repeat = 0;
+      if (star != std::string::npos && star > 0 &&
+          std::from_chars(s.data(), s.data() + star, repeat).ptr == s.data() + star && repeat > 0 && repeat < 1000) {
+        const std::optional<std::string> item =
+            star + 1 < s.size() ? std::optional<std::string>(s.substr(star + 1)) : std::nullopt;
+        items.insert(items.end(), static_cast<std::size_t>(repeat), item);
+      } else {
+        items.emplace_back(s);
+      }
+    }
+    return items;
+  }
+
+  const std::array<int, 3>& gridDims(const std::filesystem::path& file, const GrdeclToken& keyword) const {
+    if (deck.dims[0] == 0)
+      throw InputError(where(file, keyword.line) + ": " + keyword.text +
+                       " before SPECGRID or DIMENS: the grid's size is not known yet");
+    return deck.dims;
+  }
+
+  int integerItem(const std::optional<std::string>& item, const std::filesystem::path& file,
+                  const GrdeclToken& keyword) const {
+    double v = 0;
+    if (!item || !parseDouble(*item, v) || v != std::floor(v) || std::abs(v) > 1e9)
+      throw InputError(where(file, keyword.line) + ": " + keyword.text + ": expected a cell index, found '" +
+                       item.value_or("default") + "'");
+    return static_cast<int>(v);
+  }
+
+  /// Box bounds from items[first..first+6) (missing or defaulted ones: the current BOX or the grid).
+  CellBox boxOf(const RecordItems& items, std::size_t first, const std::filesystem::path& file,
+                const GrdeclToken& keyword) const {
+    const std::array<int, 3>& dims = gridDims(file, keyword);
+    const CellBox grid{{0, 0, 0}, {dims[0] - 1, dims[1] - 1, dims[2] - 1}};
+    std::array<std::optional<int>, 6> bounds;
+    for (std::size_t b = 0; b < 6 && first + b < items.size(); ++b)
+      if (items[first + b]) bounds[b] = integerItem(items[first + b], file, keyword);
+    try {
+      return cellBoxOf(bounds, currentBox.value_or(grid), dims);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(where(file, keyword.line) + ": " + keyword.text + ": " + e.what());
+    }
+  }
+
+  /// The records of a multi-record keyword from t[i], each handed to `record(begin, end)`; returns
+  /// the index after the empty record that ends the keyword.
+  template <typename F>
+  std::size_t forEachRecord(const std::vector<GrdeclToken>& t, std::size_t i, const std::filesystem::path& file,
+                            const GrdeclToken& keyword, F&& record) const {
+    while (i < t.size() && !t[i].isSlash()) {
+      const std::size_t end = recordEnd(t, i, file, keyword);
+      record(i, end);
+      i = end + 1;
+    }
+    return recordEnd(t, i, file, keyword) + 1;
+  }
 
   std::string where(const std::filesystem::path& file, int line) const {
     return file.string() + ":" + std::to_string(line);
@@ -158,16 +231,58 @@ struct Parser {
         i = end + 1;
         continue;
       }
-      if (kMultiRecordKeywords.count(name)) {
-        deck.warnings.push_back(where(file, keyword.line) + ": keyword " + name + " is not applied (skipped)");
-        while (i < t.size() && !t[i].isSlash()) i = recordEnd(t, i, file, keyword) + 1;
-        i = recordEnd(t, i, file, keyword) + 1;
+      if (kEditKeywords.count(name)) {
+        i = forEachRecord(t, i, file, keyword, [&](std::size_t begin, std::size_t end) {
+          applyEdit(recordItems(t, begin, end), file, keyword);
+        });
+        continue;
+      }
+      if (name == "FAULTS") {
+        i = forEachRecord(t, i, file, keyword, [&](std::size_t begin, std::size_t end) {
+          const RecordItems items = recordItems(t, begin, end);
+          if (items.size() < 8 || !items[0] || !items[7])
+            throw InputError(where(file, t[begin].line) +
+                             ": FAULTS: expected 'name' I1 I2 J1 J2 K1 K2 'face' before '/'");
+          GrdeclFault fault{*items[0], {}, *items[7]};
+          for (std::size_t b = 0; b < 6; ++b) fault.box[b] = integerItem(items[1 + b], file, keyword);
+          deck.faults.push_back(std::move(fault));
+        });
+        continue;
+      }
+      if (name == "MULTFLT") {
+        i = forEachRecord(t, i, file, keyword, [&](std::size_t begin, std::size_t end) {
+          const RecordItems items = recordItems(t, begin, end);
+          double multiplier = 0;
+          if (items.size() < 2 || !items[0] || !items[1] || !parseDouble(*items[1], multiplier))
+            throw InputError(where(file, t[begin].line) + ": MULTFLT: expected 'fault name' multiplier before '/'");
+          deck.faultMultipliers[*items[0]] = multiplier;
+        });
+        continue;
+      }
+      if (name == "BOX") {
+        const std::size_t end = recordEnd(t, i, file, keyword);
+        currentBox.reset();  // a BOX's defaults are the whole grid
+        currentBox = boxOf(recordItems(t, i, end), 0, file, keyword);
+        i = end + 1;
+        continue;
+      }
+      if (name == "ENDBOX") {
+        currentBox.reset();
+        continue;
+      }
+      if (kSkippedMultiRecordKeywords.count(name)) {
+        deck.warnings.push_back(where(file, keyword.line) + ": keyword " + name +
+                                " does not change the cells' geometry or properties (skipped)");
+        i = forEachRecord(t, i, file, keyword, [](std::size_t, std::size_t) {});
         continue;
       }
       if (kKnownTextKeywords.count(name) || !recordIsNumeric(t, i)) {
         if (!kKnownTextKeywords.count(name))
           deck.warnings.push_back(where(file, keyword.line) + ": unknown keyword " + name + " skipped");
         i = recordEnd(t, i, file, keyword) + 1;
+        // More records before the next keyword: a multi-record keyword, ended by an empty record.
+        if (i < t.size() && !t[i].isSlash() && !looksLikeKeyword(t[i]))
+          i = forEachRecord(t, i, file, keyword, [](std::size_t, std::size_t) {});
         continue;
       }
       if (name == "SPECGRID") {  // nx ny nz numres F|T: only the first three matter
@@ -185,7 +300,41 @@ struct Parser {
     }
   }
 
+  void applyEdit(const RecordItems& items, const std::filesystem::path& file, const GrdeclToken& keyword) {
+    PropertyEdit edit;
+    edit.keyword = keyword.text;
+    const bool copy = edit.keyword == "COPY";
+    if (items.size() < 2 || !items[0] || !items[1])
+      throw InputError(where(file, keyword.line) + ": " + edit.keyword + ": expected " +
+                       (copy ? "'FROM' 'TO'" : "'NAME' value") + " then an optional box before '/'");
+    edit.name = *items[0];
+    if (copy)
+      edit.target = *items[1];
+    else if (!parseDouble(*items[1], edit.value))
+      throw InputError(where(file, keyword.line) + ": " + edit.keyword + " " + edit.name + ": '" + *items[1] +
+                       "' is not a number");
+    edit.box = boxOf(items, 2, file, keyword);
+    const std::string skipped = applyPropertyEdit(edit, deck.dims, deck.properties);
+    if (skipped.empty())
+      ++deck.editsApplied;
+    else
+      deck.warnings.push_back(where(file, keyword.line) + ": " + skipped + " (skipped)");
+  }
+
   void store(const std::string& name, std::vector<double> values, const std::filesystem::path& file, int line) {
+    const bool cellProperty =
+        name != "SPECGRID" && name != "DIMENS" && name != "COORD" && name != "ZCORN" && name != "MAPAXES";
+    if (currentBox && cellProperty) {
+      // Inside BOX ... ENDBOX an array holds the box's cells only.
+      if (static_cast<long long>(values.size()) != currentBox->cellCount())
+        throw InputError(where(file, line) + ": " + name + " has " + std::to_string(values.size()) +
+                         " values for a BOX of " + std::to_string(currentBox->cellCount()) + " cells");
+      std::vector<double>& whole = deck.properties[name];
+      whole.resize(static_cast<std::size_t>(deck.dims[0]) * deck.dims[1] * deck.dims[2], 0.0);
+      std::size_t next = 0;
+      forEachCell(*currentBox, deck.dims, [&](std::size_t c) { whole[c] = values[next++]; });
+      return;
+    }
     if (name == "SPECGRID" || name == "DIMENS") {
       if (values.size() < 3)
         throw InputError(where(file, line) + ": " + name + " needs nx ny nz, found " + std::to_string(values.size()) +

@@ -8,8 +8,13 @@
 /// `INCLUDE 'file' /` relative to the including file, `/` record terminators.
 /// Section keywords and flags without data (RUNSPEC, GRID, OIL, ECHO, ...) are
 /// accepted; reading stops at the first section after GRID/EDIT (PROPS, ...).
-/// A keyword whose record is not numeric and that the reader does not know is
-/// skipped with a warning. Counts are validated by the grid model (corner_point_grid.h).
+/// Section keywords: FAULTS and MULTFLT are read (faults do not change the cells'
+/// geometry: a corner-point grid's faults are already in its ZCORN); EQUALS, COPY,
+/// MULTIPLY, ADD, MINVALUE and MAXVALUE are applied in order, on their box or the
+/// current BOX (grdecl_edits.h), and an array read inside a BOX fills that box.
+/// A keyword whose records are not numeric and that the reader does not know is
+/// skipped with a warning, up to its empty record when it has several.
+/// Counts are validated by the grid model (corner_point_grid.h).
 #pragma once
 
 #include <array>
@@ -20,6 +25,13 @@
 
 namespace isovdb::reservoir {
 
+/// One record of FAULTS: a named fault's cell faces.
+struct GrdeclFault {
+  std::string name;
+  std::array<int, 6> box{};  ///< I1 I2 J1 J2 K1 K2, 1-based as in the file
+  std::string face;          ///< X, X-, Y, Y-, Z, Z- (I, J, K accepted)
+};
+
 struct GrdeclDeck {
   std::filesystem::path path;                             ///< the file that was read (for messages)
   std::array<int, 3> dims{0, 0, 0};                       ///< SPECGRID or DIMENS: nx, ny, nz
@@ -29,6 +41,9 @@ struct GrdeclDeck {
   std::vector<double> mapaxes;                            ///< empty or 6 values (not applied)
   std::map<std::string, std::vector<double>> properties;  ///< other numeric keywords
   std::vector<std::string> warnings;                      ///< one line each, naming file and line
+  std::vector<GrdeclFault> faults;                        ///< FAULTS records (geometry is not changed by them)
+  std::map<std::string, double> faultMultipliers;         ///< MULTFLT: transmissibility multiplier per fault
+  int editsApplied = 0;                                   ///< EQUALS/COPY/MULTIPLY/ADD/MINVALUE/MAXVALUE records
 };
 
 /// Reads `path` and its INCLUDEs. @throw InputError naming the file and line

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
+#include "isovdb/reservoir/grdecl_edits.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace isovdb::reservoir {
+
+CellBox cellBoxOf(const std::array<std::optional<int>, 6>& bounds, const CellBox& defaults,
+                  const std::array<int, 3>& dims) {
+  static constexpr const char* kNames[6] = {"I1", "I2", "J1", "J2", "K1", "K2"};
+  CellBox box = defaults;
+  for (int b = 0; b < 6; ++b) {
+    if (!bounds[static_cast<std::size_t>(b)]) continue;
+    const int axis = b / 2, value = *bounds[static_cast<std::size_t>(b)];
+    if (value < 1 || value > dims[static_cast<std::size_t>(axis)])
+      throw std::invalid_argument(std::string("box bound ") + kNames[b] + " = " + std::to_string(value) +
+                                  " outside 1.." + std::to_string(dims[static_cast<std::size_t>(axis)]));
+    (b % 2 == 0 ? box.lo : box.hi)[static_cast<std::size_t>(axis)] = value - 1;
+  }
+  for (int a = 0; a < 3; ++a)
+    if (box.lo[static_cast<std::size_t>(a)] > box.hi[static_cast<std::size_t>(a)])
+      throw std::invalid_argument(std::string("box bound ") + kNames[2 * a] + " above " + kNames[2 * a + 1]);
+  return box;
+}
+
+std::string applyPropertyEdit(const PropertyEdit& edit, const std::array<int, 3>& dims,
+                              std::map<std::string, std::vector<double>>& properties) {
+  const auto cells = static_cast<std::size_t>(dims[0]) * dims[1] * dims[2];
+  const auto existing = [&](const std::string& name) -> std::vector<double>* {
+    const auto it = properties.find(name);
+    return it == properties.end() || it->second.size() != cells ? nullptr : &it->second;
+  };
+  if (edit.keyword == "COPY") {
+    const std::vector<double>* from = existing(edit.name);
+    if (!from) return "COPY from " + edit.name + ", which has no value per cell yet";
+    std::vector<double> copy = *from;  // `to` may be a new entry of the same map
+    std::vector<double>& to = properties[edit.target];
+    to.resize(cells, 0.0);
+    forEachCell(edit.box, dims, [&](std::size_t c) { to[c] = copy[c]; });
+    return {};
+  }
+  if (edit.keyword == "EQUALS") {
+    std::vector<double>& to = properties[edit.name];
+    to.resize(cells, 0.0);
+    forEachCell(edit.box, dims, [&](std::size_t c) { to[c] = edit.value; });
+    return {};
+  }
+  std::vector<double>* values = existing(edit.name);
+  if (!values) return edit.keyword + " of " + edit.name + ", which has no value per cell yet";
+  forEachCell(edit.box, dims, [&](std::size_t c) {
+    double& v = (*values)[c];
+    if (edit.keyword == "MULTIPLY")
+      v *= edit.value;
+    else if (edit.keyword == "ADD")
+      v += edit.value;
+    else if (edit.keyword == "MINVALUE")
+      v = std::max(v, edit.value);
+    else if (edit.keyword == "MAXVALUE")
+      v = std::min(v, edit.value);
+  });
+  return {};
+}
+
+}  // namespace isovdb::reservoir
