@@ -137,7 +137,13 @@ void printSummary(const Json& json) {
       .add(part(contour, "triangles", [](const Json& v) { return count(v) + " triangles"; }))
       .add(part(contour, "vertices", [](const Json& v) { return count(v) + " vertices"; }))
       .add(part(contour, "method", [](const Json& v) { return "method " + text(v); }))
-      .add(part(contour, "max_error", [](const Json& v) { return "within " + text(v) + " voxel (--max-error)"; }))
+      .add(part(contour, "max_error",
+                [&contour](const Json& v) {
+                  const int finest = contour.value("finest_cell_voxels", 1);
+                  return finest == 1 ? "within " + text(v) + " voxel (--max-error)"
+                                     : "--max-error " + text(v) + " asked, but cells stop at " +
+                                           std::to_string(finest) + " voxels: not guaranteed";
+                }))
       .print();
   if (json.contains("mesh")) printMeshCheck("mesh", json["mesh"]);
   if (json.contains("check")) printMeshCheck("check", json["check"]);

@@ -56,5 +56,27 @@ TEST(CliCompare, MeasuresTheErrorBoundAndFailsBeyondMaxDistance) {
   EXPECT_NE(output.find("missing.ply"), std::string::npos) << output;
 }
 
+TEST(CliCompare, TheSummaryPromisesTheBoundOnlyWhereOneVoxelCellsCanKeepIt) {
+  const TempDir dir;
+  const auto ball = writeBall(dir).string();
+  const auto stats = (dir / "stats.json").string();
+  std::string output;
+  ASSERT_EQ(runCommand(cliPath().string() + " extract " + ball + " --method adaptive -o " + (dir / "a.ply").string() +
+                           " --stats " + stats,
+                       &output),
+            0)
+      << output;
+  EXPECT_NE(output.find("within 1.0 voxel (--max-error)"), std::string::npos) << output;
+  EXPECT_EQ(nlohmann::json::parse(readFile(stats))["contour"]["finest_cell_voxels"], 1);
+  ASSERT_EQ(runCommand(cliPath().string() + " extract " + ball + " --method adaptive --finest-size 2 -o " +
+                           (dir / "b.ply").string() + " --stats " + stats,
+                       &output),
+            0)
+      << output;
+  EXPECT_EQ(output.find("within 1.0 voxel"), std::string::npos) << output;
+  EXPECT_NE(output.find("cells stop at 2 voxels: not guaranteed"), std::string::npos) << output;
+  EXPECT_EQ(nlohmann::json::parse(readFile(stats))["contour"]["finest_cell_voxels"], 2);
+}
+
 }  // namespace
 }  // namespace isovdb::test

@@ -4,6 +4,8 @@
 // Jacobian normals, faults, left-handed grids, the Emerald hole.
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include <Eigen/Geometry>
 
 #include <cmath>
@@ -180,6 +182,27 @@ TEST(HexMarchingCubes, BinaryIndicatorAtOneHalfHasNoZeroAreaTriangles) {
   EXPECT_TRUE(report.manifold);
   EXPECT_EQ(report.eulerCharacteristic, 2);
   EXPECT_EQ(report.selfIntersectingPairs, 0);
+}
+
+TEST(HexMarchingCubes, CornersAtTheIsoValueNeitherFoldNorCollapse) {
+  // ResInsight's regular27cell deck: PORO 0.4 beside 0.5 averages to 0.45 (within
+  // rounding) at corners, two of them on some faces. Vertices at those corners made
+  // 20 self-intersecting pairs (surfaces of neighbouring cells folded over each other).
+  const GrdeclDeck deck = readGrdecl(test::dataDir() / "reservoir/fault_test/regular27cell.DATA");
+  const CornerPointGrid grid = buildCornerPointGrid(deck);
+  const CornerField field = averageToCorners(grid, deck, "PORO");
+  const auto atIso = std::count_if(field.pointValues.begin(), field.pointValues.end(),
+                                   [](double v) { return std::abs(v - 0.45) < 1e-12; });
+  ASSERT_GT(atIso, 0) << "the deck no longer has corners at the iso-value";
+  const HexContourResult r = contourHexahedra(grid, field, {.iso = 0.45});
+  const mesh::MeshReport report = mesh::validateMesh(r.mesh);
+  ASSERT_GT(r.mesh.triangleCount(), 0u);
+  EXPECT_EQ(report.selfIntersectingPairs, 0);
+  EXPECT_EQ(report.degenerateTriangles, 0);
+  EXPECT_EQ(report.nonManifoldEdges, 0);
+  std::set<std::array<float, 3>> distinct;
+  for (const auto& p : r.mesh.positions) distinct.insert({p[0], p[1], p[2]});
+  EXPECT_EQ(distinct.size(), r.mesh.positions.size()) << "vertices at the same place, not welded";
 }
 
 TEST(HexMarchingCubes, Spe9PermeabilityIsManifold) {

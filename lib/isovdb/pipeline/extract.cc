@@ -11,6 +11,7 @@
 
 #include "isovdb/contour/vdb_mesher.h"
 #include "isovdb/errors.h"
+#include "isovdb/octree/linear_octree.h"
 #include "isovdb/pipeline/load_volume.h"
 #include "isovdb/volume/ingest.h"
 #include "isovdb/volume/sampled_box.h"
@@ -125,8 +126,16 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
     section["method"] = std::string(contourMethodName(method));
     section["iso"] = iso;
     if (method == ContourMethod::Vdb) section["adaptivity"] = options.adaptivity;
-    if (method == ContourMethod::Adaptive && options.octree.maxError > 0.0f)
+    if (method == ContourMethod::Adaptive && options.octree.maxError > 0.0f) {
       section["max_error"] = options.octree.maxError;
+      // The bound is kept by splitting leaves down to one voxel: coarser finest cells may stay beyond it.
+      const int finest =
+          options.metaCellSize > 0
+              ? octree::cellSizeAtDepth(options.metaCellSize,
+                                        octree::resolveDepths(options.octree, options.metaCellSize).maxDepth)
+              : options.octree.finestCellSize;
+      section["finest_cell_voxels"] = finest;
+    }
     section["vertices"] = sink.vertexCount();
     section["triangles"] = sink.triangleCount();
   }

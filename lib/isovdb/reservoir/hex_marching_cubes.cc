@@ -8,6 +8,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 
 #include "isovdb/reservoir/jacobian_normals.h"
@@ -16,6 +17,12 @@ namespace isovdb::reservoir {
 namespace {
 
 // Faces as corner cycles, counter-clockwise seen from outside (right-handed parameter space).
+/// Where a corner lies exactly at the iso-value, the vertices of its edges sit this
+/// fraction of the edge away from it (at least 16 float steps of the coordinates).
+constexpr double kCornerOffset = 1e-3;
+/// Beyond this fraction the offset would move the surface visibly: the corner is shared.
+constexpr double kMaxCornerOffset = 0.02;
+
 constexpr int kFaces[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
 
 int edgeId(int a, int b) {  // 12 edges: axis * 4 + the other two bits
@@ -125,15 +132,29 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
     int a = edgeCorners[edge][0], b = edgeCorners[edge][1];
     if (ids[a] > ids[b]) std::swap(a, b);  // canonical order: identical result in every cell
     const double va = field.pointValues[ids[a]], vb = field.pointValues[ids[b]];
-    const double t = std::clamp((options.iso - va) / (vb - va), 0.0, 1.0);
+    double t = std::clamp((options.iso - va) / (vb - va), 0.0, 1.0);
     const Vec3d& pa = grid.points[ids[a]];
     const Vec3d& pb = grid.points[ids[b]];
     CellVertex v;
     v.key = (static_cast<std::uint64_t>(ids[a]) << 32) | ids[b];
-    // A corner exactly at the iso-value (FACIES 0/1 averaged to 0.5): every edge
-    // from it meets the surface there, so they share one vertex (no zero-area triangles).
-    if (t == 0.0) v.key = (std::uint64_t{1} << 62) | ids[a];
-    if (t == 1.0) v.key = (std::uint64_t{1} << 62) | ids[b];
+    // A corner at the iso-value (FACIES 0/1 averaged to 0.5), or within rounding of it
+    // (PORO 0.4 and 0.5 averaged to 0.45), counts as above it, as if its value were a
+    // little higher: each edge from it to a corner below gets its own vertex a little
+    // way along the edge. Vertices at (or a rounding error from) the corner made the
+    // surfaces of neighbouring cells touch there, and fold over each other where a face
+    // held two such corners. The offset must show in the float positions: where the
+    // coordinates are too large for that (UTM grids), the edges share the corner's vertex.
+    const double length = (pb - pa).norm();
+    const double magnitude = std::max(pa.cwiseAbs().maxCoeff(), pb.cwiseAbs().maxCoeff());
+    const auto coordinate = static_cast<float>(magnitude);
+    const double ulp = std::nextafter(coordinate, std::numeric_limits<float>::max()) - coordinate;
+    const double offset = length > 0 ? std::max(kCornerOffset, 16.0 * ulp / length) : 1.0;
+    if (t < offset || t > 1.0 - offset) {
+      if (offset <= kMaxCornerOffset)
+        t = std::clamp(t, offset, 1.0 - offset);
+      else
+        v.key = (std::uint64_t{1} << 62) | ids[t < 0.5 ? a : b];
+    }
     v.position = (pa + t * (pb - pa)).cast<float>();
     v.gradient = options.normals
                      ? Vec3d((1 - t) * cornerGradient(grid, field, cell, a) + t * cornerGradient(grid, field, cell, b))
