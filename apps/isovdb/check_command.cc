@@ -36,6 +36,7 @@ void addCheckCommand(CLI::App& app, Context& context) {
   command->add_option("--stats", state->statsPath, "Also write the figures as JSON");
   state->flags.add(*command);
   command->callback([state, &context] {
+    checkFilesBeforeWork({{"the mesh", state->mesh}, {"--against", state->against}}, {{"--stats", state->statsPath}});
     pipeline::Statistics stats;
     mesh::Mesh mesh;
     {

@@ -8,6 +8,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "isovdb/pipeline/statistics.h"
 #include "terminal_progress.h"
@@ -35,6 +36,18 @@ void addOctreeCommand(CLI::App& app, Context& context);
 void addConvertCommand(CLI::App& app, Context& context);
 void addMorphCommand(CLI::App& app, Context& context);
 void addReservoirCommand(CLI::App& app, Context& context);
+
+/// A file named on the command line, and the option (or argument) that named it.
+struct NamedFile {
+  std::string option;  ///< "-o", "--stats", "the input", ...
+  std::string path;    ///< empty: not given
+};
+
+/// Before any work: every output can be written (its folder exists and is writable),
+/// and no output names the same file as an input or another output (`--stats` equal
+/// to `-o`, or `-o` equal to the input, would silently overwrite it).
+/// @throw InputError naming both options; IoError when an output cannot be written.
+void checkFilesBeforeWork(const std::vector<NamedFile>& inputs, const std::vector<NamedFile>& outputs);
 
 /// Prints a statistics report on stdout: every figure as "section.key: value" lines,
 /// or a summary of at most ~15 lines (input, what was built, the check, time, memory, output).

@@ -40,6 +40,7 @@ void addCompareCommand(CLI::App& app, Context& context) {
                       "Fail (exit 1) when the sampled two-sided distance exceeds this (mesh units)");
   command->add_option("--stats", state->statsPath, "Also write the figures as JSON");
   command->callback([state, &context] {
+    checkFilesBeforeWork({{"mesh A", state->a}, {"mesh B", state->b}}, {{"--stats", state->statsPath}});
     pipeline::Statistics stats;
     mesh::Mesh a, b;
     {

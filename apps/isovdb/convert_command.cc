@@ -35,8 +35,7 @@ void addConvertCommand(CLI::App& app, Context& context) {
     const bool toVdb = pipeline::isVdbPath(state->output);
     if (!toVdb && !store::isDenseOutputPath(state->output))
       throw InputError("'" + state->output + "': unknown output format, expected .vdb, .nrrd or .raw");
-    io::AtomicFile::checkWritable(state->output);
-    if (!state->statsPath.empty()) io::AtomicFile::checkWritable(state->statsPath);
+    checkFilesBeforeWork({{"the input", state->input}}, {{"-o", state->output}, {"--stats", state->statsPath}});
     pipeline::Statistics stats;
     const volume::Volume input =
         pipeline::loadVolume(state->input, state->flags.toOptions(state->input), context.interrupter(), &stats);

@@ -46,13 +46,10 @@ void addExtractCommand(CLI::App& app, Context& context) {
     const pipeline::ExtractOptions options = state->choices.resolve();
     if (!io::isMeshPath(state->output))
       throw InputError("'" + state->output + "': unknown mesh format, expected .ply or .obj");
-    io::AtomicFile::checkWritable(state->output);
-    if (!state->statsPath.empty()) io::AtomicFile::checkWritable(state->statsPath);
-    if (!state->previewPath.empty()) {
-      if (std::filesystem::path(state->previewPath).extension() != ".png")
-        throw InputError("'" + state->previewPath + "': --preview writes a .png");
-      io::AtomicFile::checkWritable(state->previewPath);
-    }
+    if (!state->previewPath.empty() && std::filesystem::path(state->previewPath).extension() != ".png")
+      throw InputError("'" + state->previewPath + "': --preview writes a .png");
+    checkFilesBeforeWork({{"the input", state->input}},
+                         {{"-o", state->output}, {"--stats", state->statsPath}, {"--preview", state->previewPath}});
 
     pipeline::Statistics stats;
     volume::Volume input =

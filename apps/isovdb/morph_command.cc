@@ -106,9 +106,8 @@ void addMorphCommand(CLI::App& app, Context& context) {
     morph::checkReconstructOptions(options);
     if (!io::isMeshPath(state->output))
       throw InputError("'" + state->output + "': unknown mesh format, expected .ply or .obj");
-    io::AtomicFile::checkWritable(state->output);
-    if (!state->statsPath.empty()) io::AtomicFile::checkWritable(state->statsPath);
-    if (!state->vdbPath.empty()) io::AtomicFile::checkWritable(state->vdbPath);
+    checkFilesBeforeWork({{"the input", state->input}, {"--heights", state->heights}},
+                         {{"-o", state->output}, {"--stats", state->statsPath}, {"--vdb", state->vdbPath}});
 
     pipeline::Statistics stats;
     morph::SliceStack stack;

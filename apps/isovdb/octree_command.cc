@@ -38,11 +38,9 @@ void addOctreeCommand(CLI::App& app, Context& context) {
     options.extract = state->choices.resolve();
     if (!state->index.empty())
       options.metaCell = volume::MetaCellIndex{state->index[0], state->index[1], state->index[2]};
-    if (!state->wireframe.empty()) {
-      io::AtomicFile::checkWritable(state->wireframe);
-      options.wireframe = state->wireframe;
-    }
-    if (!state->statsPath.empty()) io::AtomicFile::checkWritable(state->statsPath);
+    checkFilesBeforeWork({{"the input", state->input}},
+                         {{"--wireframe", state->wireframe}, {"--stats", state->statsPath}});
+    if (!state->wireframe.empty()) options.wireframe = state->wireframe;
     pipeline::Statistics stats;
     const volume::Volume input =
         pipeline::loadVolume(state->input, state->flags.toOptions(state->input), context.interrupter(), &stats);

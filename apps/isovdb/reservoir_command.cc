@@ -44,6 +44,9 @@ void addReservoirCommand(CLI::App& app, Context& context) {
       if (state->options.maxTessellation < 1 || state->options.maxTessellation > 64)
         throw InputError("--tessellate: K must be between 1 and 64");
     }
+    std::vector<NamedFile> inputs;
+    for (const auto& input : state->inputs) inputs.push_back({"the input", input});
+    checkFilesBeforeWork(inputs, {{"-o", state->output}, {"--stats", state->statsPath}});
     pipeline::Statistics stats;
     const mesh::Mesh mesh = [&] {
       pipeline::Statistics::StageTimer total(&stats, "total");

@@ -26,8 +26,7 @@ void addSdfCommand(CLI::App& app, Context& context) {
   state->flags.add(*command);
   command->callback([state, &context] {
     const volume::DistanceFieldOptions distance = state->distance.resolve();
-    io::AtomicFile::checkWritable(state->output);
-    if (!state->statsPath.empty()) io::AtomicFile::checkWritable(state->statsPath);
+    checkFilesBeforeWork({{"the input", state->input}}, {{"-o", state->output}, {"--stats", state->statsPath}});
     pipeline::Statistics stats;
     const volume::Volume input =
         pipeline::loadVolume(state->input, state->flags.toOptions(state->input), context.interrupter(), &stats);

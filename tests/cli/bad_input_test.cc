@@ -29,6 +29,24 @@ TEST_F(CliBadInput, MissingFile) {
                      {"nope.nrrd", "no such file"}, out);
 }
 
+TEST_F(CliBadInput, OutputsThatWouldOverwriteEachOtherOrTheInputOrCannotBeWritten) {
+  // A 2^3 mask: any valid input will do, the files are refused before any work.
+  writeFile(in / "v.nrrd",
+            nrrdHeader("type: uint8\ndimension: 3\nsizes: 2 2 2\nencoding: raw\n") + std::string(8, '\1'));
+  const std::string volume = (in / "v.nrrd").string();
+  expectCleanFailure(runCli("extract " + volume + " -o " + outPly() + " --stats " + outPly()),
+                     {"mesh.ply", "--stats and -o name the same file"}, out);
+  expectCleanFailure(runCli("convert " + volume + " -o " + volume), {"v.nrrd", "-o and the input name the same file"},
+                     out);
+  EXPECT_EQ(readFile(in / "v.nrrd").size(),
+            8u + nrrdHeader("type: uint8\ndimension: 3\nsizes: 2 2 2\nencoding: raw\n").size());
+  // The statistics' folder is checked before the mesh is written (reservoir wrote the mesh, then failed).
+  const std::string deck = (dataDir() / "reservoir/fault_test/regular27cell.DATA").string();
+  expectCleanFailure(runCli("reservoir " + deck + " --property PORO --iso 0.3 -o " + outPly() + " --stats " +
+                            (out / "nodir" / "s.json").string()),
+                     {"nodir"}, out);
+}
+
 TEST_F(CliBadInput, RawSizeDoesNotMatchDimensions) {
   writeFile(in / "v.raw", std::string(999, '\1'));
   expectCleanFailure(runCli("extract " + (in / "v.raw").string() + " --dims 10,10,10 --type uint8 -o " + outPly()),
