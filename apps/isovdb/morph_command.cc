@@ -108,6 +108,17 @@ void addMorphCommand(CLI::App& app, Context& context) {
       throw InputError("'" + state->output + "': unknown mesh format, expected .ply or .obj");
     checkFilesBeforeWork({{"the input", state->input}, {"--heights", state->heights}},
                          {{"-o", state->output}, {"--stats", state->statsPath}, {"--vdb", state->vdbPath}});
+    if (!state->saveSlices.empty()) {
+      // The folder is made at the end: the nearest folder of its path that exists must take files now.
+      std::filesystem::path existing = std::filesystem::absolute(state->saveSlices);
+      std::error_code ec;
+      while (!std::filesystem::exists(existing, ec) && existing.has_parent_path() && existing != existing.parent_path())
+        existing = existing.parent_path();
+      if (!std::filesystem::is_directory(existing, ec))
+        throw InputError("'" + state->saveSlices + "': --save-slices: '" + existing.string() +
+                         "' is a file, not a folder");
+      io::AtomicFile::checkWritable(existing / "heights.txt");
+    }
 
     pipeline::Statistics stats;
     morph::SliceStack stack;

@@ -40,6 +40,10 @@ TEST_F(CliBadInput, OutputsThatWouldOverwriteEachOtherOrTheInputOrCannotBeWritte
                      out);
   EXPECT_EQ(readFile(in / "v.nrrd").size(),
             8u + nrrdHeader("type: uint8\ndimension: 3\nsizes: 2 2 2\nencoding: raw\n").size());
+  // morph made the mesh and the .vdb, then failed on a --save-slices folder it could not make.
+  expectCleanFailure(runCli("morph " + volume + " -o " + outPly() + " --vdb " + (out / "s.vdb").string() +
+                            " --save-slices " + (in / "v.nrrd" / "planes").string()),
+                     {"--save-slices", "is a file, not a folder"}, out);
   // The statistics' folder is checked before the mesh is written (reservoir wrote the mesh, then failed).
   const std::string deck = (dataDir() / "reservoir/fault_test/regular27cell.DATA").string();
   expectCleanFailure(runCli("reservoir " + deck + " --property PORO --iso 0.3 -o " + outPly() + " --stats " +

@@ -382,14 +382,15 @@ void contourMaskMetaCells(const volume::Volume& mask, const volume::DistanceFiel
   ProgressStage progress(interrupter, "contouring meta-cells");
   const int layers = band->endLayer() - band->firstLayer();
   for (int k = band->firstLayer(); k < band->endLayer(); ++k) {
+    const double layer = k - band->firstLayer();
     std::vector<volume::MetaCellIndex> cells;
     {
+      // The band's chunks report the layer's start again: Ctrl-C is noticed within a layer's band.
       Statistics::StageTimer timer(stats, "distance_field");
-      cells = band->advanceTo(k, engine.settings.iso);
+      cells = band->advanceTo(k, engine.settings.iso, [&] { progress.update(layer, layers); });
     }
     Statistics::StageTimer timer(stats, "contour_meta_cells");
     std::size_t done = 0;
-    const double layer = k - band->firstLayer();
     run.contour(
         cells, [&](const volume::MetaCellIndex& index, cell::MetaCellSamples& samples) { band->read(index, samples); },
         [&] { progress.update(layer + static_cast<double>(++done) / static_cast<double>(cells.size()), layers); });

@@ -44,41 +44,44 @@ SlabBand::SlabBand(const Volume& mask, const DistanceFieldOptions& options, int 
   }
 }
 
-std::vector<MetaCellIndex> SlabBand::advanceTo(int k, float iso) {
+std::vector<MetaCellIndex> SlabBand::advanceTo(int k, float iso, const std::function<void()>& chunkDone) {
   dropBelow(k * size_ - margin_);
   // Chunks start at multiples of the chunk size: compute every one that starts below the layer's reach.
   const int chunk = chunks_->chunkSize();
   const int reachEnd = (floorDiv(k * size_ + size_ + margin_, chunk) + 1) * chunk;
   if (reachEnd > computedEnd_) {
     std::mutex adding;
-    chunks_->compute(computedEnd_, reachEnd, [&](std::vector<std::unique_ptr<FieldLeaf>>&& leaves) {
-      // The chunk's figures first, outside the lock (chunks arrive from every thread).
-      Figures chunk;
-      chunk.minValue = std::numeric_limits<float>::max();
-      chunk.maxValue = std::numeric_limits<float>::lowest();
-      openvdb::CoordBBox box;
-      std::int64_t bytes = 0;
-      for (const auto& leaf : leaves) {
-        bytes += static_cast<std::int64_t>(leaf->memUsage());
-        if (leaf->isEmpty()) continue;
-        chunk.activeVoxels += static_cast<std::int64_t>(leaf->onVoxelCount());
-        ++chunk.leafCount;
-        for (auto v = leaf->cbeginValueOn(); v; ++v) {
-          chunk.minValue = std::min(chunk.minValue, *v);
-          chunk.maxValue = std::max(chunk.maxValue, *v);
-        }
-        leaf->evalActiveBoundingBox(box);
-      }
-      const std::lock_guard<std::mutex> lock(adding);
-      for (auto& leaf : leaves) band_->tree().addLeaf(leaf.release());
-      figures_.activeVoxels += chunk.activeVoxels;
-      figures_.leafCount += chunk.leafCount;
-      figures_.minValue = std::min(figures_.minValue, chunk.minValue);
-      figures_.maxValue = std::max(figures_.maxValue, chunk.maxValue);
-      activeBox_.expand(box);
-      heldBytes_ += bytes;
-      figures_.peakBytes = std::max(figures_.peakBytes, heldBytes_);
-    });
+    chunks_->compute(
+        computedEnd_, reachEnd,
+        [&](std::vector<std::unique_ptr<FieldLeaf>>&& leaves) {
+          // The chunk's figures first, outside the lock (chunks arrive from every thread).
+          Figures chunk;
+          chunk.minValue = std::numeric_limits<float>::max();
+          chunk.maxValue = std::numeric_limits<float>::lowest();
+          openvdb::CoordBBox box;
+          std::int64_t bytes = 0;
+          for (const auto& leaf : leaves) {
+            bytes += static_cast<std::int64_t>(leaf->memUsage());
+            if (leaf->isEmpty()) continue;
+            chunk.activeVoxels += static_cast<std::int64_t>(leaf->onVoxelCount());
+            ++chunk.leafCount;
+            for (auto v = leaf->cbeginValueOn(); v; ++v) {
+              chunk.minValue = std::min(chunk.minValue, *v);
+              chunk.maxValue = std::max(chunk.maxValue, *v);
+            }
+            leaf->evalActiveBoundingBox(box);
+          }
+          const std::lock_guard<std::mutex> lock(adding);
+          for (auto& leaf : leaves) band_->tree().addLeaf(leaf.release());
+          figures_.activeVoxels += chunk.activeVoxels;
+          figures_.leafCount += chunk.leafCount;
+          figures_.minValue = std::min(figures_.minValue, chunk.minValue);
+          figures_.maxValue = std::max(figures_.maxValue, chunk.maxValue);
+          activeBox_.expand(box);
+          heldBytes_ += bytes;
+          figures_.peakBytes = std::max(figures_.peakBytes, heldBytes_);
+        },
+        chunkDone);
     computedEnd_ = reachEnd;
   }
   const MetaCellPartition partition = partitionMetaCells(held_, size_, iso);

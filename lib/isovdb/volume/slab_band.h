@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -48,7 +49,9 @@ class SlabBand {
   /// the leaves no layer from k on reads, and returns layer k's meta-cells that the
   /// surface at `iso` may cross, sorted (y, x) as partitionMetaCells sorts them.
   /// Call with k increasing.
-  std::vector<MetaCellIndex> advanceTo(int k, float iso);
+  /// `chunkDone` (optional) runs after each chunk, one call at a time (a progress
+  /// report, which may throw Interrupted).
+  std::vector<MetaCellIndex> advanceTo(int k, float iso, const std::function<void()>& chunkDone = {});
 
   /// The samples of meta-cell `index` of the current layer. Thread-safe.
   void read(const MetaCellIndex& index, cell::MetaCellSamples& out) const;
