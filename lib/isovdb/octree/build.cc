@@ -404,6 +404,10 @@ int checkedDepth(int metaCellSize, int cellSize, const char* field) {
 
 }  // namespace
 
+int finestLeafSize(const OctreeOptions& options, int metaCellSize) {
+  return cellSizeAtDepth(metaCellSize, resolveDepths(options, metaCellSize).maxDepth);
+}
+
 OctreeDepths resolveDepths(const OctreeOptions& options, int metaCellSize) {
   if (metaCellSize < 1 || (metaCellSize & (metaCellSize - 1)) != 0)
     throw InputError("octree: meta-cell size: expected a power of two, got " + std::to_string(metaCellSize));

@@ -85,6 +85,10 @@ struct OctreeDepths {
 /// @throw InputError if a size is not a power of two <= metaCellSize or minDepth > maxDepth.
 OctreeDepths resolveDepths(const OctreeOptions& options, int metaCellSize);
 
+/// @brief Edge, in voxels, of the finest leaves `options` allow in a meta-cell of `metaCellSize` voxels.
+/// @throw InputError as resolveDepths.
+int finestLeafSize(const OctreeOptions& options, int metaCellSize);
+
 /// What the construction did (figures for statistics and tests).
 struct OctreeBuildStats {
   std::vector<std::size_t> cellsClassified;  ///< per depth: cells whose criteria were evaluated

@@ -11,7 +11,6 @@
 
 #include "isovdb/contour/vdb_mesher.h"
 #include "isovdb/errors.h"
-#include "isovdb/octree/linear_octree.h"
 #include "isovdb/pipeline/load_volume.h"
 #include "isovdb/volume/ingest.h"
 #include "isovdb/volume/sampled_box.h"
@@ -129,12 +128,9 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
     if (method == ContourMethod::Adaptive && options.octree.maxError > 0.0f) {
       section["max_error"] = options.octree.maxError;
       // The bound is kept by splitting leaves down to one voxel: coarser finest cells may stay beyond it.
-      const int finest =
-          options.metaCellSize > 0
-              ? octree::cellSizeAtDepth(options.metaCellSize,
-                                        octree::resolveDepths(options.octree, options.metaCellSize).maxDepth)
-              : options.octree.finestCellSize;
-      section["finest_cell_voxels"] = finest;
+      section["finest_cell_voxels"] = options.metaCellSize > 0
+                                          ? octree::finestLeafSize(options.octree, options.metaCellSize)
+                                          : options.octree.finestCellSize;
     }
     section["vertices"] = sink.vertexCount();
     section["triangles"] = sink.triangleCount();

@@ -83,6 +83,7 @@ contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const E
   settings.iso = iso;
   octree::OctreeOptions options = engine.tree;
   const bool bounded = settings.method == cell::ContourMethod::Adaptive && options.maxError > 0.0f;
+  const int finest = bounded ? octree::finestLeafSize(options, samples.size) : 1;
   for (;;) {
     auto t0 = std::chrono::steady_clock::now();
     octree::OctreeBuildStats buildStats;
@@ -99,10 +100,8 @@ contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const E
     // The error bound's second look: leaves whose mesh strays beyond it are split and
     // the block built again (each pass only deepens the tree, so this ends).
     std::vector<octree::MortonKey> beyond;
-    if (bounded) {
-      const int finest = octree::cellSizeAtDepth(samples.size, octree::resolveDepths(options, samples.size).maxDepth);
+    if (bounded)
       beyond = contour::leavesBeyondErrorBound(samples, tree, result.mesh, settings.iso, options.maxError, finest);
-    }
     totals.contourSeconds += secondsSince(t0);
     std::vector<octree::MortonKey> forced;
     std::set_union(options.forcedSplits.begin(), options.forcedSplits.end(), beyond.begin(), beyond.end(),
@@ -213,8 +212,7 @@ void contourSingleBlock(const volume::Volume& field, const Engine& engine, mesh:
 /// for Wenger's fix across the seam; adaptive mode one sample (Prewitt gradients).
 int metaCellApron(const Engine& engine) {
   if (engine.settings.method != cell::ContourMethod::Regular) return 1;
-  const octree::OctreeDepths depths = octree::resolveDepths(engine.tree, engine.metaCellSize);
-  return std::max(1, octree::cellSizeAtDepth(engine.metaCellSize, depths.maxDepth));
+  return std::max(1, octree::finestLeafSize(engine.tree, engine.metaCellSize));
 }
 
 /// One meta-cell's result on its way through the pipeline.
