@@ -47,19 +47,17 @@ std::string applyPropertyEdit(const PropertyEdit& edit, const std::array<int, 3>
     forEachCell(edit.box, dims, [&](std::size_t c) { to[c] = edit.value; });
     return {};
   }
+  // The operation chosen once, not per cell.
+  using Operation = double (*)(double value, double operand);
+  Operation operation = nullptr;
+  if (edit.keyword == "MULTIPLY") operation = [](double v, double x) { return v * x; };
+  if (edit.keyword == "ADD") operation = [](double v, double x) { return v + x; };
+  if (edit.keyword == "MINVALUE") operation = [](double v, double x) { return std::max(v, x); };
+  if (edit.keyword == "MAXVALUE") operation = [](double v, double x) { return std::min(v, x); };
+  if (!operation) return "unknown edit keyword " + edit.keyword;
   std::vector<double>* values = existing(edit.name);
   if (!values) return edit.keyword + " of " + edit.name + ", which has no value per cell yet";
-  forEachCell(edit.box, dims, [&](std::size_t c) {
-    double& v = (*values)[c];
-    if (edit.keyword == "MULTIPLY")
-      v *= edit.value;
-    else if (edit.keyword == "ADD")
-      v += edit.value;
-    else if (edit.keyword == "MINVALUE")
-      v = std::max(v, edit.value);
-    else if (edit.keyword == "MAXVALUE")
-      v = std::min(v, edit.value);
-  });
+  forEachCell(edit.box, dims, [&](std::size_t c) { (*values)[c] = operation((*values)[c], edit.value); });
   return {};
 }
 
