@@ -2,6 +2,9 @@
 // Copyright Contributors to the isovdb project.
 // `isovdb compare A B [--max-distance E]`: how far two meshes of one surface are
 // apart (the sampled two-sided Hausdorff distance), e.g. adaptive against regular.
+#include <cmath>
+#include <string>
+
 #include "commands.h"
 #include "isovdb/io/mesh_file.h"
 #include "isovdb/mesh/mesh_distance.h"
@@ -9,6 +12,21 @@
 namespace isovdb::cli {
 
 namespace {
+
+/// A distance option's check: a finite number, above zero or at least zero.
+/// (CLI::PositiveNumber's message printed a garbage number in place of the value.)
+CLI::Validator finiteDistance(bool zeroAllowed) {
+  return CLI::Validator(
+      [zeroAllowed](const std::string& text) {
+        double value = 0;
+        if (!CLI::detail::lexical_cast(text, value) || !std::isfinite(value) || value < 0 ||
+            (!zeroAllowed && value == 0))
+          return std::string(zeroAllowed ? "expected a finite number >= 0" : "expected a positive finite number") +
+                 " (mesh units), got '" + text + "'";
+        return std::string();
+      },
+      zeroAllowed ? "DISTANCE" : "POSITIVE");
+}
 
 pipeline::Statistics::Json toJson(const mesh::OneSidedDistance& d) {
   return {{"samples", d.samples}, {"mean", d.mean}, {"p99", d.p99}, {"max", d.max}, {"farthest", d.farthest}};
@@ -34,10 +52,12 @@ void addCompareCommand(CLI::App& app, Context& context) {
       ->add_option("--spacing", state->spacing,
                    "Largest gap between samples on a triangle (mesh units); the true distance is at most the "
                    "sampled one plus spacing/sqrt(3)")
-      ->check(CLI::PositiveNumber)
+      ->check(finiteDistance(/*zeroAllowed=*/false))
       ->capture_default_str();
-  command->add_option("--max-distance", state->maxDistance,
-                      "Fail (exit 1) when the sampled two-sided distance exceeds this (mesh units)");
+  command
+      ->add_option("--max-distance", state->maxDistance,
+                   "Fail (exit 1) when the sampled two-sided distance exceeds this (mesh units)")
+      ->check(finiteDistance(/*zeroAllowed=*/true));
   command->add_option("--stats", state->statsPath, "Also write the figures as JSON");
   command->callback([state, &context] {
     checkFilesBeforeWork({{"mesh A", state->a}, {"mesh B", state->b}}, {{"--stats", state->statsPath}});

@@ -2,11 +2,13 @@
 // Copyright Contributors to the isovdb project.
 // isovdb: sparse volumes to clean triangle meshes. Parses arguments and runs one
 // subcommand; all the work is in the library (pipeline/).
+#include <csignal>
 #include <cstdio>
 
 #include "commands.h"
 #include "isovdb/errors.h"
 #include "isovdb/pipeline/memory.h"
+#include "terminal_progress.h"
 
 int main(int argc, char** argv) {
   using namespace isovdb;
@@ -28,13 +30,17 @@ int main(int argc, char** argv) {
   cli::addConvertCommand(app, context);
   cli::addMorphCommand(app, context);
   cli::addReservoirCommand(app, context);
+  cli::installInterruptSignals();
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // CLI11 prints the message; its own codes (105, 114, ...) become the usage error 2,
+    // as for every other bad option, and --help stays 0.
+    return app.exit(e) == 0 ? 0 : 2;
   } catch (const Interrupted&) {
+    // Temporary outputs are gone by now (their owners unwound); 128 + signal, as a shell reports it.
     std::fprintf(stderr, "isovdb: interrupted\n");
-    return 130;
+    return cli::interruptSignal() == SIGTERM ? 128 + SIGTERM : 128 + SIGINT;
   } catch (const InputError& e) {
     std::fprintf(stderr, "isovdb: error: %s\n", e.what());
     return 2;

@@ -5,6 +5,7 @@
 // metamorphosis fills the gaps → the completed stack is contoured like any volume.
 #include <tbb/global_control.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -29,6 +30,7 @@ void addMorphCommand(CLI::App& app, Context& context) {
     std::string input, output, statsPath, vdbPath, saveSlices, heights, method = "vdb";
     std::string interpolation = "levelset", progress = "exponential";
     double spacing = 0, pixelSize = 1, zStep = 0;
+    std::int64_t maxPixels = morph::SliceDirectoryOptions{}.maxPixels;
     bool pls = false, check = false;
     int threads = 0;
     morph::VolumeSliceOptions volumeSlices;
@@ -46,6 +48,10 @@ void addMorphCommand(CLI::App& app, Context& context) {
   command->add_option("--heights", state->heights, "Folder input: text file with one height per slice image");
   command->add_option("--spacing", state->spacing, "Folder input: uniform spacing between slices (world units)");
   command->add_option("--pixel-size", state->pixelSize, "Folder input: pixel size (world units)")
+      ->capture_default_str();
+  command
+      ->add_option("--max-pixels", state->maxPixels,
+                   "Folder input: most pixels per image, checked in its header before decoding")
       ->capture_default_str();
   command->add_option("--z-step", state->zStep,
                       "Distance between the planes of the completed stack (default: the pixel size; "
@@ -84,7 +90,13 @@ void addMorphCommand(CLI::App& app, Context& context) {
       ->capture_default_str();
   command->add_option("--seed", state->options.pair.particleOptions.seed, "Particle random seed")
       ->capture_default_str();
-  command->add_option("--half-width", state->options.halfWidth, "Band half-width of the output distance field (voxels)")
+  command
+      ->add_option("--half-width", state->options.halfWidth,
+                   "Band half-width of the output distance field (voxels, 1..64)")
+      ->capture_default_str();
+  command
+      ->add_option("--max-planes", state->options.maxPlanes,
+                   "Most planes the completed stack may have (heights / z step); a guard against mistyped heights")
       ->capture_default_str();
   command->add_option("--threads", state->threads, "Worker threads (0 = every core); the output is the same")
       ->capture_default_str();
@@ -126,8 +138,10 @@ void addMorphCommand(CLI::App& app, Context& context) {
       pipeline::Statistics::StageTimer timer(&stats, "read");
       std::error_code ec;
       if (std::filesystem::is_directory(state->input, ec)) {
-        stack = morph::loadSliceDirectory(
-            state->input, {.heightsFile = state->heights, .spacing = state->spacing, .pixelSize = state->pixelSize});
+        stack = morph::loadSliceDirectory(state->input, {.heightsFile = state->heights,
+                                                         .spacing = state->spacing,
+                                                         .pixelSize = state->pixelSize,
+                                                         .maxPixels = state->maxPixels});
       } else {
         if (!state->heights.empty() || state->spacing > 0)
           throw InputError("'" + state->input +

@@ -4,13 +4,34 @@
 
 #include <unistd.h>
 
+#include <atomic>
+#include <csignal>
 #include <cstdio>
 
 namespace isovdb::cli {
 
 namespace {
 constexpr std::chrono::milliseconds kQuietPeriod{1000};  // stages shorter than this print nothing
+
+std::atomic<int> gInterruptSignal{0};
+static_assert(std::atomic<int>::is_always_lock_free, "the signal handler needs a lock-free flag");
+
+extern "C" void onInterruptSignal(int signal) {
+  gInterruptSignal.store(signal, std::memory_order_relaxed);
+  std::signal(signal, SIG_DFL);  // the second one ends the process
 }
+}  // namespace
+
+void installInterruptSignals() {
+  for (const int signal : {SIGINT, SIGTERM}) {
+    struct sigaction action {};
+    action.sa_handler = onInterruptSignal;
+    sigemptyset(&action.sa_mask);
+    sigaction(signal, &action, nullptr);
+  }
+}
+
+int interruptSignal() { return gInterruptSignal.load(std::memory_order_relaxed); }
 
 TerminalProgress::TerminalProgress(bool enabled) : enabled_(enabled), tty_(::isatty(STDERR_FILENO) != 0) {}
 
@@ -34,6 +55,7 @@ void TerminalProgress::end() {
 }
 
 bool TerminalProgress::wasInterrupted(int percent) {
+  if (interruptSignal() != 0) return true;
   if (!enabled_ || percent < 0) return false;
   std::lock_guard lock(mutex_);
   if (stages_.empty()) return false;

@@ -13,11 +13,20 @@
 
 namespace isovdb::cli {
 
+/// Makes SIGINT and SIGTERM cancel the run instead of killing the process: the next
+/// wasInterrupted() returns true, so the work unwinds and its temporary output files
+/// are removed. A second signal ends the process at once (the default action).
+void installInterruptSignals();
+/// The signal that asked the run to stop; 0 when none did.
+int interruptSignal();
+
 class TerminalProgress : public Interrupter {
  public:
   explicit TerminalProgress(bool enabled);
   void start(const char* name) override;
   void end() override;
+  /// True once a signal installed by installInterruptSignals() arrived; otherwise
+  /// prints the stage's progress and returns false.
   bool wasInterrupted(int percent) override;
 
  private:

@@ -7,10 +7,16 @@
 
 #include <openvdb/openvdb.h>
 
-#include <cmath>
-#include <cstring>
-#include <limits>
+#include <zlib.h>
 
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+#include <vector>
+
+#include "isovdb/io/png_file.h"
 #include "support/test_support.h"
 
 namespace isovdb::test {
@@ -122,6 +128,80 @@ TEST_F(CliBadInput, UnknownMeshFormat) {
   expectCleanFailure(
       runCli("extract " + (in / "v.raw").string() + " --dims 10,10,10 --type uint8 -o " + (out / "mesh.stl").string()),
       {"mesh.stl", ".ply or .obj"}, out);
+}
+
+// Hostile sizes and values: each is refused before the work they would ask for.
+class CliHostileInput : public CliBadInput {
+ protected:
+  std::string mask2() const {
+    return nrrdHeader("type: uint8\ndimension: 3\nsizes: 2 2 2\nencoding: raw\n") + std::string(8, '\1');
+  }
+  /// A folder of two 8 x 8 slice images with a dark square each.
+  std::filesystem::path sliceFolder() const {
+    const std::filesystem::path dir = in / "slices";
+    std::filesystem::create_directories(dir);
+    std::vector<std::uint8_t> pixels(64, 255);
+    for (int y = 2; y < 6; ++y)
+      for (int x = 2; x < 6; ++x) pixels[static_cast<std::size_t>(y * 8 + x)] = 0;
+    for (const char* name : {"a.png", "b.png"}) io::writePng(dir / name, 8, 8, 1, pixels);
+    return dir;
+  }
+};
+
+TEST_F(CliHostileInput, OriginOrVoxelSizeBeyondFloat) {
+  writeFile(in / "o.nrrd", nrrdHeader("type: uint8\ndimension: 3\nsizes: 2 2 2\nspace dimension: 3\n"
+                                      "space origin: (nan,0,0)\nspace directions: (1,0,0) (0,1,0) (0,0,1)\n"
+                                      "encoding: raw\n") +
+                               std::string(8, '\1'));
+  expectCleanFailure(runCli("extract " + (in / "o.nrrd").string() + " -o " + outPly()), {"o.nrrd", "origin nan"}, out);
+  writeFile(in / "s.nrrd", nrrdHeader("type: uint8\ndimension: 3\nsizes: 2 2 2\nspacings: 1e308 1 1\nencoding: raw\n") +
+                               std::string(8, '\1'));
+  expectCleanFailure(runCli("sdf " + (in / "s.nrrd").string() + " -o " + (out / "s.vdb").string()),
+                     {"s.nrrd", "beyond float's range"}, out);
+}
+
+TEST_F(CliHostileInput, ClosingBeyondItsRange) {
+  writeFile(in / "v.nrrd", mask2());
+  expectCleanFailure(runCli("extract " + (in / "v.nrrd").string() + " --closing 1000000 -o " + outPly()),
+                     {"closing steps 1000000", "0..64"}, out);
+}
+
+TEST_F(CliHostileInput, MorphHeightsHalfWidthAndImageSize) {
+  const std::string slices = sliceFolder().string();
+  writeFile(in / "h.txt", "0\n2147483647\n");
+  expectCleanFailure(runCli("morph " + slices + " --heights " + (in / "h.txt").string() + " -o " + outPly()),
+                     {"b.png", "--max-planes 4096"}, out);
+  expectCleanFailure(runCli("morph " + slices + " --spacing 2 --half-width nan -o " + outPly()), {"--half-width"}, out);
+  // A PNG whose header declares 20000 x 20000 pixels (stb_image would allocate them first).
+  std::string png = "\x89PNG\r\n\x1a\n";
+  std::string ihdr = "IHDR";
+  for (const std::uint32_t v : {20000u, 20000u}) {
+    for (int shift = 24; shift >= 0; shift -= 8) ihdr += static_cast<char>((v >> shift) & 0xff);
+  }
+  ihdr += std::string("\x08\x00\x00\x00\x00", 5);  // 8-bit grey, deflate, no filter, no interlace
+  const auto appendBigEndian = [&](std::uint32_t v) {
+    for (int shift = 24; shift >= 0; shift -= 8) png += static_cast<char>((v >> shift) & 0xff);
+  };
+  appendBigEndian(13);
+  png += ihdr;
+  appendBigEndian(static_cast<std::uint32_t>(
+      crc32(0, reinterpret_cast<const Bytef*>(ihdr.data()), static_cast<uInt>(ihdr.size()))));
+  writeFile(std::filesystem::path(slices) / "c.png", png);
+  expectCleanFailure(runCli("morph " + slices + " --spacing 2 -o " + outPly()),
+                     {"c.png", "20000 x 20000", "--max-pixels"}, out);
+}
+
+TEST_F(CliHostileInput, GrdeclRepeatTotalsAndDeviceIncludes) {
+  // Each n*value is within the old per-token limit; together they are 3 x 10^8 values.
+  writeFile(in / "r.grdecl", "SPECGRID\n1 1 1 1 F /\nPORO\n100000000*1 100000000*1 100000000*1 /\n");
+  expectCleanFailure(runCli("reservoir " + (in / "r.grdecl").string() + " --property PORO --iso 0.5 -o " + outPly()),
+                     {"r.grdecl", "PORO would hold more than", "1 x 1 x 1 grid"}, out);
+  writeFile(in / "u.grdecl", "JUNK\n100000000*1 100000000*1 /\n");
+  expectCleanFailure(runCli("reservoir " + (in / "u.grdecl").string() + " --property PORO --iso 0.5 -o " + outPly()),
+                     {"u.grdecl", "JUNK would hold more than 100000000"}, out);
+  writeFile(in / "z.grdecl", "INCLUDE\n'/dev/zero' /\n");
+  expectCleanFailure(runCli("reservoir " + (in / "z.grdecl").string() + " --property PORO --iso 0.5 -o " + outPly()),
+                     {"/dev/zero", "not a regular file"}, out);
 }
 
 }  // namespace

@@ -8,8 +8,11 @@
 #include <openvdb/tools/LevelSetSphere.h>
 
 #include <cmath>
+#include <cstring>
+#include <random>
 
 #include "isovdb/errors.h"
+#include "isovdb/store/vdb_layout.h"
 #include "isovdb/volume/grids.h"
 #include "support/test_support.h"
 
@@ -104,6 +107,92 @@ TEST(VdbFile, MissingAndCorruptFiles) {
   EXPECT_THROW(readVdb(dir / "missing.vdb"), IoError);
   test::writeFile(dir / "junk.vdb", "this is not a vdb file");
   EXPECT_THROW(readVdb(dir / "junk.vdb"), InputError);
+}
+
+/// readVdb and listVdbGrids on `bytes`: either a volume or an InputError, nothing else.
+void expectReadOrInputError(const std::filesystem::path& path, const std::string& bytes, const std::string& what) {
+  test::writeFile(path, bytes);
+  for (const bool list : {false, true}) {
+    try {
+      if (list)
+        listVdbGrids(path);
+      else
+        readVdb(path);
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(path.filename().string()), std::string::npos) << what << ": " << e.what();
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << what << ": not an InputError: " << e.what();
+    }
+  }
+}
+
+TEST(VdbFile, LayoutOfAWrittenFile) {
+  test::TempDir dir;
+  writeVdb(dir / "s.vdb", sphereSdf({}), {.gridName = "ls"});
+  const VdbLayout layout = checkVdbLayout(dir / "s.vdb");
+  EXPECT_TRUE(layout.hasGridOffsets);
+  ASSERT_EQ(layout.grids.size(), 1u);
+  EXPECT_EQ(layout.grids[0].name, "ls");
+  EXPECT_EQ(layout.grids[0].type, "Tree_float_5_4_3");
+  EXPECT_LT(layout.grids[0].gridPosition, layout.grids[0].blockPosition);
+  EXPECT_EQ(layout.grids[0].endPosition, static_cast<std::int64_t>(std::filesystem::file_size(dir / "s.vdb")));
+}
+
+TEST(VdbFile, TruncatedFilesAreRefusedBeforeOpenVdbReadsThem) {
+  test::TempDir dir;
+  writeVdb(dir / "s.vdb", sphereSdf({}));
+  const std::string bytes = test::readFile(dir / "s.vdb");
+  // The first 64 bytes made OpenVDB spin for > 25 s at 3-4 GB; every cut must fail at once.
+  for (const std::size_t cut : {std::size_t{0}, std::size_t{7}, std::size_t{12}, std::size_t{40}, std::size_t{64},
+                                std::size_t{100}, bytes.size() / 2, bytes.size() - 1}) {
+    test::writeFile(dir / "cut.vdb", bytes.substr(0, cut));
+    EXPECT_THROW(checkVdbLayout(dir / "cut.vdb"), InputError) << "cut at " << cut;
+    EXPECT_THROW(readVdb(dir / "cut.vdb"), InputError) << "cut at " << cut;
+  }
+}
+
+TEST(VdbFile, LengthsAndOffsetsBeyondTheFileAreNamed) {
+  test::TempDir dir;
+  writeVdb(dir / "s.vdb", sphereSdf({}), {.gridName = "ls"});
+  const std::string bytes = test::readFile(dir / "s.vdb");
+  const VdbLayout layout = checkVdbLayout(dir / "s.vdb");
+  const auto patched = [&](std::size_t offset, std::int64_t value, std::size_t size) {
+    std::string copy = bytes;
+    std::memcpy(copy.data() + offset, &value, size);
+    test::writeFile(dir / "bad.vdb", copy);
+    try {
+      readVdb(dir / "bad.vdb");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  // The grid name's length sits 4 bytes before the name, whose descriptor ends 24 bytes before gridPosition.
+  const std::size_t offsets = static_cast<std::size_t>(layout.grids[0].gridPosition) - 24;
+  const std::size_t nameLength = offsets - 4 - 16 - 4 - 2 - 4;  // parent "", type, "ls"
+  ASSERT_EQ(bytes.substr(nameLength + 4, 2), "ls");
+  EXPECT_NE(patched(nameLength, 0x7fffffff, 4).find("runs past the end of the file"), std::string::npos);
+  EXPECT_NE(patched(offsets + 16, layout.grids[0].endPosition + 1000, 8).find("beyond the file's"), std::string::npos);
+  EXPECT_NE(patched(offsets + 8, layout.grids[0].gridPosition - 1, 8).find("out of order"), std::string::npos);
+  EXPECT_NE(patched(0, 0x12345678, 8).find("magic"), std::string::npos);
+  EXPECT_NE(patched(8, 999, 4).find("version 999"), std::string::npos);
+}
+
+TEST(VdbFile, FlippedHeaderBytesGiveAVolumeOrAnInputError) {
+  test::TempDir dir;
+  writeVdb(dir / "s.vdb", sphereSdf({}));
+  const std::string bytes = test::readFile(dir / "s.vdb");
+  const VdbLayout layout = checkVdbLayout(dir / "s.vdb");
+  // Every byte before the grid's data but its three offsets, which OpenVDB follows blindly
+  // when they stay plausible (LengthsAndOffsetsBeyondTheFileAreNamed covers the implausible).
+  const auto gridStart = static_cast<std::size_t>(layout.grids[0].gridPosition);
+  std::mt19937 random(7);
+  for (int trial = 0; trial < 150; ++trial) {
+    std::size_t at = std::uniform_int_distribution<std::size_t>(0, gridStart - 25)(random);
+    std::string copy = bytes;
+    copy[at] = static_cast<char>(copy[at] ^ (1 << (trial % 8)));
+    expectReadOrInputError(dir / "flip.vdb", copy, "byte " + std::to_string(at));
+  }
 }
 
 TEST(VdbFile, UnwritablePathLeavesNothing) {

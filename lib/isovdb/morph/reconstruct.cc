@@ -24,12 +24,22 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 Reconstruction reconstruct(const SliceStack& stack, const ReconstructOptions& options, Interrupter* interrupter) {
   if (stack.slices.empty()) throw InputError("slice stack: no slices");
-  if (!(stack.zStep > 0)) throw InputError("--z-step must be > 0");
+  if (!(stack.zStep > 0) || !std::isfinite(stack.zStep)) throw InputError("--z-step must be a finite number > 0");
+  if (!(options.halfWidth >= 1 && options.halfWidth <= 64))
+    throw InputError("--half-width " + std::to_string(options.halfWidth) + " is out of range, expected 1..64 voxels");
+  if (options.maxPlanes < 1) throw InputError("--max-planes must be >= 1");
   const std::size_t n = stack.slices.size();
   const double base = stack.slices.front().height;
   Reconstruction out;
   for (std::size_t i = 0; i < n; ++i) {
-    const int plane = static_cast<int>(std::lround((stack.slices[i].height - base) / stack.zStep));
+    // In double first: a height far above the first one must not overflow the plane index.
+    const double steps = std::round((stack.slices[i].height - base) / stack.zStep);
+    if (!(steps < options.maxPlanes))
+      throw InputError("'" + stack.slices[i].source + "': height " + std::to_string(stack.slices[i].height) + " lies " +
+                       std::to_string(steps) + " z steps above the first slice; the completed stack " +
+                       "would exceed --max-planes " + std::to_string(options.maxPlanes) +
+                       " (check the heights and --z-step, or raise --max-planes)");
+    const int plane = static_cast<int>(steps);
     if (i > 0 && plane <= out.originalPlane.back())
       throw InputError("'" + stack.slices[i].source + "': height " + std::to_string(stack.slices[i].height) +
                        " is less than one z step (" + std::to_string(stack.zStep) + ") above the previous slice");

@@ -21,7 +21,10 @@ namespace isovdb::morph {
 
 struct ReconstructOptions {
   PairOptions pair;
-  float halfWidth = 3.f;  ///< narrow band of the output distance field, voxels
+  float halfWidth = 3.f;  ///< narrow band of the output distance field, voxels (1..64)
+  /// Most planes the completed stack may have: heights far apart for their z step
+  /// (a typo, or a hostile heights file) would otherwise ask for one plane per step.
+  int maxPlanes = 4096;
 };
 
 struct Reconstruction {
@@ -36,7 +39,8 @@ struct Reconstruction {
 /// @brief Fills the gaps of `stack` and assembles the volume. Pairs run in
 ///        parallel (TBB); the result does not depend on the thread count.
 /// @throw InputError when two slices fall on the same plane (heights closer than
-///        zStep) or the stack is empty; Interrupted on cancellation (checked per pair).
+///        zStep), the stack is empty, the planes would exceed maxPlanes or the
+///        half-width is outside 1..64; Interrupted on cancellation (checked per pair).
 Reconstruction reconstruct(const SliceStack& stack, const ReconstructOptions& options,
                            Interrupter* interrupter = nullptr);
 

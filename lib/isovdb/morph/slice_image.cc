@@ -21,11 +21,17 @@ bool isSliceImagePath(const std::filesystem::path& path) {
   return ext == ".png" || ext == ".bmp";
 }
 
-Mask2 readSliceImage(const std::filesystem::path& path) {
+Mask2 readSliceImage(const std::filesystem::path& path, std::int64_t maxPixels) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw IoError("'" + path.string() + "': cannot open slice image (no such file or not readable)");
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   int width = 0, height = 0, channels = 0;
+  // The header's size first: decoding allocates it before reading a single pixel.
+  if (stbi_info_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), static_cast<int>(bytes.size()), &width,
+                            &height, &channels) &&
+      static_cast<std::int64_t>(width) * height > maxPixels)
+    throw InputError("'" + path.string() + "': the image declares " + std::to_string(width) + " x " +
+                     std::to_string(height) + " pixels, more than --max-pixels " + std::to_string(maxPixels));
   stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
                                           static_cast<int>(bytes.size()), &width, &height, &channels, 1);
   if (!pixels)

@@ -5,6 +5,7 @@
 ///        object's inside, and writing a slice back as a PNG.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 
 #include "isovdb/morph/plane.h"
@@ -22,8 +23,9 @@ bool isSliceImagePath(const std::filesystem::path& path);
 /// closed 8-connected contours (contour_fill.h: a contour inside a contour is a hole).
 /// Row 0 of the image is y = 0.
 /// @throw IoError when the file cannot be read; InputError naming the file when it
-///        is not a PNG/BMP image stb_image can decode (truncated, corrupt).
-Mask2 readSliceImage(const std::filesystem::path& path);
+///        is not a PNG/BMP image stb_image can decode (truncated, corrupt) or its
+///        header declares more than `maxPixels` pixels (checked before decoding).
+Mask2 readSliceImage(const std::filesystem::path& path, std::int64_t maxPixels = std::int64_t{1} << 28);
 
 /// Writes `mask` as an 8-bit grey PNG (inside white), through a temporary file.
 /// @throw IoError when the path is not writable.

@@ -118,7 +118,7 @@ SliceStack loadSliceDirectory(const std::filesystem::path& dir, const SliceDirec
   stack.pixelSize = options.pixelSize;
   stack.zStep = options.pixelSize;
   for (std::size_t i = 0; i < files.size(); ++i)
-    stack.slices.push_back({readSliceImage(files[i]), heights[i], files[i].string()});
+    stack.slices.push_back({readSliceImage(files[i], options.maxPixels), heights[i], files[i].string()});
   padToCanvas(stack);
   return stack;
 }

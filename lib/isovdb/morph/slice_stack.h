@@ -9,6 +9,7 @@
 /// padded with outside pixels on the right and at the bottom (paper 002 §3.3.1).
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -41,6 +42,9 @@ struct SliceDirectoryOptions {
   /// Uniform spacing between consecutive slices when no heights file is given.
   double spacing = 0;
   double pixelSize = 1.0;  ///< world units per pixel
+  /// Most pixels one image may have: its header is checked before it is decoded (a 439 KB
+  /// PNG declaring 20000 x 20000 pixels took 5.5 GB). 2^28: a 16384 x 16384 slice.
+  std::int64_t maxPixels = std::int64_t{1} << 28;
 };
 
 /// @brief Reads every .png/.bmp in `dir` (natural order of the names: 2 before 10)

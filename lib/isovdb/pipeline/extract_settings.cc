@@ -55,7 +55,7 @@ std::vector<Setting> distanceSettings(volume::DistanceFieldOptions& o, std::stri
        "Distance field computed in cubes of this many voxels (multiple of 8; sdf writes each to the file as it "
        "finishes); 0 = tracker: the whole band at once, in memory",
        &o.chunkSize},
-      {"closing", "Morphological closing steps before the distance field (changes topology)", &o.closingSteps},
+      {"closing", "Morphological closing steps before the distance field, 0..64 (changes topology)", &o.closingSteps},
   };
 }
 

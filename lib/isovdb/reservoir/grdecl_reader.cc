@@ -147,6 +147,19 @@ struct Parser {
   }
 
   // Numeric values of the record from `i`; `/` index in `end`. Throws on a non-number.
+  /// Most values one keyword may hold: every array of a grid of N cells has at most
+  /// 8 N (ZCORN) or 6 (NX+1)(NY+1) (COORD) values; before the grid's size is known, 10^8.
+  double valueLimit() const {
+    if (deck.dims[0] <= 0) return 1e8;
+    const double nx = deck.dims[0], ny = deck.dims[1], nz = deck.dims[2];
+    return std::max(8.0 * nx * ny * nz, 6.0 * (nx + 1) * (ny + 1)) + 64;  // + 64: MAPAXES-sized records
+  }
+  std::string valueLimitReason() const {
+    if (deck.dims[0] <= 0) return "(the limit before SPECGRID or DIMENS gives the grid's size)";
+    return "(more than any array of the " + std::to_string(deck.dims[0]) + " x " + std::to_string(deck.dims[1]) +
+           " x " + std::to_string(deck.dims[2]) + " grid holds)";
+  }
+
   std::vector<double> numbers(const std::vector<GrdeclToken>& t, std::size_t i, std::size_t& end,
                               const std::filesystem::path& file, const GrdeclToken& keyword,
                               std::size_t limit = static_cast<std::size_t>(-1)) const {
@@ -172,7 +185,11 @@ struct Parser {
         throw InputError(where(file, t[end].line) + ": keyword " + keyword.text + ": '" + s +
                          "' is not a number (expected a value or n*value)");
       }
-      if (repeat > 100000000) throw InputError(where(file, t[end].line) + ": repeat count too large: " + s);
+      // The whole keyword is bounded, not each n*value: three 10^8 repeats made 4.5 GB.
+      if (static_cast<double>(values.size()) + static_cast<double>(repeat) > valueLimit())
+        throw InputError(where(file, t[end].line) + ": keyword " + keyword.text + " would hold more than " +
+                         std::to_string(static_cast<long long>(valueLimit())) + " values at '" + s + "' " +
+                         valueLimitReason());
       values.insert(values.end(), static_cast<std::size_t>(repeat), value);
     }
     if (end == t.size() && end < limit)
@@ -192,6 +209,9 @@ struct Parser {
 
   void readFile(const std::filesystem::path& file) {
     if (depth > 16) throw InputError(file.string() + ": INCLUDE nested more than 16 deep");
+    // A device or a pipe (INCLUDE '/dev/zero') would be read forever.
+    if (std::filesystem::exists(file) && !std::filesystem::is_regular_file(file))
+      throw InputError(file.string() + ": not a regular file (a GRDECL deck or INCLUDE must be a file)");
     std::ifstream in(file, std::ios::binary);
     if (!in) throw IoError(file.string() + ": cannot open GRDECL file");
     std::stringstream buffer;
@@ -225,6 +245,7 @@ struct Parser {
         const std::filesystem::path included = file.parent_path() / t[i].text;
         if (!std::filesystem::exists(included))
           throw InputError(where(file, keyword.line) + ": INCLUDE file not found: " + included.string());
+
         ++depth;
         readFile(included);
         --depth;

@@ -11,6 +11,7 @@
 #include "isovdb/errors.h"
 #include "isovdb/io/atomic_file.h"
 #include "isovdb/store/vdb_grid_setup.h"
+#include "isovdb/store/vdb_layout.h"
 #include "isovdb/volume/grids.h"
 
 namespace isovdb::store {
@@ -38,10 +39,27 @@ std::string className(openvdb::GridClass gridClass) {
   }
 }
 
+/// Runs OpenVDB's reading in `read`; what it throws (corrupt data deeper than
+/// checkVdbLayout looks: KeyError, ValueError, IoError, an oversized allocation)
+/// becomes an InputError naming the file.
+template <class Read>
+auto guardedRead(const std::filesystem::path& path, Read&& read) {
+  try {
+    return read();
+  } catch (const openvdb::Exception& e) {
+    throw InputError(quoted(path) + ": not a readable .vdb file (" + std::string(e.what()) + ")");
+  } catch (const std::bad_alloc&) {
+    throw InputError(quoted(path) + ": not a readable .vdb file (its data asks for more memory than there is)");
+  } catch (const std::length_error& e) {
+    throw InputError(quoted(path) + ": not a readable .vdb file (" + std::string(e.what()) + ")");
+  }
+}
+
 std::unique_ptr<openvdb::io::File> openFile(const std::filesystem::path& path) {
   initializeOpenVdb();
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw IoError(quoted(path) + ": no such file");
+  checkVdbLayout(path);
   auto file = std::make_unique<openvdb::io::File>(path.string());
   try {
     file->open(/*delayLoad=*/false);
@@ -116,19 +134,8 @@ Volume toVolume(openvdb::GridBase::Ptr base, const std::filesystem::path& path) 
                    " values, expected a float, double, bool or mask grid");
 }
 
-}  // namespace
-
-std::vector<VdbGridInfo> listVdbGrids(const std::filesystem::path& path) {
-  const auto file = openFile(path);
-  std::vector<VdbGridInfo> grids;
-  const openvdb::GridPtrVecPtr metadata = file->readAllGridMetadata();
-  for (const openvdb::GridBase::Ptr& grid : *metadata)
-    grids.push_back({grid->getName(), grid->valueType(), className(grid->getGridClass())});
-  file->close();
-  return grids;
-}
-
-Volume readVdb(const std::filesystem::path& path, const std::string& gridName) {
+/// readVdb's work, inside guardedRead.
+Volume readVdbGrid(const std::filesystem::path& path, const std::string& gridName) {
   const auto file = openFile(path);
   std::string name = gridName;
   if (name.empty()) {
@@ -154,6 +161,24 @@ Volume readVdb(const std::filesystem::path& path, const std::string& gridName) {
   }
   file->close();
   return toVolume(grid, path);
+}
+
+}  // namespace
+
+std::vector<VdbGridInfo> listVdbGrids(const std::filesystem::path& path) {
+  return guardedRead(path, [&] {
+    const auto file = openFile(path);
+    std::vector<VdbGridInfo> grids;
+    const openvdb::GridPtrVecPtr metadata = file->readAllGridMetadata();
+    for (const openvdb::GridBase::Ptr& grid : *metadata)
+      grids.push_back({grid->getName(), grid->valueType(), className(grid->getGridClass())});
+    file->close();
+    return grids;
+  });
+}
+
+Volume readVdb(const std::filesystem::path& path, const std::string& gridName) {
+  return guardedRead(path, [&] { return readVdbGrid(path, gridName); });
 }
 
 void writeVdb(const std::filesystem::path& path, const Volume& volume, const VdbWriteOptions& options) {

@@ -4,12 +4,37 @@
 
 #include <openvdb/tools/Count.h>
 
+#include <cmath>
+#include <limits>
+#include <sstream>
+
 #include "isovdb/volume/grids.h"
 
 namespace isovdb::volume {
 
+void checkGeometry(const Geometry& geometry, const std::string& source) {
+  // Index coordinates are int32, so |world| <= |origin| + spacing * 2^31 must stay a finite float.
+  constexpr double kLargestIndex = 2147483648.0;
+  constexpr double kLargestFloat = std::numeric_limits<float>::max();
+  static constexpr char kAxes[] = "xyz";
+  for (int a = 0; a < 3; ++a) {
+    const double spacing = geometry.spacing[a], origin = geometry.origin[a];
+    std::ostringstream problem;
+    if (!std::isfinite(spacing) || spacing <= 0)
+      problem << "voxel size " << spacing << " along " << kAxes[a] << " is not a positive finite number";
+    else if (!std::isfinite(origin))
+      problem << "origin " << origin << " along " << kAxes[a] << " is not a finite number";
+    else if (std::abs(origin) + spacing * kLargestIndex > kLargestFloat)
+      problem << "origin " << origin << " and voxel size " << spacing << " along " << kAxes[a]
+              << " put world coordinates beyond float's range (mesh vertices are float)";
+    if (!problem.str().empty()) throw InputError("'" + source + "': " + problem.str());
+  }
+}
+
 Volume::Volume(VolumeKind kind, std::shared_ptr<openvdb::GridBase> grid, Geometry geometry, std::string name)
-    : kind_(kind), grid_(std::move(grid)), geometry_(geometry), name_(std::move(name)) {}
+    : kind_(kind), grid_(std::move(grid)), geometry_(geometry), name_(std::move(name)) {
+  checkGeometry(geometry_, name_);
+}
 
 const MaskGrid& maskGrid(const Volume& volume) {
   if (volume.kind() != VolumeKind::Mask || !volume.grid())

@@ -50,6 +50,12 @@ struct Geometry {
   bool isUniform() const { return spacing[0] == spacing[1] && spacing[1] == spacing[2]; }
 };
 
+/// Refuses a geometry whose world coordinates cannot be written as mesh vertices
+/// (float): a non-finite or non-positive spacing, a non-finite origin, or one so
+/// large that an index within int32 maps beyond float's range.
+/// @throw InputError naming `source` and the axis.
+void checkGeometry(const Geometry& geometry, const std::string& source);
+
 /// Figures `isovdb info` and the statistics report about a grid.
 struct GridStats {
   std::int64_t activeVoxels = 0;        ///< voxels inside (mask) or stored (scalar, SDF band), tiles expanded
@@ -66,6 +72,7 @@ struct GridStats {
 class Volume {
  public:
   Volume() = default;
+  /// @throw InputError when checkGeometry refuses `geometry`.
   Volume(VolumeKind kind, std::shared_ptr<openvdb::GridBase> grid, Geometry geometry, std::string name);
 
   VolumeKind kind() const { return kind_; }

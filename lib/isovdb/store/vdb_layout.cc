@@ -1,0 +1,157 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
+#include "isovdb/store/vdb_layout.h"
+
+#include <openvdb/version.h>
+
+#include <array>
+#include <bit>
+#include <fstream>
+
+#include "isovdb/errors.h"
+
+namespace isovdb::store {
+
+namespace {
+
+constexpr std::int64_t kVdbMagic = 0x56444220;  // "VDB " (OpenVDB's OPENVDB_MAGIC)
+
+/// Bounded little-endian reads of one file; every failure names the file and the record.
+class LayoutReader {
+ public:
+  explicit LayoutReader(const std::filesystem::path& path) : path_(path), in_(path, std::ios::binary) {
+    if (!in_) throw IoError("'" + path.string() + "': cannot open");
+    std::error_code ec;
+    size_ = static_cast<std::int64_t>(std::filesystem::file_size(path, ec));
+    if (ec) throw IoError("'" + path.string() + "': cannot read its size (" + ec.message() + ")");
+  }
+
+  [[noreturn]] void fail(const std::string& what) const {
+    throw InputError("'" + path_.string() + "': not a readable .vdb file: " + what);
+  }
+
+  std::int64_t size() const { return size_; }
+  std::int64_t position() const { return position_; }
+  std::int64_t remaining() const { return size_ - position_; }
+
+  void seek(std::int64_t position, const char* what) {
+    if (position < 0 || position > size_)
+      fail(std::string(what) + " at byte " + std::to_string(position) + ", beyond the file's " + std::to_string(size_) +
+           " bytes");
+    in_.seekg(position);
+    position_ = position;
+  }
+
+  void skip(std::int64_t bytes, const char* what) {
+    if (bytes < 0 || bytes > remaining())
+      fail(std::string(what) + " of " + std::to_string(bytes) + " bytes at byte " + std::to_string(position_) +
+           " runs past the end of the file (" + std::to_string(size_) + " bytes)");
+    seek(position_ + bytes, what);
+  }
+
+  /// A number in the file's byte order, which is the writer's native one (OpenVDB does not swap).
+  template <class T>
+  T number(const char* what) {
+    if (remaining() < static_cast<std::int64_t>(sizeof(T)))
+      fail(std::string("truncated in ") + what + " at byte " + std::to_string(position_));
+    std::array<char, sizeof(T)> bytes{};
+    in_.read(bytes.data(), sizeof(T));
+    if (!in_) fail(std::string("read failed in ") + what + " at byte " + std::to_string(position_));
+    position_ += static_cast<std::int64_t>(sizeof(T));
+    return std::bit_cast<T>(bytes);
+  }
+
+  /// OpenVDB's string: a uint32 length, then the characters.
+  std::string text(const char* what) {
+    const auto length = static_cast<std::int64_t>(number<std::uint32_t>(what));
+    if (length > remaining())
+      fail(std::string(what) + ": a string of " + std::to_string(length) + " bytes at byte " +
+           std::to_string(position_) + " runs past the end of the file (" + std::to_string(size_) + " bytes)");
+    std::string s(static_cast<std::size_t>(length), '\0');
+    in_.read(s.data(), length);
+    position_ += length;
+    return s;
+  }
+
+  /// A MetaMap: a count, then (name, type name, uint32 size, value bytes) per item.
+  void metadata(const char* what) {
+    const std::uint32_t count = number<std::uint32_t>(what);
+    // Each item takes at least 12 bytes (three lengths), so a count beyond that is corrupt.
+    if (static_cast<std::int64_t>(count) * 12 > remaining())
+      fail(std::string(what) + ": " + std::to_string(count) + " items cannot fit in the " +
+           std::to_string(remaining()) + " bytes left");
+    for (std::uint32_t i = 0; i < count; ++i) {
+      text(what);
+      text(what);
+      skip(static_cast<std::int64_t>(number<std::uint32_t>(what)), what);
+    }
+  }
+
+ private:
+  std::filesystem::path path_;
+  std::ifstream in_;
+  std::int64_t size_ = 0;
+  std::int64_t position_ = 0;
+};
+
+/// The grid's own records at gridPosition: its compression word (file version >= 222)
+/// and its metadata, which must end before its voxel buffers.
+void checkGridHead(LayoutReader& in, const VdbGridRecord& grid, std::uint32_t version) {
+  in.seek(grid.gridPosition, "grid data");
+  if (version >= openvdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION) in.number<std::uint32_t>("grid compression");
+  in.metadata("grid metadata");
+  if (in.position() > grid.blockPosition) in.fail("grid '" + grid.name + "': its metadata runs into its voxel data");
+}
+
+}  // namespace
+
+VdbLayout checkVdbLayout(const std::filesystem::path& path) {
+  LayoutReader in(path);
+  VdbLayout layout;
+  if (in.number<std::int64_t>("the header") != kVdbMagic) in.fail("no 'VDB ' magic number at its start");
+  layout.fileVersion = in.number<std::uint32_t>("the header");
+  if (layout.fileVersion < openvdb::OPENVDB_FILE_VERSION_ROOTNODE_MAP ||
+      layout.fileVersion > openvdb::OPENVDB_FILE_VERSION)
+    in.fail("file format version " + std::to_string(layout.fileVersion) + ", this OpenVDB reads " +
+            std::to_string(openvdb::OPENVDB_FILE_VERSION_ROOTNODE_MAP) + " to " +
+            std::to_string(openvdb::OPENVDB_FILE_VERSION));
+  in.number<std::uint32_t>("the header");  // library major version
+  in.number<std::uint32_t>("the header");  // library minor version
+  const auto offsets = in.number<std::uint8_t>("the header");
+  if (offsets > 1) in.fail("header flag 'has grid offsets' is " + std::to_string(offsets) + ", expected 0 or 1");
+  layout.hasGridOffsets = offsets == 1;
+  if (layout.fileVersion < openvdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION) in.number<std::uint8_t>("the header");
+  in.skip(layout.fileVersion >= openvdb::OPENVDB_FILE_VERSION_BOOST_UUID ? 36 : 16, "the header's UUID");
+  in.metadata("file metadata");
+  const auto gridCount = in.number<std::int32_t>("the grid count");
+  // A descriptor takes at least three lengths (and three offsets when the file has them).
+  const std::int64_t smallestDescriptor = layout.hasGridOffsets ? 36 : 12;
+  if (gridCount < 0 || static_cast<std::int64_t>(gridCount) * smallestDescriptor > in.remaining())
+    in.fail("a count of " + std::to_string(gridCount) + " grids, which the " + std::to_string(in.remaining()) +
+            " bytes left cannot hold");
+  for (std::int32_t g = 0; g < gridCount; ++g) {
+    VdbGridRecord grid;
+    grid.name = in.text("a grid descriptor");
+    grid.type = in.text("a grid descriptor");
+    if (layout.fileVersion >= openvdb::OPENVDB_FILE_VERSION_GRID_INSTANCING) in.text("a grid descriptor");
+    if (!layout.hasGridOffsets) {
+      layout.grids.push_back(grid);
+      break;  // without offsets the next descriptor follows the grid's data, which only OpenVDB can walk
+    }
+    const std::int64_t descriptorEnd = in.position() + 24;
+    grid.gridPosition = in.number<std::int64_t>("a grid descriptor");
+    grid.blockPosition = in.number<std::int64_t>("a grid descriptor");
+    grid.endPosition = in.number<std::int64_t>("a grid descriptor");
+    if (!(descriptorEnd <= grid.gridPosition && grid.gridPosition <= grid.blockPosition &&
+          grid.blockPosition <= grid.endPosition && grid.endPosition <= in.size()))
+      in.fail("grid '" + grid.name + "': its data offsets " + std::to_string(grid.gridPosition) + ", " +
+              std::to_string(grid.blockPosition) + ", " + std::to_string(grid.endPosition) +
+              " are out of order or beyond the file's " + std::to_string(in.size()) + " bytes (truncated?)");
+    checkGridHead(in, grid, layout.fileVersion);
+    layout.grids.push_back(grid);
+    in.seek(grid.endPosition, "the next grid descriptor");
+  }
+  return layout;
+}
+
+}  // namespace isovdb::store
