@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "isovdb/io/lazy_buffer.h"
 #include "isovdb/io/byte_stream.h"
 #include "isovdb/io/slice_stream.h"
 
@@ -56,7 +57,7 @@ class DenseSliceStream final : public SliceStream {
   std::unique_ptr<ByteStream> bytes_;
   std::int64_t totalBytes_ = 0;
   std::int64_t nextSlice_ = 0;
-  std::vector<std::byte> sliceBytes_;
+  LazyBuffer<std::byte> sliceBytes_;  // pages touched only as the data arrives
 };
 
 }  // namespace isovdb::io

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MPL-2.0
 // Copyright Contributors to the isovdb project.
+#include "isovdb/io/lazy_buffer.h"
 #include "isovdb/volume/digital_topology.h"
 
 #include <algorithm>
@@ -168,7 +169,7 @@ std::int64_t eulerCharacteristic(io::SliceStream& stream, const MaskRule& rule, 
 
   ProgressStage stage(interrupter, "euler characteristic");
   SlicePairAccumulator accumulator(nx, ny, eulerTable(adjacency));
-  std::vector<float> values(static_cast<std::size_t>(nx * ny));
+  io::LazyBuffer<float> values(static_cast<std::size_t>(nx * ny));  // touched as slices arrive
   for (std::int64_t z = stream.nextSlice(); z < nz; ++z) {
     stage.update(static_cast<double>(z), static_cast<double>(nz));
     stream.readSlice(values.data());

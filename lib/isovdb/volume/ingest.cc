@@ -12,6 +12,7 @@
 #include <limits>
 #include <vector>
 
+#include "isovdb/io/lazy_buffer.h"
 #include "isovdb/volume/grids.h"
 #include "isovdb/volume/sampled_box.h"
 
@@ -57,7 +58,7 @@ Volume withSampledBox(Volume volume, const io::VolumeHeader& header) {
 
 /// Reads up to 8 slices into `slab` (x fastest, then y, then z) and returns how many.
 template <typename Classify>
-int readSlab(io::SliceStream& stream, std::vector<float>& slice, Classify&& store) {
+int readSlab(io::SliceStream& stream, io::LazyBuffer<float>& slice, Classify&& store) {
   const io::VolumeHeader& header = stream.header();
   const std::int64_t remaining = header.dims[2] - stream.nextSlice();
   const int depth = static_cast<int>(std::min<std::int64_t>(kLeafDim, remaining));
@@ -125,13 +126,14 @@ Volume ingestMask(io::SliceStream& stream, const MaskRule& rule, Interrupter* in
   const AxisMap toGrid{header.gridAxis};
   auto grid = MaskGrid::create(false);
   MaskGrid::TreeType& tree = grid->tree();
-  std::vector<float> slice(static_cast<std::size_t>(nx * ny));
-  std::vector<std::uint8_t> inside(static_cast<std::size_t>(nx * ny * kLeafDim));
+  // Lazy buffers: sized from the declared dimensions, paid for as slices arrive.
+  io::LazyBuffer<float> slice(static_cast<std::size_t>(nx * ny));
+  io::LazyBuffer<std::uint8_t> inside(static_cast<std::size_t>(nx * ny * kLeafDim));
   std::vector<BlockState> state(static_cast<std::size_t>(blocksX) * blocksY);
   std::vector<MaskGrid::TreeType::LeafNodeType*> leaves(state.size(), nullptr);
 
   for (std::int64_t z0 = 0; z0 < nz; z0 += kLeafDim) {
-    const int depth = readSlab(stream, slice, [&](int z, const std::vector<float>& values) {
+    const int depth = readSlab(stream, slice, [&](int z, const io::LazyBuffer<float>& values) {
       std::uint8_t* out = inside.data() + static_cast<std::size_t>(z) * nx * ny;
       for (std::size_t i = 0; i < values.size(); ++i) out[i] = rule.inside(values[i]) ? 1 : 0;
     });
@@ -179,8 +181,8 @@ Volume ingestScalar(io::SliceStream& stream, const ScalarIngestOptions& options,
   const AxisMap toGrid{header.gridAxis};
   auto grid = FieldGrid::create(options.background);
   FieldGrid::TreeType& tree = grid->tree();
-  std::vector<float> slice(static_cast<std::size_t>(nx * ny));
-  std::vector<float> slab(static_cast<std::size_t>(nx * ny * kLeafDim));
+  io::LazyBuffer<float> slice(static_cast<std::size_t>(nx * ny));
+  io::LazyBuffer<float> slab(static_cast<std::size_t>(nx * ny * kLeafDim));
   std::vector<FieldGrid::TreeType::LeafNodeType*> leaves(static_cast<std::size_t>(blocksX) * blocksY);
   std::vector<BlockState> state(leaves.size());
   std::vector<float> tileValue(leaves.size());
@@ -189,7 +191,7 @@ Volume ingestScalar(io::SliceStream& stream, const ScalarIngestOptions& options,
   const auto isActive = [deadBand](float v) { return !std::isnan(v) && !(std::abs(v) < deadBand); };
 
   for (std::int64_t z0 = 0; z0 < nz; z0 += kLeafDim) {
-    const int depth = readSlab(stream, slice, [&](int z, const std::vector<float>& values) {
+    const int depth = readSlab(stream, slice, [&](int z, const io::LazyBuffer<float>& values) {
       std::copy(values.begin(), values.end(), slab.begin() + static_cast<std::ptrdiff_t>(z * nx * ny));
     });
     tbb::parallel_for(0, blocksY, [&](int by) {
