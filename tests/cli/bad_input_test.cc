@@ -189,6 +189,16 @@ TEST_F(CliHostileInput, MorphHeightsHalfWidthAndImageSize) {
   writeFile(std::filesystem::path(slices) / "c.png", png);
   expectCleanFailure(runCli("morph " + slices + " --spacing 2 -o " + outPly()),
                      {"c.png", "20000 x 20000", "--max-pixels"}, out);
+  // A slice name that is a link to itself (an internal error before).
+  std::filesystem::remove(std::filesystem::path(slices) / "c.png");
+  std::filesystem::create_symlink("loop.png", std::filesystem::path(slices) / "loop.png");
+  expectCleanFailure(runCli("morph " + slices + " --spacing 2 -o " + outPly()), {"loop.png", "cannot read"}, out);
+}
+
+TEST_F(CliHostileInput, ClipThatIsNotANumber) {
+  writeFile(in / "v.nrrd", mask2());
+  expectCleanFailure(runCli("extract " + (in / "v.nrrd").string() + " --scalar --clip nan -o " + outPly()),
+                     {"--clip", "nan"}, out);
 }
 
 TEST_F(CliHostileInput, GrdeclRepeatTotalsAndDeviceIncludes) {

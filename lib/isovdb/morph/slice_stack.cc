@@ -97,8 +97,15 @@ SliceStack loadSliceDirectory(const std::filesystem::path& dir, const SliceDirec
     throw InputError("'" + dir.string() + "': give either --heights FILE or --spacing DZ (> 0)");
   if (!(options.pixelSize > 0)) throw InputError("--pixel-size must be > 0");
   std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::directory_iterator(dir))
-    if (entry.is_regular_file() && isSliceImagePath(entry.path())) files.push_back(entry.path());
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    // entry.is_regular_file() follows links: a link loop is skipped, not an internal error.
+    if (!isSliceImagePath(entry.path())) continue;
+    if (entry.is_regular_file(ec)) {
+      files.push_back(entry.path());
+    } else if (ec) {
+      throw InputError("'" + entry.path().string() + "': cannot read this slice image (" + ec.message() + ")");
+    }
+  }
   if (files.empty()) throw InputError("'" + dir.string() + "': no slice images (.png or .bmp) in the folder");
   std::sort(files.begin(), files.end(),
             [](const auto& a, const auto& b) { return naturalLess(a.filename().string(), b.filename().string()); });

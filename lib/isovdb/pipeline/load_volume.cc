@@ -2,6 +2,7 @@
 // Copyright Contributors to the isovdb project.
 #include "isovdb/pipeline/load_volume.h"
 
+#include <cmath>
 #include <string>
 
 #include "isovdb/errors.h"
@@ -107,7 +108,8 @@ volume::Volume ingest(io::SliceStream& stream, const InputOptions& options, Inte
     input["mask_rule"] = options.rule.describe();
     result = volume::ingestMask(*source, options.rule, interrupter);
   } else {
-    if (options.clip < 0) throw InputError("--clip: must be >= 0, got " + std::to_string(options.clip));
+    if (!(options.clip >= 0) || !std::isfinite(options.clip))  // NaN fails both comparisons
+      throw InputError("--clip: must be a finite number >= 0, got " + std::to_string(options.clip));
     if (options.clip > 0) input["clip"] = options.clip;
     result = volume::ingestScalar(*source, {.background = options.clip, .deadBand = options.clip}, interrupter);
   }
