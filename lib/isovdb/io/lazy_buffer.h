@@ -19,13 +19,10 @@
 namespace isovdb::io {
 
 /// std::allocator, except that construction without arguments default-initialises.
+/// (value_type comes from std::allocator; C++20's allocator_traits rebinds the template
+/// itself, so no `rebind` member is needed.)
 template <class T>
 struct DefaultInitAllocator : std::allocator<T> {
-  using value_type = T;
-  template <class U>
-  struct rebind {
-    using other = DefaultInitAllocator<U>;
-  };
   DefaultInitAllocator() noexcept = default;
   template <class U>
   explicit DefaultInitAllocator(const DefaultInitAllocator<U>& /*other*/) noexcept {}
