@@ -61,11 +61,7 @@ std::unique_ptr<openvdb::io::File> openFile(const std::filesystem::path& path) {
   if (!std::filesystem::exists(path, ec)) throw IoError(quoted(path) + ": no such file");
   checkVdbLayout(path);
   auto file = std::make_unique<openvdb::io::File>(path.string());
-  try {
-    file->open(/*delayLoad=*/false);
-  } catch (const openvdb::Exception& e) {
-    throw InputError(quoted(path) + ": not a readable .vdb file (" + std::string(e.what()) + ")");
-  }
+  file->open(/*delayLoad=*/false);  // callers run inside guardedRead, which names what OpenVDB throws
   return file;
 }
 
