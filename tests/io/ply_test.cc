@@ -89,10 +89,11 @@ TEST(Ply, WritesTheDocumentedLayout) {
   test::TempDir dir;
   writePly(dir / "t.ply", tetrahedron());
   const std::string bytes = test::readFile(dir / "t.ply");
-  const std::string header =
-      "ply\nformat binary_little_endian 1.0\ncomment written by isovdb\nelement vertex 4\n"
-      "property float x\nproperty float y\nproperty float z\nelement face 4\n"
-      "property list uchar uint vertex_indices\nend_header\n";
+  const std::string header = "ply\nformat binary_little_endian 1.0\ncomment written by isovdb\ncomment " +
+                             std::string(40, ' ') +
+                             "\nelement vertex 4\n"
+                             "property float x\nproperty float y\nproperty float z\nelement face 4\n"
+                             "property list uchar uint vertex_indices\nend_header\n";
   ASSERT_EQ(bytes.substr(0, header.size()), header);
   ASSERT_EQ(bytes.size(), header.size() + 4 * 12 + 4 * 13);
   // Second vertex's x (1.0f, little-endian) and the last face {1, 2, 3}.
@@ -251,7 +252,7 @@ TEST(Ply, FailedWriteLeavesNoFile) {
   EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
 }
 
-TEST(PlyStreamWriter, PiecesMakeTheSameFileAsWritePlyApartFromHeaderPadding) {
+TEST(PlyStreamWriter, PiecesMakeTheSameBytesAsWritePly) {
   test::TempDir dir;
   const Mesh mesh = tetrahedron();
   {
@@ -273,6 +274,16 @@ TEST(PlyStreamWriter, PiecesMakeTheSameFileAsWritePlyApartFromHeaderPadding) {
   EXPECT_EQ(back.triangles, mesh.triangles);
   // Only the temporaries' names hold the output's name: none is left behind.
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 1);
+  // Without a scale, streamed and whole are the same bytes (a run's output does not
+  // depend on which writer the method uses).
+  {
+    PlyStreamWriter writer(dir / "identity.ply", {1, 1, 1}, {0, 0, 0});
+    writer.addVertices(mesh.positions);
+    writer.addTriangles(mesh.triangles);
+    writer.commit();
+  }
+  writePly(dir / "whole.ply", mesh);
+  EXPECT_EQ(test::readFile(dir / "identity.ply"), test::readFile(dir / "whole.ply"));
 }
 
 TEST(PlyStreamWriter, ABadTriangleOrAnAbandonedWriterLeavesNoFile) {

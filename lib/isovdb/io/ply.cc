@@ -500,9 +500,11 @@ std::string readWholeFile(const std::filesystem::path& path) {
 
 namespace detail {
 
-std::string binaryPlyHeader(std::uint64_t vertices, std::uint64_t triangles, bool normals, std::size_t padding) {
+std::string binaryPlyHeader(std::uint64_t vertices, std::uint64_t triangles, bool normals) {
+  constexpr std::size_t kCountRoom = 2 * 20;  // the largest counts: 20 digits each
+  const std::size_t digits = std::to_string(vertices).size() + std::to_string(triangles).size();
   std::string header = "ply\nformat binary_little_endian 1.0\ncomment written by isovdb\n";
-  if (padding > 0) header += "comment " + std::string(padding, ' ') + "\n";
+  header += "comment " + std::string(kCountRoom + 2 - digits, ' ') + "\n";
   header += "element vertex " + std::to_string(vertices) + "\n";
   header += "property float x\nproperty float y\nproperty float z\n";
   if (normals) header += "property float nx\nproperty float ny\nproperty float nz\n";

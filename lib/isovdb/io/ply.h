@@ -54,10 +54,11 @@ mesh::Mesh readPly(const std::filesystem::path& path);
 namespace detail {
 
 /// @brief The header writePly and PlyStreamWriter write: binary little-endian,
-///        float x y z (+ nx ny nz), uchar/uint face lists. `padding` > 0 adds a
-///        comment line of that many spaces after "comment " (a header whose
-///        size must not change when the counts are rewritten).
-std::string binaryPlyHeader(std::uint64_t vertices, std::uint64_t triangles, bool normals, std::size_t padding = 0);
+///        float x y z (+ nx ny nz), uchar/uint face lists, and a comment line of
+///        spaces that keeps room for the largest counts: its size does not depend
+///        on the counts, so the streamed writer rewrites them in place, and a mesh
+///        written whole or streamed is the same bytes.
+std::string binaryPlyHeader(std::uint64_t vertices, std::uint64_t triangles, bool normals);
 
 }  // namespace detail
 

@@ -15,17 +15,10 @@
 
 namespace isovdb::io {
 
-namespace {
-
-/// Room for the largest counts (20 digits each), kept as padding while they are small.
-constexpr std::size_t kCountRoom = 2 * 20;
-
-}  // namespace
-
 PlyStreamWriter::PlyStreamWriter(const std::filesystem::path& path, std::array<double, 3> scale,
                                  std::array<double, 3> offset)
     : path_(path), scale_(scale), offset_(offset), file_(path), faces_(path) {
-  const std::string header = detail::binaryPlyHeader(0, 0, false, kCountRoom);
+  const std::string header = detail::binaryPlyHeader(0, 0, false);
   headerSize_ = header.size();
   file_.write(header);
 }
@@ -65,8 +58,7 @@ void PlyStreamWriter::commit() {
   std::vector<char> block(std::size_t{1} << 20);
   for (std::size_t n; (n = std::fread(block.data(), 1, block.size(), in.get())) > 0;) file_.write(block.data(), n);
   if (std::ferror(in.get())) throw IoError("cannot write '" + path_.string() + "': cannot read back its triangles");
-  const std::string digits = std::to_string(vertices_) + std::to_string(triangles_);
-  const std::string header = detail::binaryPlyHeader(vertices_, triangles_, false, kCountRoom - (digits.size() - 2));
+  const std::string header = detail::binaryPlyHeader(vertices_, triangles_, false);
   if (header.size() != headerSize_) throw IoError("cannot write '" + path_.string() + "': header size changed");
   file_.overwrite(0, header.data(), header.size());
   file_.commit();
