@@ -112,6 +112,26 @@ TEST(SelfIntersection, DuplicateTrianglesIntersect) {
   EXPECT_EQ(countSelfIntersections(triangles(p, {{0, 1, 2}, {2, 1, 0}})), 1);
 }
 
+// Copies of one triangle (same indices) are tested once for the whole set: #26's
+// 20,000 copies made 2e8 pair tests. The counts and the pair list stay those of
+// every pair tested on its own: the copies of a piercing triangle each pierce, and a
+// copy's neighbour across a shared edge is still not an intersection.
+TEST(SelfIntersection, CopiesOfATriangleCountEveryPairWithoutTestingEachPair) {
+  const std::vector<Vec3f> p = {{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {1, 1, -1}, {1, 1, 1}, {2, 2, 1}, {4, 4, 0}};
+  // {0,1,2} three times (two with other index orders), {3,4,5} (pierces it) twice,
+  // {1,6,2} (its neighbour across the edge 1-2) once.
+  const Mesh mesh = triangles(p, {{0, 1, 2}, {3, 4, 5}, {1, 2, 0}, {1, 6, 2}, {2, 0, 1}, {4, 3, 5}});
+  Pairs pairs;
+  EXPECT_EQ(countSelfIntersections(mesh, &pairs), 3 + 1 + 3 * 2);
+  const Pairs expected = {{0, 1}, {0, 2}, {0, 4}, {0, 5}, {1, 2}, {1, 4}, {1, 5}, {2, 4}, {2, 5}, {4, 5}};
+  EXPECT_EQ(pairs, expected);
+
+  constexpr std::int64_t kCopies = 200000;  // 2e10 pairs: as many tests would take hours
+  Mesh copies = triangles(p, std::vector<Triangle>(kCopies, Triangle{0, 1, 2}));
+  copies.triangles.push_back({1, 6, 2});
+  EXPECT_EQ(countSelfIntersections(copies), kCopies * (kCopies - 1) / 2);
+}
+
 TEST(SelfIntersection, UnweldedNeighboursTouch) {
   // Two triangles on one geometric edge, but with their own copies of its vertices.
   const Mesh mesh =

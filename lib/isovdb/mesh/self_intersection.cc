@@ -10,6 +10,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -83,6 +84,22 @@ Point toPoint(const Vec3f& p) { return Point(double(p[0]), double(p[1]), double(
 struct Item {
   Box box;
   std::uint32_t triangle = 0;
+  std::uint32_t copies = 1;  ///< triangles with this one's three indices (it stands for them all)
+};
+
+/// Triangles with the same three vertex indices meet every other triangle alike (the
+/// narrow phase reads indices and positions only), so each set is tested once: a mesh
+/// of many copies of one triangle costs time in its size, not its square.
+struct CopySets {
+  /// Every set of two or more, lowest triangle first, by that triangle.
+  std::map<std::uint32_t, std::vector<std::uint32_t>> sets;
+  /// Pairs inside the sets: each intersects (same indices, see the header).
+  std::int64_t pairsWithin = 0;
+
+  const std::vector<std::uint32_t>* find(std::uint32_t triangle) const {
+    const auto it = sets.find(triangle);
+    return it == sets.end() ? nullptr : &it->second;
+  }
 };
 
 /// BVH node. The left child of an inner node directly follows it.
@@ -207,8 +224,8 @@ class PairTest {
 /// reached exactly once, at the node where the two separate.
 class Collider {
  public:
-  Collider(const Bvh& bvh, const PairTest& test, bool keepPairs)
-      : nodes_(bvh.nodes()), items_(bvh.items()), test_(test), keepPairs_(keepPairs) {}
+  Collider(const Bvh& bvh, const PairTest& test, const CopySets& copies, bool keepPairs)
+      : nodes_(bvh.nodes()), items_(bvh.items()), test_(test), copies_(copies), keepPairs_(keepPairs) {}
 
   void run() {
     if (!nodes_.empty()) self(0);
@@ -272,13 +289,21 @@ class Collider {
     const Item& a = items_[i];
     const Item& b = items_[j];
     if (!overlaps(a.box, b.box) || !test_.intersect(a.triangle, b.triangle)) return;
-    ++count_.local();
-    if (keepPairs_) pairs_.local().emplace_back(std::min(a.triangle, b.triangle), std::max(a.triangle, b.triangle));
+    count_.local() += std::int64_t{a.copies} * b.copies;
+    if (!keepPairs_) return;
+    const std::uint32_t aloneA[1] = {a.triangle}, aloneB[1] = {b.triangle};
+    const std::vector<std::uint32_t>* setA = a.copies > 1 ? copies_.find(a.triangle) : nullptr;
+    const std::vector<std::uint32_t>* setB = b.copies > 1 ? copies_.find(b.triangle) : nullptr;
+    const std::span<const std::uint32_t> sa = setA ? std::span<const std::uint32_t>(*setA) : aloneA;
+    const std::span<const std::uint32_t> sb = setB ? std::span<const std::uint32_t>(*setB) : aloneB;
+    for (const std::uint32_t x : sa)
+      for (const std::uint32_t y : sb) pairs_.local().emplace_back(std::min(x, y), std::max(x, y));
   }
 
   const std::vector<Node>& nodes_;
   const std::vector<Item>& items_;
   const PairTest& test_;
+  const CopySets& copies_;
   const bool keepPairs_;
   tbb::combinable<std::int64_t> count_{[] { return std::int64_t{0}; }};
   tbb::enumerable_thread_specific<std::vector<Pair>> pairs_;
@@ -289,7 +314,7 @@ class Collider {
 /// the array are close in space.
 /// @throw InputError for a missing vertex or a non-finite coordinate (the
 ///        lowest offending triangle is named, whatever the thread count).
-std::vector<Item> collectItems(const Mesh& mesh) {
+std::vector<Item> collectItems(const Mesh& mesh, CopySets& copies) {
   const std::size_t n = mesh.triangles.size();
   constexpr std::uint64_t kSkipped = ~std::uint64_t{0};  // above every 63-bit Morton code
   struct Key {
@@ -344,6 +369,45 @@ std::vector<Item> collectItems(const Mesh& mesh) {
       });
   if (const std::size_t t = firstBad.load(); t < n) detail::throwInvalidTriangle(mesh, t, "countSelfIntersections");
 
+  // Sets of kept triangles with the same indices: the lowest stays, the others are skipped.
+  std::vector<std::uint32_t> copyCount(n, 1);
+  {
+    struct Indices {
+      std::array<std::uint32_t, 3> sorted;
+      std::uint32_t triangle;
+      bool operator<(const Indices& o) const {
+        return sorted < o.sorted || (sorted == o.sorted && triangle < o.triangle);
+      }
+    };
+    std::vector<Indices> byIndices;
+    byIndices.reserve(bounds.kept);
+    for (std::size_t t = 0; t < n; ++t) {
+      if (keys[t].code == kSkipped) continue;
+      std::array<std::uint32_t, 3> s = mesh.triangles[t];
+      std::sort(s.begin(), s.end());
+      byIndices.push_back({s, static_cast<std::uint32_t>(t)});
+    }
+    tbb::parallel_sort(byIndices.begin(), byIndices.end());
+    for (std::size_t i = 0; i < byIndices.size();) {
+      std::size_t j = i + 1;
+      while (j < byIndices.size() && byIndices[j].sorted == byIndices[i].sorted) ++j;
+      if (j - i > 1) {
+        const std::uint32_t first = byIndices[i].triangle;
+        std::vector<std::uint32_t>& set = copies.sets[first];
+        for (std::size_t k = i; k < j; ++k) {
+          set.push_back(byIndices[k].triangle);
+          if (k > i) keys[byIndices[k].triangle].code = kSkipped;
+        }
+        const auto k = static_cast<std::int64_t>(j - i);
+        copyCount[first] = static_cast<std::uint32_t>(k);
+        copies.pairsWithin += k * (k - 1) / 2;
+      }
+      i = j;
+    }
+  }
+  std::size_t kept = 0;
+  for (std::size_t t = 0; t < n; ++t) kept += keys[t].code != kSkipped;
+
   // Pass 2: Morton codes on a 2^21 lattice per axis, then one parallel sort.
   std::array<double, 3> scale{};
   for (int k = 0; k < 3; ++k) {
@@ -362,11 +426,11 @@ std::vector<Item> collectItems(const Mesh& mesh) {
   });
   tbb::parallel_sort(keys.begin(), keys.end());
 
-  std::vector<Item> items(bounds.kept);
+  std::vector<Item> items(kept);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, items.size(), 1 << 13),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       for (std::size_t i = r.begin(); i != r.end(); ++i)
-                        items[i] = {boxOfTriangle(keys[i].triangle), keys[i].triangle};
+                        items[i] = {boxOfTriangle(keys[i].triangle), keys[i].triangle, copyCount[keys[i].triangle]};
                     });
   return items;
 }
@@ -378,12 +442,19 @@ std::int64_t countSelfIntersections(const Mesh& mesh, std::vector<Pair>* pairs) 
     throw InputError("countSelfIntersections: the mesh has " + std::to_string(mesh.triangles.size()) +
                      " triangles; at most 2^32 - 2 are supported");
   if (pairs) pairs->clear();
-  const Bvh bvh(collectItems(mesh));
+  CopySets copies;
+  const Bvh bvh(collectItems(mesh, copies));
   const PairTest test(mesh);
-  Collider collider(bvh, test, pairs != nullptr);
+  Collider collider(bvh, test, copies, pairs != nullptr);
   collider.run();
-  if (pairs) *pairs = collider.pairs();
-  return collider.count();
+  if (pairs) {
+    *pairs = collider.pairs();
+    for (const auto& [first, set] : copies.sets)
+      for (std::size_t i = 0; i < set.size(); ++i)
+        for (std::size_t j = i + 1; j < set.size(); ++j) pairs->emplace_back(set[i], set[j]);
+    tbb::parallel_sort(pairs->begin(), pairs->end());
+  }
+  return collider.count() + copies.pairsWithin;
 }
 
 }  // namespace isovdb::mesh

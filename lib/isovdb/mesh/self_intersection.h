@@ -15,7 +15,8 @@
 /// - other pairs intersect when they have any point in common, touching included.
 /// Sharing is by vertex index: two vertices at the same position are distinct
 /// vertices, so weld first (weld.h). Two triangles with the same three indices
-/// intersect. Degenerate triangles (a repeated index, or three collinear
+/// intersect; such copies meet every other triangle alike, so each set of copies
+/// is tested once (k copies cost one test, not k^2/2). Degenerate triangles (a repeated index, or three collinear
 /// points) are skipped; validateMesh() counts them.
 ///
 /// All decisions use exact predicates (CGAL's Epick kernel) on the float
