@@ -65,8 +65,8 @@ void bindExtract(py::module_& m) {
                          "volume: a mask (its distance field is computed first), a distance field (from\n"
                          "distance_field() or a level-set .vdb) or a scalar field (from_numpy of floats, SEG-Y).\n"
                          "Every setting is the CLI flag of the same name with the same default, except method:\n"
-                         "'adaptive' here (closed, manifold, free of self-intersections away from the data\n"
-                         "boundary's caps, far fewer triangles; within max_error=1 voxel of the full-resolution\n"
+                         "'adaptive' here (closed, manifold, free of self-intersections, on the data boundary's\n"
+                         "caps too, far fewer triangles; within max_error=1 voxel of the full-resolution\n"
                          "surface), 'vdb' (OpenVDB's volumeToMesh) on the CLI.");
 }
 

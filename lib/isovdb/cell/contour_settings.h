@@ -11,6 +11,7 @@
 /// struct (octree::OctreeOptions: depths and refinement criteria).
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string_view>
 
@@ -49,6 +50,9 @@ constexpr std::optional<RegularTopology> parseRegularTopology(std::string_view n
   return valueNamed(kRegularTopologyNames, name);
 }
 
+/// An inclusive box of global index coordinates: {min, max}.
+using DataBox = std::array<std::array<int, 3>, 2>;
+
 /// What the octree, the contouring and the stitching of one field share.
 struct ContourSettings {
   ContourMethod method = ContourMethod::Adaptive;
@@ -69,6 +73,13 @@ struct ContourSettings {
   bool intersectionFree = true;
   /// Regular: the reading of ambiguous cells.
   RegularTopology topology = RegularTopology::Voxels;
+  /// The sampled data's box (the outermost samples), when the data have one. Outside it
+  /// reads as outside, so a surface that leaves the data is closed by a cap beyond the
+  /// face. Adaptive mode makes that cap while contouring: samples beyond the box read as
+  /// far outside (pipeline/octree_contour.cc), leaves across a face are refined to one
+  /// voxel (octree/build.cc) and their vertices kept within 2 * kInteriorMargin of it
+  /// (contour/adaptive_contour.cc), so Ju–Udeshi's test sees the cap's final positions.
+  std::optional<DataBox> dataBox{};
 };
 
 }  // namespace isovdb::cell

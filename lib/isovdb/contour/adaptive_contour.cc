@@ -5,8 +5,10 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,32 @@
 #include "isovdb/octree/morton.h"
 
 namespace isovdb::contour {
+
+namespace {
+
+/// A cap's vertex (its leaf lies beyond a face of the data's box) moved to within
+/// 2 * kInteriorMargin of that face, still strictly inside its leaf: the cap is then flat
+/// on the face to that margin before the triangulation is chosen, and no vertex moves
+/// after it (cell::ContourSettings::dataBox).
+Vec3d besideDataBox(Vec3d p, const octree::OctreeLeaf& leaf, const std::array<int, 3>& origin,
+                    const std::optional<cell::DataBox>& box) {
+  if (!box) return p;
+  const double m = 2 * kInteriorMargin * leaf.size;
+  // The float nearest face - m on the leaf's side of the face (the mesh stores floats).
+  const auto beside = [m](int face, double side) {
+    const auto f = static_cast<float>(face + side * m);
+    return static_cast<double>(
+        f != static_cast<float>(face) ? f : std::nextafter(static_cast<float>(face), static_cast<float>(face + side)));
+  };
+  for (int a = 0; a < 3; ++a) {
+    const int lo = origin[a] + leaf.origin[a], hi = lo + leaf.size;
+    if (hi == (*box)[0][a]) p[a] = std::max(p[a], beside((*box)[0][a], -1.0));
+    if (lo == (*box)[1][a]) p[a] = std::min(p[a], beside((*box)[1][a], 1.0));
+  }
+  return p;
+}
+
+}  // namespace
 
 MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
                                      const cell::ContourSettings& options, AdaptiveContourStats* stats) {
@@ -40,7 +68,8 @@ MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leafCount, 256), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i)
       for (std::uint32_t v = groups.firstVertex[i]; v < groups.firstVertex[i + 1]; ++v)
-        cellPoints[v] = cellPointInside(positions[v], tree.leaf(i), samples.origin);
+        cellPoints[v] = besideDataBox(cellPointInside(positions[v], tree.leaf(i), samples.origin), tree.leaf(i),
+                                      samples.origin, options.dataBox);
   });
   // Crossing on edge e of a leaf, in voxels from the edge's start corner (NaN: none).
   auto crossing = [&](std::size_t leafIndex, int e) -> double {

@@ -188,11 +188,11 @@ class Builder {
   /// The cell [origin, origin + size] (meta-cell offsets) reaches past a face of the data's
   /// box, from the face's plane on: it holds samples on both sides of it, or lies just beyond.
   bool crossesDataBoxFace(const std::array<int, 3>& origin, int size) const noexcept {
-    if (!options_.dataBox || size <= 1) return false;
+    if (!settings_.dataBox || size <= 1) return false;
     for (int a = 0; a < 3; ++a) {
       const int lo = origin[a] + samples_.origin[a], hi = lo + size;
-      if (lo < (*options_.dataBox)[0][a] && hi >= (*options_.dataBox)[0][a]) return true;
-      if (lo <= (*options_.dataBox)[1][a] && hi > (*options_.dataBox)[1][a]) return true;
+      if (lo < (*settings_.dataBox)[0][a] && hi >= (*settings_.dataBox)[0][a]) return true;
+      if (lo <= (*settings_.dataBox)[1][a] && hi > (*settings_.dataBox)[1][a]) return true;
     }
     return false;
   }

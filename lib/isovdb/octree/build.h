@@ -59,13 +59,6 @@ struct OctreeOptions {
   /// farther than this (voxels) from the plane of its dual vertex (surface_deviation.h):
   /// the adaptive mesh then stays within about this distance of the regular mesh; <= 0 off.
   float maxError = -1.0f;
-  /// The sampled data's box (global index coordinates, the outermost samples), when the
-  /// data have one: adaptive leaves the surface crosses on the far side of a box face are
-  /// refined to the finest size. Outside the box reads as outside, so a surface leaving the
-  /// data is closed by a cap within one voxel beyond the face, which pipeline/data_boundary
-  /// flattens onto it; a coarse leaf there would put its vertex anywhere across the face,
-  /// and flattening its triangles folded them over the cap's.
-  std::optional<std::array<std::array<int, 3>, 2>> dataBox{};
   /// Cells split whatever the criteria say (sorted Morton keys): where the mesh of an
   /// earlier pass broke the error bound (contour/error_bound.h).
   std::vector<MortonKey> forcedSplits{};

@@ -12,14 +12,13 @@ namespace {
 
 constexpr std::uint32_t kUnused = std::numeric_limits<std::uint32_t>::max();
 
-/// True when the three vertices lie on one face of the box.
+/// True when the three vertices lie on or beyond one face of the box.
 bool onOneFace(const mesh::Mesh& mesh, const mesh::Triangle& tri, const volume::IndexBox& box) {
+  const auto all = [&](auto&& onFace) { return onFace(tri[0]) && onFace(tri[1]) && onFace(tri[2]); };
   for (int a = 0; a < 3; ++a) {
-    for (const int plane : {box.min[a], box.max[a]}) {
-      const auto p = static_cast<float>(plane);
-      if (mesh.positions[tri[0]][a] == p && mesh.positions[tri[1]][a] == p && mesh.positions[tri[2]][a] == p)
-        return true;
-    }
+    const auto lo = static_cast<float>(box.min[a]), hi = static_cast<float>(box.max[a]);
+    if (all([&](std::uint32_t v) { return mesh.positions[v][a] <= lo; })) return true;
+    if (all([&](std::uint32_t v) { return mesh.positions[v][a] >= hi; })) return true;
   }
   return false;
 }
@@ -45,9 +44,11 @@ void removeUnusedVertices(mesh::Mesh& mesh) {
 
 }  // namespace
 
-std::int64_t applyDataBoundary(mesh::Mesh& mesh, const volume::IndexBox& box, BoundaryMode mode) {
-  for (mesh::Vec3f& p : mesh.positions)
-    for (int a = 0; a < 3; ++a) p[a] = std::clamp(p[a], static_cast<float>(box.min[a]), static_cast<float>(box.max[a]));
+std::int64_t applyDataBoundary(mesh::Mesh& mesh, const volume::IndexBox& box, BoundaryMode mode, bool flatten) {
+  if (flatten)
+    for (mesh::Vec3f& p : mesh.positions)
+      for (int a = 0; a < 3; ++a)
+        p[a] = std::clamp(p[a], static_cast<float>(box.min[a]), static_cast<float>(box.max[a]));
   if (mode == BoundaryMode::Cap) return 0;
   const auto before = static_cast<std::int64_t>(mesh.triangles.size());
   std::erase_if(mesh.triangles, [&](const mesh::Triangle& tri) { return onOneFace(mesh, tri, box); });

@@ -6,17 +6,18 @@
 ///
 /// Outside the sampled box counts as outside the object (the quiet side of an
 /// amplitude, the background of a mask), so every contouring method closes a
-/// surface that leaves the data with a cap just beyond the last samples. Here
-/// that cap is either flattened onto the boundary or dropped:
-/// - Cap: vertices beyond the box are moved onto it (clamped per axis). The mesh
-///   stays closed and its caps lie exactly on the box faces.
-/// - Open: the same, then the cap triangles (all three vertices on one box face)
-///   are dropped and unused vertices removed. The mesh's boundary edges lie on
-///   the box faces, and only there.
-/// The box is the sampled box's sample positions, [min, max] in index space: the
-/// outermost traces and samples, not half a voxel beyond. Adaptive mode refines its
-/// leaves across a box face to one voxel (octree::OctreeOptions::dataBox), so a cap's
-/// vertices move by less than a voxel here and its triangles do not fold over.
+/// surface that leaves the data with a cap just beyond the last samples. The
+/// box is the sampled box's sample positions, [min, max] in index space: the
+/// outermost traces and samples, not half a voxel beyond.
+/// - Cap: the mesh stays closed and its caps lie on the box faces. Adaptive mode
+///   makes them flat on the faces while contouring (cell::ContourSettings::dataBox:
+///   every vertex within 2 * 10^-3 voxel beyond them), so nothing moves afterwards
+///   and Ju–Udeshi's guarantee holds on the caps too. The other methods' caps lie up
+///   to a voxel beyond and are flattened here: vertices beyond the box are moved
+///   onto it (clamped per axis), which can fold their triangles.
+/// - Open: the same, then the cap triangles (all three vertices on or beyond one
+///   box face) are dropped and unused vertices removed. The mesh's boundary edges
+///   lie on the box faces (adaptive mode: within 2 * 10^-3 voxel), and only there.
 #pragma once
 
 #include <cstdint>
@@ -43,10 +44,11 @@ constexpr std::optional<BoundaryMode> parseBoundaryMode(std::string_view name) {
   return valueNamed(kBoundaryModeNames, name);
 }
 
-/// Applies `mode` to a mesh in index space (before indexToWorld). Normals of moved
-/// vertices are kept. Returns the number of triangles dropped (0 for Cap).
-/// O(triangles + vertices).
-std::int64_t applyDataBoundary(mesh::Mesh& mesh, const volume::IndexBox& box, BoundaryMode mode);
+/// Applies `mode` to a mesh in index space (before indexToWorld): `flatten` moves the
+/// vertices beyond the box onto it first (false when the contouring made the caps).
+/// Normals of moved vertices are kept. Returns the number of triangles dropped (0 for
+/// Cap). O(triangles + vertices).
+std::int64_t applyDataBoundary(mesh::Mesh& mesh, const volume::IndexBox& box, BoundaryMode mode, bool flatten = true);
 
 /// Cap mode piece by piece: clamps the positions of every batch into the box
 /// (when there is one) and forwards everything to `target`, so a streamed mesh

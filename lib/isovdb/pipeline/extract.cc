@@ -92,8 +92,10 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
   // Caps are flattened piece by piece (the mesh still streams); dropping them
   // (Open) needs the whole mesh, so it is collected first.
   const bool open = box && options.boundary == BoundaryMode::Open;
+  // Adaptive mode makes its caps flat on the box while contouring; the others' are flattened here.
+  const bool capsMade = method == ContourMethod::Adaptive;
   mesh::MeshCollector whole;
-  CappingSink capped(open ? static_cast<mesh::MeshSink&>(whole) : sink, box);
+  CappingSink capped(open ? static_cast<mesh::MeshSink&>(whole) : sink, capsMade ? std::nullopt : box);
   if (method == ContourMethod::Vdb) {
     Statistics::StageTimer timer(stats, "contour");
     const mesh::Mesh mesh =
@@ -104,7 +106,7 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
     cell::ContourSettings settings = options.contour;
     settings.topology = regularTopologyFor(options.regularTopology, kind);
     octree::OctreeOptions tree = options.octree;
-    if (box) tree.dataBox = {{box->min, box->max}};
+    if (box) settings.dataBox = {{box->min, box->max}};
     if (byLayers)
       contourMaskWithOctree(volume, options.distance, settings, tree, options.metaCellSize, capped, interrupter, stats);
     else
@@ -112,7 +114,7 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
   }
   std::int64_t dropped = 0;
   if (open) {
-    dropped = applyDataBoundary(whole.mesh, *box, BoundaryMode::Open);
+    dropped = applyDataBoundary(whole.mesh, *box, BoundaryMode::Open, !capsMade);
     sink.addVertices(whole.mesh.positions);
     sink.addTriangles(whole.mesh.triangles);
   }

@@ -39,12 +39,21 @@ int nextPowerOfTwo(int v) {
 }
 
 /// What the engine reads for every meta-cell: the shared settings, the octree's own
-/// knobs and the partition's size.
+/// knobs, the partition's size and the largest |value| a sample can hold (every block
+/// derives the same far-outside value from it, so blocks agree on their seams).
 struct Engine {
   const cell::ContourSettings& settings;
   const octree::OctreeOptions& tree;
   int metaCellSize;
+  float valueBound = 0.0f;
 };
+
+/// The largest |value| a sample of `field` reads: its active values' and its background's.
+float valueBound(const volume::Volume& field) {
+  const volume::GridStats stats = field.stats();
+  return std::max(
+      {std::abs(stats.minValue), std::abs(stats.maxValue), std::abs(volume::fieldGrid(field).background())});
+}
 
 /// Figures summed over meta-cells (CPU seconds, counts).
 struct MetaCellTotals {
@@ -122,11 +131,53 @@ contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const E
   }
 }
 
-/// The engine's inside is value <= iso; a scalar's inside is above the isovalue.
-float engineIso(volume::VolumeKind kind, float iso, cell::MetaCellSamples& samples) {
-  if (kind != volume::VolumeKind::Scalar) return iso;
-  for (float& v : samples.values) v = -v;
-  return -iso;
+/// Samples beyond the data's box read as far outside: the engine's iso plus 10^4 times the
+/// deepest inside value any sample can have (`bound` + |iso|). An edge from the last sample inside to one beyond the
+/// box then crosses within 10^-4 voxel of the box face, so the contouring itself makes the cap, flat on the face
+/// (contour/adaptive_contour.cc keeps its vertices within 2 * 10^-3 voxel beyond it), and nothing moves a vertex
+/// afterwards. Flattening a cap that lay up to a voxel beyond onto the face, after Ju–Udeshi's test had passed the
+/// positions before, folded its triangles (F3 above 3000: 7 self-intersecting pairs).
+void farOutsideBeyondDataBox(cell::MetaCellSamples& samples, float iso, float bound,
+                             const std::optional<cell::DataBox>& box) {
+  if (!box) return;
+  const int lo = -samples.apron, hi = samples.size + samples.apron;
+  bool beyond = false;
+  for (int a = 0; a < 3; ++a)
+    beyond = beyond || samples.origin[a] + lo < (*box)[0][a] || samples.origin[a] + hi > (*box)[1][a];
+  if (!beyond) return;
+  // At most 1e18 (hostile values): the gradients' squares stay finite floats.
+  const float far = iso + std::min(1e4f * (bound + std::abs(iso) + 1.0f), 1e18f);
+  for (int k = lo; k <= hi; ++k)
+    for (int j = lo; j <= hi; ++j)
+      for (int i = lo; i <= hi; ++i) {
+        const std::array<int, 3> g{samples.origin[0] + i, samples.origin[1] + j, samples.origin[2] + k};
+        bool outside = false;
+        for (int a = 0; a < 3; ++a) outside = outside || g[a] < (*box)[0][a] || g[a] > (*box)[1][a];
+        if (outside) samples.values[samples.indexOf(i, j, k)] = far;
+      }
+}
+
+/// The box whose caps the contouring makes: adaptive mode's (regular mode's caps are
+/// flattened onto the box afterwards, pipeline/data_boundary.h).
+std::optional<cell::DataBox> capsBox(const cell::ContourSettings& settings) {
+  return settings.method == cell::ContourMethod::Adaptive ? settings.dataBox : std::nullopt;
+}
+
+std::optional<volume::IndexBox> capsIndexBox(const cell::ContourSettings& settings) {
+  const std::optional<cell::DataBox> box = capsBox(settings);
+  if (!box) return std::nullopt;
+  return volume::IndexBox{(*box)[0], (*box)[1]};
+}
+
+/// The engine's inside is value <= iso; a scalar's inside is above the isovalue. Returns
+/// the iso the engine reads the block at, after the data box's caps are set up.
+float engineIso(volume::VolumeKind kind, float iso, const Engine& engine, cell::MetaCellSamples& samples) {
+  if (kind == volume::VolumeKind::Scalar) {
+    for (float& v : samples.values) v = -v;
+    iso = -iso;
+  }
+  farOutsideBeyondDataBox(samples, iso, engine.valueBound, capsBox(engine.settings));
+  return iso;
 }
 
 void recordTotals(const MetaCellTotals& totals, const cell::ContourSettings& options, Statistics::Json& section) {
@@ -167,7 +218,13 @@ void recordTotals(const MetaCellTotals& totals, const cell::ContourSettings& opt
 void contourSingleBlock(const volume::Volume& field, const Engine& engine, mesh::MeshSink& sink,
                         Interrupter* interrupter, Statistics* stats) {
   openvdb::CoordBBox band;
-  if (!volume::fieldGrid(field).tree().evalActiveVoxelBoundingBox(band)) return;
+  const bool active = volume::fieldGrid(field).tree().evalActiveVoxelBoundingBox(band);
+  // Where the background is inside, caps may close regions without a voxel: the block spans the box.
+  if (const auto box = capsIndexBox(engine.settings); box && volume::backgroundInside(field, engine.settings.iso))
+    band.expand(openvdb::CoordBBox(openvdb::Coord(box->min[0], box->min[1], box->min[2]),
+                                   openvdb::Coord(box->max[0], box->max[1], box->max[2])));
+  else if (!active)
+    return;
   std::array<int, 3> origin;
   int extent = 1;
   for (int a = 0; a < 3; ++a) {
@@ -189,7 +246,7 @@ void contourSingleBlock(const volume::Volume& field, const Engine& engine, mesh:
   {
     Statistics::StageTimer timer(stats, "read_meta_cells");
     volume::readBlock(field, origin, size, samples);
-    iso = engineIso(field.kind(), iso, samples);
+    iso = engineIso(field.kind(), iso, engine, samples);
   }
   contour::MetaCellMesh block;
   {
@@ -266,7 +323,7 @@ class MetaCellRun {
                                               const auto t0 = std::chrono::steady_clock::now();
                                               cell::MetaCellSamples& samples = sampleBlocks_.local();
                                               read(cells[job->position], samples);
-                                              const float iso = engineIso(kind_, options.iso, samples);
+                                              const float iso = engineIso(kind_, options.iso, engine_, samples);
                                               job->totals.readSeconds += secondsSince(t0);
                                               job->contoured = volume::hasSignChange(samples, iso);
                                               if (job->contoured)
@@ -344,7 +401,7 @@ void contourMetaCells(const volume::Volume& field, const Engine& engine, mesh::M
   volume::MetaCellPartition partition;
   {
     Statistics::StageTimer timer(stats, "partition");
-    partition = volume::partitionMetaCells(field, s, engine.settings.iso);
+    partition = volume::partitionMetaCells(field, s, engine.settings.iso, capsIndexBox(engine.settings));
   }
   const int apron = metaCellApron(engine);
   MetaCellRun run(engine, field.kind(), sink);
@@ -414,7 +471,7 @@ void contourWithOctree(const volume::Volume& field, const cell::ContourSettings&
     throw InputError("'" + field.name() + "': octree contouring needs a distance field or a scalar field");
   if (settings.method == cell::ContourMethod::Vdb)
     throw InputError("octree contouring: the method is vdb; expected regular or adaptive");
-  const Engine engine{settings, tree, metaCellSize};
+  const Engine engine{settings, tree, metaCellSize, valueBound(field)};
   if (metaCellSize == 0)
     contourSingleBlock(field, engine, sink, interrupter, stats);
   else
@@ -425,11 +482,11 @@ octree::LinearOctree metaCellOctree(const volume::Volume& field, const cell::Con
                                     const octree::OctreeOptions& tree, int metaCellSize,
                                     const std::array<int, 3>& index, octree::OctreeBuildStats* stats,
                                     bool* hasSignChange, Interrupter* interrupter) {
-  const Engine engine{settings, tree, metaCellSize};
+  const Engine engine{settings, tree, metaCellSize, valueBound(field)};
   cell::MetaCellSamples samples;
   volume::readMetaCell(field, index, metaCellSize, samples, metaCellApron(engine));
   cell::ContourSettings blockSettings = settings;
-  blockSettings.iso = engineIso(field.kind(), settings.iso, samples);
+  blockSettings.iso = engineIso(field.kind(), settings.iso, engine, samples);
   if (hasSignChange) *hasSignChange = volume::hasSignChange(samples, blockSettings.iso);
   if (settings.method != cell::ContourMethod::Adaptive || tree.maxError <= 0.0f)
     return octree::buildContourTree(samples, blockSettings, tree, stats, interrupter);
@@ -450,7 +507,9 @@ void contourMaskWithOctree(const volume::Volume& mask, const volume::DistanceFie
     throw InputError("contouring by meta-cell layers: the distance field must be the interface band");
   if (settings.method == cell::ContourMethod::Vdb)
     throw InputError("octree contouring: the method is vdb; expected regular or adaptive");
-  contourMaskMetaCells(mask, distance, Engine{settings, tree, metaCellSize}, sink, interrupter, stats);
+  // The band's samples are distances in voxels, ±halfWidth beyond it.
+  const Engine engine{settings, tree, metaCellSize, static_cast<float>(distance.halfWidth)};
+  contourMaskMetaCells(mask, distance, engine, sink, interrupter, stats);
 }
 
 mesh::Mesh contourWithOctree(const volume::Volume& field, const cell::ContourSettings& settings,

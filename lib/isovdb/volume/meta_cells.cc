@@ -18,7 +18,12 @@ bool isPowerOfTwo(int v) { return v > 0 && (v & (v - 1)) == 0; }
 
 }  // namespace
 
-MetaCellPartition partitionMetaCells(const Volume& field, int size, float iso) {
+bool backgroundInside(const Volume& field, float iso) {
+  const float background = fieldGrid(field).background();
+  return field.kind() == VolumeKind::Scalar ? background >= iso : background <= iso;
+}
+
+MetaCellPartition partitionMetaCells(const Volume& field, int size, float iso, const std::optional<IndexBox>& capsBox) {
   const FieldGrid& grid = fieldGrid(field);
   if (!isPowerOfTwo(size) || size < 8 || size > 4096)
     throw InputError("meta-cell size " + std::to_string(size) + " must be a power of two in 8..4096");
@@ -56,6 +61,16 @@ MetaCellPartition partitionMetaCells(const Volume& field, int size, float iso) {
   if (!distance)
     for (auto tile = grid.tree().cbeginValueOn(); tile; ++tile)
       if (!tile.isVoxelValue()) addBox(tile.getBoundingBox());
+  if (capsBox && backgroundInside(field, iso))
+    for (int a = 0; a < 3; ++a) {
+      const openvdb::Coord lo(capsBox->min[0], capsBox->min[1], capsBox->min[2]);
+      const openvdb::Coord hi(capsBox->max[0], capsBox->max[1], capsBox->max[2]);
+      openvdb::Coord faceHi = hi, faceLo = lo;
+      faceHi[a] = lo[a];  // the face at the box's minimum on axis a
+      faceLo[a] = hi[a];  // and at its maximum
+      addBox(openvdb::CoordBBox(lo, faceHi));
+      addBox(openvdb::CoordBBox(faceLo, hi));
+    }
   for (const auto& zyx : cells) partition.cells.push_back({zyx[2], zyx[1], zyx[0]});
   return partition;
 }

@@ -15,9 +15,11 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "isovdb/cell/meta_cell_samples.h"
+#include "isovdb/volume/sampled_box.h"
 #include "isovdb/volume/volume.h"
 
 namespace isovdb::volume {
@@ -36,9 +38,18 @@ struct MetaCellPartition {
 /// crossing lies in such a leaf); tiles are never read. Scalar field (values
 /// may jump by any amount): those touching any leaf or active tile, grown by one
 /// voxel. Callers still test each meta-cell's samples (hasSignChange).
+/// `capsBox`: the data's box when the contouring makes caps on it (outside it reads as
+/// outside); where the grid's background is inside (a scalar's background at or above
+/// the isovalue), the meta-cells along the box's faces are added too, since a cap may
+/// close an inside region that holds no leaf.
 /// @pre field is a DistanceField or Scalar volume; size is a power of two in [8, 4096].
 /// @throw InputError otherwise.
-MetaCellPartition partitionMetaCells(const Volume& field, int size, float iso = 0.f);
+MetaCellPartition partitionMetaCells(const Volume& field, int size, float iso = 0.f,
+                                     const std::optional<IndexBox>& capsBox = std::nullopt);
+
+/// True when the grid's background (inactive space) lies inside the surface at `iso`:
+/// a scalar's at or above it, a distance field's at or below it.
+bool backgroundInside(const Volume& field, float iso);
 
 /// The value of every voxel of the leaf-sized block at this origin (multiples of 8)
 /// where the grid holds no leaf; empty: the grid's own tile or background value.
