@@ -27,7 +27,7 @@ namespace isovdb::cli {
 
 void addMorphCommand(CLI::App& app, Context& context) {
   struct State {
-    std::string input, output, statsPath, vdbPath, saveSlices, heights, method = "vdb";
+    std::string input, output, statsPath, vdbPath, saveSlices, heights, method = "adaptive";
     std::string interpolation = "levelset", progress = "exponential";
     double spacing = 0, pixelSize = 1, zStep = 0;
     std::int64_t maxPixels = morph::SliceDirectoryOptions{}.maxPixels;
@@ -62,7 +62,8 @@ void addMorphCommand(CLI::App& app, Context& context) {
       ->capture_default_str();
   command->add_option("--slice-offset", state->volumeSlices.offset, "Volume input: first labelled z-slice")
       ->capture_default_str();
-  command->add_option("--method", state->method, "Contouring: vdb, regular or adaptive")->capture_default_str();
+  command->add_option("--method", state->method, "Contouring: adaptive, regular or vdb (OpenVDB's volumeToMesh)")
+      ->capture_default_str();
   command->add_flag("--pls", state->pls,
                     "Particle level set correction (Enright et al.; paper 002 Alg. 3.2-3.3; much slower)");
   command->add_flag("!--no-centring", state->options.pair.centre,

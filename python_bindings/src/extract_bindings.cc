@@ -15,18 +15,9 @@ namespace isovdb::python {
 
 namespace {
 
-/// extract()'s choices before any keyword: the CLI's, except the method. The CLI keeps
-/// OpenVDB's volumeToMesh as its reference default; a notebook gets the closed,
-/// intersection-free adaptive mesh.
-pipeline::ExtractChoices pythonChoices() {
-  pipeline::ExtractChoices result;
-  result.method = std::string(pipeline::contourMethodName(cell::ContourMethod::Adaptive));
-  return result;
-}
-
 py::object extract(const PyVolume& volume, const py::dict& settings, const py::object& progress,
                    const std::optional<std::filesystem::path>& output) {
-  pipeline::ExtractChoices choices = pythonChoices();
+  pipeline::ExtractChoices choices;
   assignSettings(pipeline::extractSettings(choices), settings);
   const pipeline::ExtractOptions options = choices.resolve(/*keywords=*/true);
   CallbackProgress callback(progress);
@@ -47,7 +38,7 @@ py::object extract(const PyVolume& volume, const py::dict& settings, const py::o
 void bindExtract(py::module_& m) {
   m.def("_extract", &extract, py::arg("volume"), py::arg("settings"), py::kw_only(), py::arg("progress"),
         py::arg("output"), "extract()'s implementation: the settings as a dict of keywords.");
-  pipeline::ExtractChoices defaults = pythonChoices();
+  pipeline::ExtractChoices defaults;
   defineSettingsFunction(m, "extract", "_extract", pipeline::extractSettings(defaults),
                          {{"progress", "None",
                            "progress: callable(stage: str, percent: int), called from worker threads (with the GIL)\n"
@@ -64,10 +55,10 @@ void bindExtract(py::module_& m) {
                          "Contours a volume into a closed triangle Mesh in world space (the `isovdb extract` job).\n\n"
                          "volume: a mask (its distance field is computed first), a distance field (from\n"
                          "distance_field() or a level-set .vdb) or a scalar field (from_numpy of floats, SEG-Y).\n"
-                         "Every setting is the CLI flag of the same name with the same default, except method:\n"
-                         "'adaptive' here (closed, manifold, free of self-intersections, on the data boundary's\n"
-                         "caps too, far fewer triangles; within max_error=1 voxel of the full-resolution\n"
-                         "surface), 'vdb' (OpenVDB's volumeToMesh) on the CLI.");
+                         "Every setting is the CLI flag of the same name with the same default: method='adaptive'\n"
+                         "(closed, manifold, free of self-intersections, on the data boundary's caps too, far\n"
+                         "fewer triangles; within max_error=1 voxel of the full-resolution surface), 'regular'\n"
+                         "(the mask's topology) or 'vdb' (OpenVDB's volumeToMesh, the reference).");
 }
 
 }  // namespace isovdb::python

@@ -15,9 +15,6 @@ import isovdb
 from conftest import ROOT, ball
 
 NOT_SETTINGS = {"volume", "progress", "output", "grid_name"}
-# The one documented difference: the CLI keeps OpenVDB's volumeToMesh as its reference
-# default, Python defaults to the adaptive engine.
-CLI_ONLY_DEFAULTS = {"method": "vdb"}
 
 
 def settings_of(function):
@@ -52,22 +49,17 @@ def python_value(text):
         return text
 
 
-def expected_cli(settings):
-    return {name: CLI_ONLY_DEFAULTS.get(name, default) for name, default in settings.items()}
-
-
 def test_extract_keywords_are_the_cli_flags_with_their_defaults(cli):
     settings = settings_of(isovdb.extract)
     assert len(settings) >= 18 and settings["method"] == "adaptive"
     flags = cli_defaults(cli, "extract")
     listed = {name: flags[name] for name in flags if name in settings}
-    assert listed == expected_cli(settings)
+    assert listed == settings
     assert list(listed) == list(settings), "the CLI lists the settings in the table's order"
 
 
 def test_octree_inspector_takes_every_extract_setting(cli):
-    # `isovdb octree` builds the tree extract builds: same flags, same defaults, except
-    # that its method defaults to an octree method.
+    # `isovdb octree` builds the tree extract builds: same flags, same defaults.
     flags = cli_defaults(cli, "octree")
     settings = settings_of(isovdb.extract)
     assert {name: flags.get(name, "missing") for name in settings} == settings
@@ -107,7 +99,7 @@ def test_documentation_table_matches_the_cli(cli):
     assert [keyword for _, keyword in [(f, k) for f, k, _ in rows]] == list(settings)
     for flag, keyword, default in rows:
         assert flag.replace("-", "_") == keyword
-        assert python_value(default) == expected_cli(settings)[keyword], keyword
+        assert python_value(default) == settings[keyword], keyword
 
 
 def test_docstring_lists_every_setting_with_its_default():

@@ -37,11 +37,11 @@ inline constexpr float kDefaultMaxError = 1.0f;
 
 /// Every setting of `isovdb extract` (each field is a CLI flag and a Python keyword).
 struct ExtractOptions {
-  /// The method (vdb by default: OpenVDB's reference; Python's default is adaptive),
-  /// the isovalue (voxels on a distance field, 0 = the mask boundary, > 0 grows the
-  /// surface; the field's units on a scalar volume) and what the octree, contouring
-  /// and stitching share.
-  cell::ContourSettings contour{.method = ContourMethod::Vdb};
+  /// The method (adaptive by default, the CLI's and Python's: our engine within
+  /// kDefaultMaxError; vdb is OpenVDB's volumeToMesh, the reference), the isovalue (voxels on a distance field, 0 = the
+  /// mask boundary, > 0 grows the surface; the field's units on a scalar volume) and what the octree, contouring and
+  /// stitching share.
+  cell::ContourSettings contour{.method = ContourMethod::Adaptive};
   /// Octree methods: the octree's own knobs (depths, QEF, error bound and feature criteria).
   octree::OctreeOptions octree{.maxError = kDefaultMaxError};
   /// Octree methods: S, voxels per meta-cell edge (power of two, 16..512; 128 = VDB

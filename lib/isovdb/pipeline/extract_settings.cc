@@ -63,9 +63,9 @@ std::vector<Setting> extractSettings(ExtractChoices& c) {
   ExtractOptions& o = c.options;
   std::vector<Setting> result{
       {"method",
-       "Contouring method: vdb (OpenVDB's volumeToMesh, the reference), regular (octree + manifold DMC: "
-       "closed, manifold), adaptive (adaptive octree + dual contouring with Ju-Udeshi fans: far fewer "
-       "triangles)",
+       "Contouring method: adaptive (adaptive octree + dual contouring with Ju-Udeshi fans: closed, "
+       "manifold, far fewer triangles, within --max-error of the full-resolution surface), regular (octree + "
+       "manifold DMC: closed, manifold, the mask's topology), vdb (OpenVDB's volumeToMesh, the reference)",
        &c.method},
       {"iso",
        "Isovalue: voxels on distance fields (0 = the mask boundary, > 0 grows the surface), field units on "
