@@ -8,6 +8,8 @@
 #include "isovdb/errors.h"
 #include "isovdb/io/atomic_file.h"
 #include "isovdb/io/mesh_file.h"
+#include "isovdb/io/path_util.h"
+#include "isovdb/io/ply.h"
 #include "isovdb/io/png_file.h"
 #include "isovdb/mesh/preview.h"
 #include "isovdb/pipeline/extract.h"
@@ -58,7 +60,9 @@ void addExtractCommand(CLI::App& app, Context& context) {
     // is never held whole); --check needs the mesh in memory. The input is moved in so
     // that a mask is freed once its distance field exists.
     std::uint64_t triangles = 0;
-    if (!state->check) {
+    // A picture of a streamed .ply reads it back; an .obj with a picture is held like --check.
+    const bool holdMesh = state->check || (!state->previewPath.empty() && io::lowerExtension(state->output) != ".ply");
+    if (!holdMesh) {
       triangles = pipeline::extractToFile(std::move(input), options, state->output, context.interrupter(), &stats);
     } else {
       mesh = pipeline::extractMesh(std::move(input), options, context.interrupter(), &stats);
@@ -82,8 +86,10 @@ void addExtractCommand(CLI::App& app, Context& context) {
     }
     if (!state->previewPath.empty()) {
       pipeline::Statistics::StageTimer timer(&stats, "preview");
-      // A streamed mesh was never held whole: the picture reads it back.
-      const mesh::PreviewImage image = mesh::renderPreview(state->check ? mesh : io::readMesh(state->output));
+      // A streamed mesh was never held whole: the picture reads it back (from its temporary:
+      // the outputs are renamed together at the end, io::CommitGroup).
+      const mesh::PreviewImage image =
+          mesh::renderPreview(holdMesh ? mesh : io::readPly(io::CommitGroup::readablePath(state->output)));
       io::writePng(state->previewPath, image.width, image.height, 3, image.rgb);
       stats["preview"]["path"] = state->previewPath;
     }

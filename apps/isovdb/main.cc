@@ -7,6 +7,7 @@
 
 #include "commands.h"
 #include "isovdb/errors.h"
+#include "isovdb/io/atomic_file.h"
 #include "isovdb/pipeline/memory.h"
 #include "terminal_progress.h"
 
@@ -32,7 +33,11 @@ int main(int argc, char** argv) {
   cli::addReservoirCommand(app, context);
   cli::installInterruptSignals();
   try {
+    // Every output of the command, or none of them: a failure after the first output
+    // (the disk filling while the statistics follow the mesh) removes them all.
+    io::CommitGroup outputs;
     app.parse(argc, argv);
+    outputs.commitAll();
   } catch (const CLI::ParseError& e) {
     // CLI11 prints the message; its own codes (105, 114, ...) become the usage error 2,
     // as for every other bad option, and --help stays 0.

@@ -4,8 +4,10 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <cstring>
+#include <stdexcept>
 #include <system_error>
 
 #include "isovdb/errors.h"
@@ -16,7 +18,48 @@ namespace {
 
 std::string osError() { return std::strerror(errno); }
 
+std::atomic<CommitGroup*> activeGroup{nullptr};
+
 }  // namespace
+
+CommitGroup::CommitGroup() {
+  CommitGroup* none = nullptr;
+  if (!activeGroup.compare_exchange_strong(none, this)) throw std::logic_error("CommitGroup: another group is alive");
+}
+
+CommitGroup::~CommitGroup() {
+  activeGroup.store(nullptr);
+  std::error_code ec;
+  for (const auto& [temporary, path] : pending_) std::filesystem::remove(temporary, ec);
+}
+
+void CommitGroup::commitAll() {
+  const std::lock_guard lock(mutex_);
+  while (!pending_.empty()) {
+    const auto [temporary, path] = pending_.front();
+    std::error_code ec;
+    std::filesystem::rename(temporary, path, ec);
+    if (ec) throw IoError("cannot write '" + path.string() + "': " + ec.message());
+    pending_.erase(pending_.begin());
+  }
+}
+
+std::filesystem::path CommitGroup::readablePath(const std::filesystem::path& path) {
+  CommitGroup* group = activeGroup.load();
+  if (!group) return path;
+  const std::lock_guard lock(group->mutex_);
+  for (const auto& [temporary, pending] : group->pending_)
+    if (pending == path) return temporary;
+  return path;
+}
+
+bool CommitGroup::defer(const std::filesystem::path& temporary, const std::filesystem::path& path) {
+  CommitGroup* group = activeGroup.load();
+  if (!group) return false;
+  const std::lock_guard lock(group->mutex_);
+  group->pending_.emplace_back(temporary, path);
+  return true;
+}
 
 AtomicFile::AtomicFile(std::filesystem::path path) : path_(std::move(path)) {
   if (path_.empty()) throw IoError("output path is empty");
@@ -83,6 +126,10 @@ void AtomicFile::commit() {
                                std::filesystem::perms::owner_read | std::filesystem::perms::owner_write |
                                    std::filesystem::perms::group_read | std::filesystem::perms::others_read,
                                ec);
+  if (CommitGroup::defer(tmpPath_, path_)) {
+    committed_ = true;  // the group renames or removes the temporary
+    return;
+  }
   std::filesystem::rename(tmpPath_, path_, ec);
   if (ec) throw IoError("cannot write '" + path_.string() + "': " + ec.message());
   committed_ = true;

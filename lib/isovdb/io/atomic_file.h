@@ -8,7 +8,10 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <mutex>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace isovdb::io {
 
@@ -35,7 +38,8 @@ class AtomicFile {
   /// @throw IoError on failure.
   void flush();
 
-  /// Flushes, closes and renames the temporary onto the final path.
+  /// Flushes, closes and renames the temporary onto the final path (while a
+  /// CommitGroup is alive, the rename waits for the group's commitAll()).
   /// @throw IoError when any of those fails (the temporary is removed).
   void commit();
 
@@ -56,6 +60,36 @@ class AtomicFile {
   std::filesystem::path tmpPath_;
   std::FILE* file_ = nullptr;
   bool committed_ = false;
+};
+
+/// @brief The outputs of one command, all or none: while a group is alive, every
+///        AtomicFile commit (from any thread) is complete on disk but its rename
+///        waits for commitAll(). A run that fails after its first output, say the
+///        disk filling while the statistics are written after the mesh, leaves no
+///        output and no temporary. One group at a time (the CLI's, around a command).
+class CommitGroup {
+ public:
+  CommitGroup();
+  /// Removes the temporaries of the files not yet renamed.
+  ~CommitGroup();
+  CommitGroup(const CommitGroup&) = delete;
+  CommitGroup& operator=(const CommitGroup&) = delete;
+
+  /// Renames every committed file onto its path, in commit order.
+  /// @throw IoError naming the first path that could not be renamed.
+  void commitAll();
+
+  /// Where the bytes committed for `path` are now: the temporary while its rename
+  /// waits, else `path` (a command that reads back an output it wrote).
+  static std::filesystem::path readablePath(const std::filesystem::path& path);
+
+ private:
+  friend class AtomicFile;
+  /// Takes the rename of a committed temporary; false when no group is alive.
+  static bool defer(const std::filesystem::path& temporary, const std::filesystem::path& path);
+
+  std::mutex mutex_;
+  std::vector<std::pair<std::filesystem::path, std::filesystem::path>> pending_;  // temporary, path
 };
 
 }  // namespace isovdb::io

@@ -8,6 +8,8 @@
 #include <openvdb/io/GridDescriptor.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <deque>
 #include <map>
 #include <sstream>
@@ -27,6 +29,9 @@ using LowerNode = UpperNode::ChildNodeType;           // 128^3 voxels, 16^3 slot
 using LeafRecord = LeafwiseLevelSetWriter::LeafRecord;
 
 std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
+
+/// Why a stream's last write failed, as the system said it (a full disk: "No space left on device").
+std::string streamError() { return errno != 0 ? std::strerror(errno) : "unknown error (disk full?)"; }
 
 /// A child of an internal node as the flood fill sees it: its slot and the values
 /// at its first and last voxel.
@@ -405,7 +410,7 @@ void LeafwiseLevelSetWriter::add(std::vector<std::unique_ptr<volume::FieldLeaf>>
   spill_.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   if (!spill_)
     throw IoError("cannot write " + quoted(path_) + ": writing the spill file " + quoted(spillPath_) +
-                  " failed (disk full?)");
+                  " failed: " + streamError());
   for (LeafRecord& record : records) {
     if (record.bytes) record.offset += spillOffset_;
     records_.push_back(record);
@@ -489,7 +494,7 @@ LevelSetFileSummary LeafwiseLevelSetWriter::commit(Interrupter* interrupter) {
     archive.setCompression(compression_);
     archive.write(out, *grid, metadata);
     out.close();
-    if (!out) throw std::runtime_error("writing failed (disk full?)");
+    if (!out) throw std::runtime_error("writing failed: " + streamError());
   } catch (const openvdb::Exception& e) {
     throw IoError("cannot write " + quoted(path_) + ": " + std::string(e.what()));
   } catch (const std::runtime_error& e) {
