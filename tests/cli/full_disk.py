@@ -47,7 +47,7 @@ def one_run(isovdb, disk, command, outputs, leave):
             problems.append(f"failed and left {present}")
         if "error:" not in run.stderr or not any(name in run.stderr for name in outputs):
             problems.append(f"the error names no output: {run.stderr.strip()[-300:]}")
-        elif "No space left" not in run.stderr and "File too large" not in run.stderr:
+        elif not any(reason in run.stderr for reason in ("No space left", "File too large", "disk full")):
             problems.append(f"failed for another reason than the disk: {run.stderr.strip()[-300:]}")
     for name in present:
         os.remove(os.path.join(disk, name))

@@ -38,8 +38,9 @@ namespace isovdb::mesh {
 /// sorted along a Morton curve and halved recursively, built and traversed
 /// against itself in parallel with TBB); narrow phase: exact predicates on
 /// each pair whose boxes touch. O(T log T) for meshes whose triangles overlap
-/// few others (10 M triangles: about 7 s of CPU). Memory: about 50 bytes per
-/// triangle at the peak, plus 8 per reported pair.
+/// few others (10 M triangles: about 7 s of CPU). Memory: about 75 bytes per
+/// triangle at the peak (the sort that finds copies of a triangle included), plus
+/// 8 per reported pair.
 ///
 /// @param[in]  mesh   positions and triangles; normals are ignored
 /// @param[out] pairs  when not null, cleared and filled with the intersecting

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <iterator>
+#include <limits>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -132,11 +133,12 @@ contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const E
 }
 
 /// Samples beyond the data's box read as far outside: the engine's iso plus 10^4 times the
-/// deepest inside value any sample can have (`bound` + |iso|). An edge from the last sample inside to one beyond the
-/// box then crosses within 10^-4 voxel of the box face, so the contouring itself makes the cap, flat on the face
-/// (contour/adaptive_contour.cc keeps its vertices within 2 * 10^-3 voxel beyond it), and nothing moves a vertex
-/// afterwards. Flattening a cap that lay up to a voxel beyond onto the face, after Ju–Udeshi's test had passed the
-/// positions before, folded its triangles (F3 above 3000: 7 self-intersecting pairs).
+/// deepest inside value any sample can have (`bound` + |iso|). An edge from the last sample
+/// inside to one beyond the box then crosses within 10^-4 voxel of the box face, so the
+/// contouring itself makes the cap, flat on the face (contour/adaptive_contour.cc keeps its
+/// vertices within 2 * 10^-3 voxel beyond it), and nothing moves a vertex afterwards.
+/// Flattening a cap that lay up to a voxel beyond onto the face, after Ju–Udeshi's test had
+/// passed the positions before, folded its triangles (F3 above 3000: 7 self-intersecting pairs).
 void farOutsideBeyondDataBox(cell::MetaCellSamples& samples, float iso, float bound,
                              const std::optional<cell::DataBox>& box) {
   if (!box) return;
@@ -145,8 +147,11 @@ void farOutsideBeyondDataBox(cell::MetaCellSamples& samples, float iso, float bo
   for (int a = 0; a < 3; ++a)
     beyond = beyond || samples.origin[a] + lo < (*box)[0][a] || samples.origin[a] + hi > (*box)[1][a];
   if (!beyond) return;
-  // At most 1e18 (hostile values): the gradients' squares stay finite floats.
-  const float far = iso + std::min(1e4f * (bound + std::abs(iso) + 1.0f), 1e18f);
+  // At most 1e18 (hostile or non-finite values): the gradients' squares stay finite
+  // floats. Always above the iso, even where adding to a huge iso changes nothing.
+  float reach = 1e4f * (bound + std::abs(iso) + 1.0f);
+  if (!(reach < 1e18f)) reach = 1e18f;
+  const float far = std::max(iso + reach, std::nextafter(iso, std::numeric_limits<float>::infinity()));
   for (int k = lo; k <= hi; ++k)
     for (int j = lo; j <= hi; ++j)
       for (int i = lo; i <= hi; ++i) {
