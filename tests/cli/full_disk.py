@@ -45,10 +45,9 @@ def one_run(isovdb, disk, command, outputs, leave):
             problems.append(f"exit status {run.returncode}: {run.stderr.strip()[-300:]}")
         if present:
             problems.append(f"failed and left {present}")
+        # The reason's wording is the system's (a stream may not keep errno): not checked.
         if "error:" not in run.stderr or not any(name in run.stderr for name in outputs):
             problems.append(f"the error names no output: {run.stderr.strip()[-300:]}")
-        elif not any(reason in run.stderr for reason in ("No space left", "File too large", "disk full")):
-            problems.append(f"failed for another reason than the disk: {run.stderr.strip()[-300:]}")
     for name in present:
         os.remove(os.path.join(disk, name))
     os.remove(filler)
@@ -65,8 +64,8 @@ def sweep(isovdb, disk, command, outputs):
             break
         failures += 1
         leave += STEP
-        if leave > 8 << 20:
-            problems.append("never succeeded with 8 MiB free")
+        if leave > 2 << 20:  # the runs need about 0.2 MiB
+            problems.append("never succeeded with 2 MiB free")
             break
     if failures < 3:
         problems.append(f"only {failures} runs failed for lack of room: the sweep did not test much")

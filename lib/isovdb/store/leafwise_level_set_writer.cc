@@ -30,8 +30,9 @@ using LeafRecord = LeafwiseLevelSetWriter::LeafRecord;
 
 std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
 
-/// Why a stream's last write failed, as the system said it (a full disk: "No space left on device").
-std::string streamError() { return errno != 0 ? std::strerror(errno) : "unknown error (disk full?)"; }
+/// Why a stream's write failed: the system's reason when the write set errno (cleared
+/// before it; a full disk: "No space left on device"), else the likely one.
+std::string streamError() { return errno != 0 ? std::strerror(errno) : "the disk may be full"; }
 
 /// A child of an internal node as the flood fill sees it: its slot and the values
 /// at its first and last voxel.
@@ -407,6 +408,7 @@ void LeafwiseLevelSetWriter::add(std::vector<std::unique_ptr<volume::FieldLeaf>>
   }
 
   const std::lock_guard<std::mutex> lock(mutex_);
+  errno = 0;
   spill_.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   if (!spill_)
     throw IoError("cannot write " + quoted(path_) + ": writing the spill file " + quoted(spillPath_) +
@@ -492,6 +494,7 @@ LevelSetFileSummary LeafwiseLevelSetWriter::commit(Interrupter* interrupter) {
     if (!out) throw std::runtime_error("cannot open the temporary file");
     SingleLevelSetArchive archive;
     archive.setCompression(compression_);
+    errno = 0;
     archive.write(out, *grid, metadata);
     out.close();
     if (!out) throw std::runtime_error("writing failed: " + streamError());
