@@ -106,7 +106,7 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
     cell::ContourSettings settings = options.contour;
     settings.topology = regularTopologyFor(options.regularTopology, kind);
     octree::OctreeOptions tree = options.octree;
-    if (box) settings.dataBox = {{box->min, box->max}};
+    if (box && capsMade) settings.dataBox = {{box->min, box->max}};  // only adaptive mode reads it
     if (byLayers)
       contourMaskWithOctree(volume, options.distance, settings, tree, options.metaCellSize, capped, interrupter, stats);
     else

@@ -162,16 +162,11 @@ void farOutsideBeyondDataBox(cell::MetaCellSamples& samples, float iso, float bo
       }
 }
 
-/// The box whose caps the contouring makes: adaptive mode's (regular mode's caps are
-/// flattened onto the box afterwards, pipeline/data_boundary.h).
-std::optional<cell::DataBox> capsBox(const cell::ContourSettings& settings) {
-  return settings.method == cell::ContourMethod::Adaptive ? settings.dataBox : std::nullopt;
-}
-
+/// The box whose caps the contouring makes (set by extract for adaptive mode only; the
+/// other methods' caps are flattened onto the box afterwards, pipeline/data_boundary.h).
 std::optional<volume::IndexBox> capsIndexBox(const cell::ContourSettings& settings) {
-  const std::optional<cell::DataBox> box = capsBox(settings);
-  if (!box) return std::nullopt;
-  return volume::IndexBox{(*box)[0], (*box)[1]};
+  if (!settings.dataBox) return std::nullopt;
+  return volume::IndexBox{(*settings.dataBox)[0], (*settings.dataBox)[1]};
 }
 
 /// The engine's inside is value <= iso; a scalar's inside is above the isovalue. Returns
@@ -181,7 +176,7 @@ float engineIso(volume::VolumeKind kind, float iso, const Engine& engine, cell::
     for (float& v : samples.values) v = -v;
     iso = -iso;
   }
-  farOutsideBeyondDataBox(samples, iso, engine.valueBound, capsBox(engine.settings));
+  farOutsideBeyondDataBox(samples, iso, engine.valueBound, engine.settings.dataBox);
   return iso;
 }
 
