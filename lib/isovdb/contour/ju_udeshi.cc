@@ -137,6 +137,22 @@ bool triangleInSectors(const EnvelopeSectors& envelope, const Vec3d& a, const Ve
   return true;
 }
 
+/// The polygon around an edge without allocating (edgePolygon's order): at most 4 cell
+/// points and 4 face points; this runs once per minimal edge.
+struct EdgePolygon {
+  std::array<int, 8> local{};
+  int size = 0;
+
+  EdgePolygon(int cellCount, const std::array<bool, 4>& facesCrossed) {
+    for (int i = 0; i < cellCount; ++i) {
+      local[static_cast<std::size_t>(size++)] = i;
+      if (!facesCrossed[static_cast<std::size_t>(i)]) local[static_cast<std::size_t>(size++)] = kFaceVertex + i;
+    }
+  }
+  /// Vertex j of the polygon, cyclically.
+  int at(int j) const { return local[static_cast<std::size_t>(((j % size) + size) % size)]; }
+};
+
 }  // namespace
 
 FacePoint computeFacePoint(const Vec3d& a, const Vec3d& b, const MinimalFace& face, const EnvelopeOptions& options) {
@@ -170,42 +186,40 @@ bool triangleInEnvelope(const EdgeEnvelope& envelope, const Vec3d& a, const Vec3
 }
 
 std::vector<int> edgePolygon(int cellCount, const std::array<bool, 4>& facesCrossed) {
-  std::vector<int> polygon;
-  for (int i = 0; i < cellCount; ++i) {
-    polygon.push_back(i);
-    if (!facesCrossed[static_cast<std::size_t>(i)]) polygon.push_back(kFaceVertex + i);
-  }
-  return polygon;
+  const EdgePolygon polygon(cellCount, facesCrossed);
+  return {polygon.local.begin(), polygon.local.begin() + polygon.size};
 }
 
 EdgeTriangulation chooseTriangulation(const EdgeEnvelope& envelope, const std::array<bool, 4>& facesCrossed,
                                       bool intersectionFree, const EnvelopeOptions& options) {
   const int k = envelope.cellCount;
   const std::array<bool, 4> allCrossed{true, true, true, true};
-  const std::vector<int> polygon = edgePolygon(k, intersectionFree ? facesCrossed : allCrossed);
-  const int m = static_cast<int>(polygon.size());
+  const EdgePolygon polygon(k, intersectionFree ? facesCrossed : allCrossed);
+  const int m = polygon.size;
   auto point = [&](int local) -> const Vec3d& {
     return local >= kFaceVertex ? envelope.facePoints[static_cast<std::size_t>(local - kFaceVertex)]
                                 : envelope.cellPoints[static_cast<std::size_t>(local)];
   };
-  auto at = [&](int j) { return polygon[static_cast<std::size_t>(((j % m) + m) % m)]; };
   // Apex order: for a quadrilateral the shorter diagonal first, else in polygon order.
-  std::vector<int> apexes;
+  std::array<int, 8> apexes{0, 1, 2, 3, 4, 5, 6, 7};
+  int apexCount = m;
   if (m == 4) {
-    const auto distance = [&](int i, int j) { return (toPoint(point(at(i))) - toPoint(point(at(j)))).norm(); };
-    const bool shorter02 = distance(0, 2) <= distance(1, 3);
-    apexes = shorter02 ? std::vector<int>{0, 1} : std::vector<int>{1, 0};
+    const auto distance = [&](int i, int j) {
+      return (toPoint(point(polygon.at(i))) - toPoint(point(polygon.at(j)))).norm();
+    };
+    if (!(distance(0, 2) <= distance(1, 3))) std::swap(apexes[0], apexes[1]);
+    apexCount = 2;
   } else if (m == 3) {
-    apexes = {0};
-  } else {
-    for (int a = 0; a < m; ++a) apexes.push_back(a);
+    apexCount = 1;
   }
   if (!intersectionFree) return EdgeTriangulation{false, apexes.front()};
   const EnvelopeSectors sectors(envelope);
-  for (int apex : apexes) {
+  for (int a = 0; a < apexCount; ++a) {
+    const int apex = apexes[static_cast<std::size_t>(a)];
     bool ok = true;
     for (int j = 1; j + 1 < m && ok; ++j)
-      ok = triangleInSectors(sectors, point(at(apex)), point(at(apex + j)), point(at(apex + j + 1)), options);
+      ok = triangleInSectors(sectors, point(polygon.at(apex)), point(polygon.at(apex + j)),
+                             point(polygon.at(apex + j + 1)), options);
     if (ok) return EdgeTriangulation{false, apex};
   }
   return EdgeTriangulation{true, 0};
@@ -214,14 +228,14 @@ EdgeTriangulation chooseTriangulation(const EdgeEnvelope& envelope, const std::a
 void triangulateEdge(int cellCount, const std::array<bool, 4>& facesCrossed, EdgeTriangulation how,
                      std::vector<std::array<int, 3>>& out) {
   out.clear();
-  const std::vector<int> polygon = edgePolygon(cellCount, facesCrossed);
-  const int m = static_cast<int>(polygon.size());
-  auto at = [&](int j) { return polygon[static_cast<std::size_t>(((j % m) + m) % m)]; };
+  const EdgePolygon polygon(cellCount, facesCrossed);
+  const int m = polygon.size;
   if (how.fan) {
-    for (int j = 0; j < m; ++j) out.push_back({kEdgeVertex, at(j), at(j + 1)});
+    for (int j = 0; j < m; ++j) out.push_back({kEdgeVertex, polygon.at(j), polygon.at(j + 1)});
     return;
   }
-  for (int j = 1; j + 1 < m; ++j) out.push_back({at(how.apex), at(how.apex + j), at(how.apex + j + 1)});
+  for (int j = 1; j + 1 < m; ++j)
+    out.push_back({polygon.at(how.apex), polygon.at(how.apex + j), polygon.at(how.apex + j + 1)});
 }
 
 }  // namespace isovdb::contour
