@@ -15,7 +15,8 @@ namespace isovdb::test {
 
 struct BoxGrid {
   int nx = 10, ny = 10, nz = 10;
-  double cell = 1.0;  ///< cell edge length
+  double cell = 1.0;   ///< cell edge length
+  double layer = 0.0;  ///< cell height along z (0: `cell`), for thin layers
   Eigen::Vector3d origin{0, 0, 0};
   double faultThrow = 0.0;                                   ///< z offset of the cells with i >= nx/2 (a fault)
   bool mirrorX = false;                                      ///< x = origin - i*cell: a left-handed grid

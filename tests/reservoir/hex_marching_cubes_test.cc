@@ -184,6 +184,24 @@ TEST(HexMarchingCubes, BinaryIndicatorAtOneHalfHasNoZeroAreaTriangles) {
   EXPECT_EQ(report.selfIntersectingPairs, 0);
 }
 
+TEST(HexMarchingCubes, CornersAtTheIsoValueOfAUtmGridStayManifold) {
+  // The 0/1 ball at 0.5 where easting and northing are UTM-sized (float steps of 0.5 m)
+  // and layers thin: a vertex a little way along a vertical edge moves only in depth,
+  // where floats are fine. Judging the offset by the largest coordinate shared the
+  // corner's vertex among its edges instead (Reek: 115 non-manifold edges).
+  test::BoxGrid box{.nx = 14, .ny = 14, .nz = 14, .cell = 100.0, .layer = 2.0, .origin = {460000, 593000, 1600}};
+  box.field = [&box](const Vector3d& p) {
+    const Vector3d q = (p - box.origin).cwiseQuotient(Vector3d(box.cell, box.cell, box.layer)) - Vector3d(7, 7, 7);
+    return q.norm() < 4.5 ? 1.0 : 0.0;
+  };
+  const Built b = contourBox(box, 0.5);
+  const mesh::MeshReport report = mesh::validateMesh(b.result.mesh);
+  ASSERT_GT(b.result.mesh.triangleCount(), 0u);
+  EXPECT_EQ(report.nonManifoldEdges, 0);
+  EXPECT_EQ(report.nonManifoldVertices, 0);
+  EXPECT_EQ(report.degenerateTriangles, 0);
+}
+
 TEST(HexMarchingCubes, CornersAtTheIsoValueNeitherFoldNorCollapse) {
   // ResInsight's regular27cell deck: PORO 0.4 beside 0.5 averages to 0.45 (within
   // rounding) at corners, two of them on some faces. Vertices at those corners made

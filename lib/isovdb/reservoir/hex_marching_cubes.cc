@@ -4,6 +4,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include <Eigen/Dense>
 
@@ -41,11 +42,18 @@ struct CellVertex {
   Vec3d gradient;
 };
 
-struct CellOutput {
+/// What a block of consecutive cells makes (one per block, not per cell: a grid of
+/// millions of cells holds a surface in a few percent of them).
+struct BlockOutput {
   std::vector<CellVertex> vertices;
   std::vector<std::array<int, 3>> triangles;  // into vertices
+  std::int64_t cutCells = 0;
   int ambiguousFaces = 0;
 };
+
+/// Cells per block: blocks are the unit of parallel work and their outputs are merged in
+/// order, so the mesh does not depend on the thread count.
+constexpr std::size_t kBlockCells = 4096;
 
 double centreJacobian(const std::array<Vec3d, 8>& p) {
   Eigen::Matrix3d j;
@@ -69,8 +77,7 @@ bool collapsed(const CornerPointGrid& grid, std::size_t cell) {
 }
 
 void contourCell(const CornerPointGrid& grid, const CornerField& field, std::size_t cell,
-                 const HexContourOptions& options, CellOutput& out) {
-  if (collapsed(grid, cell)) return;
+                 const HexContourOptions& options, BlockOutput& out) {
   std::array<double, 8> g;
   std::array<bool, 8> above;
   int aboveCount = 0;
@@ -80,6 +87,8 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
     aboveCount += above[c];
   }
   if (aboveCount == 0 || aboveCount == 8) return;
+  if (collapsed(grid, cell)) return;
+  ++out.cutCells;
 
   // Segments: next[start edge] = end edge, from an above->below crossing to a below->above one.
   std::array<int, 12> next;
@@ -144,11 +153,17 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
     // surfaces of neighbouring cells touch there, and fold over each other where a face
     // held two such corners. The offset must show in the float positions: where the
     // coordinates are too large for that (UTM grids), the edges share the corner's vertex.
-    const double length = (pb - pa).norm();
-    const double magnitude = std::max(pa.cwiseAbs().maxCoeff(), pb.cwiseAbs().maxCoeff());
-    const auto coordinate = static_cast<float>(magnitude);
-    const double ulp = std::nextafter(coordinate, std::numeric_limits<float>::max()) - coordinate;
-    const double offset = length > 0 ? std::max(kCornerOffset, 16.0 * ulp / length) : 1.0;
+    // The offset shows where one coordinate moves by at least 16 float steps: the edge's
+    // best resolved axis (a vertical pillar edge of a UTM grid moves in depth, whose floats
+    // are fine, though its easting and northing are coarse).
+    double offset = 1.0;
+    for (int axis = 0; axis < 3; ++axis) {
+      const double along = std::abs(pb[axis] - pa[axis]);
+      if (!(along > 0)) continue;
+      const auto coordinate = static_cast<float>(std::max(std::abs(pa[axis]), std::abs(pb[axis])));
+      const double ulp = std::nextafter(coordinate, std::numeric_limits<float>::max()) - coordinate;
+      offset = std::min(offset, std::max(kCornerOffset, 16.0 * ulp / along));
+    }
     if (t < offset || t > 1.0 - offset) {
       if (offset <= kMaxCornerOffset)
         t = std::clamp(t, offset, 1.0 - offset);
@@ -183,13 +198,12 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
   int loopIndex = 0;
   for (int start = 0; start < 12; ++start) {
     if (next[start] < 0 || visited[start]) continue;
-    std::vector<int> edges;
+    std::array<int, 12> edges{}, loop{};
+    std::size_t n = 0;
     for (int e = start; !visited[e]; e = next[e]) {
       visited[e] = true;
-      edges.push_back(e);
+      edges[n++] = e;
     }
-    const std::size_t n = edges.size();
-    std::vector<int> loop(n);
     for (std::size_t i = 0; i < n; ++i) loop[i] = vertex(edges[i]);
     // A fan apex whose diagonals leave every face: else a centre vertex inside the cell.
     int apex = -1;
@@ -205,9 +219,9 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
       centre.key = (std::uint64_t{1} << 63) | (static_cast<std::uint64_t>(cell) << 4) | loopIndex;
       Eigen::Vector3f sum = Eigen::Vector3f::Zero();
       Vec3d gradient = Vec3d::Zero();
-      for (int v : loop) {
-        sum += out.vertices[v].position;
-        gradient += out.vertices[v].gradient;
+      for (std::size_t m = 0; m < n; ++m) {
+        sum += out.vertices[static_cast<std::size_t>(loop[m])].position;
+        gradient += out.vertices[static_cast<std::size_t>(loop[m])].gradient;
       }
       centre.position = sum / static_cast<float>(n);
       centre.gradient = gradient / static_cast<double>(n);
@@ -224,26 +238,30 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
 HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField& field,
                                   const HexContourOptions& options) {
   const std::size_t cells = grid.cellCount();
-  std::vector<CellOutput> outputs(cells);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, cells, 256), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t cell = r.begin(); cell != r.end(); ++cell)
-      if (field.usable[cell]) contourCell(grid, field, cell, options, outputs[cell]);
+  std::vector<BlockOutput> outputs((cells + kBlockCells - 1) / kBlockCells);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, outputs.size()), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t block = r.begin(); block != r.end(); ++block) {
+      const std::size_t end = std::min(cells, (block + 1) * kBlockCells);
+      for (std::size_t cell = block * kBlockCells; cell < end; ++cell)
+        if (field.usable[cell]) contourCell(grid, field, cell, options, outputs[block]);
+    }
   });
 
   HexContourResult result;
   std::vector<std::uint64_t> keys;
-  for (const CellOutput& out : outputs) {
-    result.cutCells += !out.triangles.empty();
+  for (const BlockOutput& out : outputs) {
+    result.cutCells += out.cutCells;
     result.ambiguousFaces += out.ambiguousFaces;
     for (const CellVertex& v : out.vertices) keys.push_back(v.key);
   }
-  std::sort(keys.begin(), keys.end());
+  tbb::parallel_sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
   mesh::Mesh& m = result.mesh;
   m.positions.resize(keys.size());
   std::vector<Vec3d> gradients(keys.size(), Vec3d::Zero());
-  for (const CellOutput& out : outputs) {
-    std::vector<std::uint32_t> index(out.vertices.size());
+  std::vector<std::uint32_t> index;
+  for (const BlockOutput& out : outputs) {
+    index.resize(out.vertices.size());
     for (std::size_t n = 0; n < out.vertices.size(); ++n) {
       const CellVertex& v = out.vertices[n];
       index[n] = static_cast<std::uint32_t>(std::lower_bound(keys.begin(), keys.end(), v.key) - keys.begin());
@@ -251,7 +269,8 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
       gradients[index[n]] += v.gradient;
     }
     for (const auto& t : out.triangles) {
-      const mesh::Triangle tri{index[t[0]], index[t[1]], index[t[2]]};
+      const mesh::Triangle tri{index[static_cast<std::size_t>(t[0])], index[static_cast<std::size_t>(t[1])],
+                               index[static_cast<std::size_t>(t[2])]};
       if (tri[0] != tri[1] && tri[1] != tri[2] && tri[0] != tri[2]) m.triangles.push_back(tri);
     }
   }
