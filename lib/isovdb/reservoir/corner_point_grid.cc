@@ -94,6 +94,8 @@ CornerPointGrid buildCornerPointGrid(const GrdeclDeck& deck, const GridOptions& 
     for (int J = 0; J <= ny; ++J)
       for (int I = 0; I <= nx; ++I) {
         const std::size_t first = grid.points.size();
+        std::array<std::pair<std::size_t, std::uint32_t>, 8> touching{};  // (point, cell)
+        int count = 0;
         for (int c = 7; c >= 0; --c) {  // cell (I-ix, J-iy, K-iz) touches the node with its corner c
           const int i = I - (c & 1), j = J - ((c >> 1) & 1), k = K - ((c >> 2) & 1);
           if (i < 0 || j < 0 || k < 0 || i >= nx || j >= ny || k >= nz) continue;
@@ -101,12 +103,16 @@ CornerPointGrid buildCornerPointGrid(const GrdeclDeck& deck, const GridOptions& 
           const Vec3d& p = grid.corners[cell][c];
           std::size_t id = first;
           while (id < grid.points.size() && (grid.points[id] - p).norm() > tolerance) ++id;
-          if (id == grid.points.size()) {
-            grid.points.push_back(p);
-            grid.pointCells.emplace_back();
-          }
+          if (id == grid.points.size()) grid.points.push_back(p);
           grid.pointIds[cell][c] = static_cast<std::uint32_t>(id);
-          grid.pointCells[id].push_back(static_cast<std::uint32_t>(cell));
+          touching[static_cast<std::size_t>(count++)] = {id, static_cast<std::uint32_t>(cell)};
+        }
+        // This node's points are the newest: their cells go last, each point's in corner order.
+        for (std::size_t id = first; id < grid.points.size(); ++id) {
+          for (int n = 0; n < count; ++n)
+            if (touching[static_cast<std::size_t>(n)].first == id)
+              grid.pointCells.push_back(touching[static_cast<std::size_t>(n)].second);
+          grid.pointCellStart.push_back(static_cast<std::uint32_t>(grid.pointCells.size()));
         }
       }
 
@@ -167,7 +173,7 @@ CornerField averageToCorners(const CornerPointGrid& grid, const std::vector<doub
   for (std::size_t id = 0; id < grid.points.size(); ++id) {
     double sum = 0;
     int count = 0;
-    for (std::uint32_t cell : grid.pointCells[id])
+    for (const std::uint32_t cell : grid.cellsOfPoint(id))
       if (field.usable[cell]) {
         sum += cellValues[cell];
         ++count;

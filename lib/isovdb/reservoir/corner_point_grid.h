@@ -16,6 +16,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <span>
 #include <vector>
 
 #include "isovdb/reservoir/grdecl_reader.h"
@@ -30,13 +31,19 @@ struct CornerPointGrid {
   std::vector<std::uint8_t> active;                    ///< per cell, ACTNUM != 0
   std::vector<std::array<std::uint32_t, 8>> pointIds;  ///< per cell corner, id of its geometric point
   std::vector<Vec3d> points;                           ///< representative position of each point
-  std::vector<std::vector<std::uint32_t>> pointCells;  ///< per point: the cells sharing it (cell index)
+  /// The cells sharing each point (cell indices), point after point: those of point p are
+  /// pointCells[pointCellStart[p] .. pointCellStart[p + 1]) (one array, not a vector per point).
+  std::vector<std::uint32_t> pointCellStart{0};
+  std::vector<std::uint32_t> pointCells;
   int orientation = 1;             ///< sign of the Jacobian of most active cells (-1: left-handed grid)
   std::int64_t invertedCells = 0;  ///< active cells whose Jacobian has the other sign at some corner
   std::int64_t activeCells = 0;
   std::vector<std::string> warnings;
 
   std::size_t cellCount() const { return corners.size(); }
+  std::span<const std::uint32_t> cellsOfPoint(std::size_t point) const {
+    return {pointCells.data() + pointCellStart[point], pointCells.data() + pointCellStart[point + 1]};
+  }
   std::size_t cellIndex(int i, int j, int k) const { return (static_cast<std::size_t>(k) * dims[1] + j) * dims[0] + i; }
 };
 

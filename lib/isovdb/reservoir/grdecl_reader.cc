@@ -44,7 +44,7 @@ bool looksLikeKeyword(const GrdeclToken& t) {
   return true;
 }
 
-bool parseDouble(const std::string& s, double& out) {
+bool parseDouble(std::string_view s, double& out) {
   const char* begin = s.data();
   const char* end = s.data() + s.size();
   // Fortran exponents (1.0D+03).
@@ -74,16 +74,16 @@ struct Parser {
   static RecordItems recordItems(const std::vector<GrdeclToken>& t, std::size_t i, std::size_t end) {
     RecordItems items;
     for (std::size_t k = i; k < end; ++k) {
-      const std::string& s = t[k].text;
+      const std::string_view s = t[k].text;
       const std::size_t star = t[k].quoted ? std::string::npos : s.find('*');
       long long repeat = 0;
       if (star != std::string::npos && star > 0 &&
           std::from_chars(s.data(), s.data() + star, repeat).ptr == s.data() + star && repeat > 0 && repeat < 1000) {
         const std::optional<std::string> item =
-            star + 1 < s.size() ? std::optional<std::string>(s.substr(star + 1)) : std::nullopt;
+            star + 1 < s.size() ? std::optional<std::string>(std::string(s.substr(star + 1))) : std::nullopt;
         items.insert(items.end(), static_cast<std::size_t>(repeat), item);
       } else {
-        items.emplace_back(s);
+        items.emplace_back(std::string(s));
       }
     }
     return items;
@@ -91,7 +91,7 @@ struct Parser {
 
   const std::array<int, 3>& gridDims(const std::filesystem::path& file, const GrdeclToken& keyword) const {
     if (deck.dims[0] == 0)
-      throw InputError(where(file, keyword.line) + ": " + keyword.text +
+      throw InputError(where(file, keyword.line) + ": " + std::string(keyword.text) +
                        " before SPECGRID or DIMENS: the grid's size is not known yet");
     return deck.dims;
   }
@@ -100,8 +100,8 @@ struct Parser {
                   const GrdeclToken& keyword) const {
     double v = 0;
     if (!item || !parseDouble(*item, v) || v != std::floor(v) || std::abs(v) > 1e9)
-      throw InputError(where(file, keyword.line) + ": " + keyword.text + ": expected a cell index, found '" +
-                       item.value_or("default") + "'");
+      throw InputError(where(file, keyword.line) + ": " + std::string(keyword.text) +
+                       ": expected a cell index, found '" + item.value_or("default") + "'");
     return static_cast<int>(v);
   }
 
@@ -116,7 +116,7 @@ struct Parser {
     try {
       return cellBoxOf(bounds, currentBox.value_or(grid), dims);
     } catch (const std::invalid_argument& e) {
-      throw InputError(where(file, keyword.line) + ": " + keyword.text + ": " + e.what());
+      throw InputError(where(file, keyword.line) + ": " + std::string(keyword.text) + ": " + e.what());
     }
   }
 
@@ -142,7 +142,7 @@ struct Parser {
                         const GrdeclToken& keyword) const {
     for (std::size_t k = i; k < t.size(); ++k)
       if (t[k].isSlash()) return k;
-    throw InputError(where(file, keyword.line) + ": keyword " + keyword.text +
+    throw InputError(where(file, keyword.line) + ": keyword " + std::string(keyword.text) +
                      " has no terminating '/' before the end of the file");
   }
 
@@ -165,7 +165,7 @@ struct Parser {
                               std::size_t limit = static_cast<std::size_t>(-1)) const {
     std::vector<double> values;
     for (end = i; end < t.size() && end < limit && !t[end].isSlash(); ++end) {
-      const std::string& s = t[end].text;
+      const std::string_view s = t[end].text;
       const std::size_t star = s.find('*');
       double value = 0;
       long long repeat = 1;
@@ -179,21 +179,21 @@ struct Parser {
       }
       if (!ok || t[end].quoted) {
         if (looksLikeKeyword(t[end]))
-          throw InputError(where(file, keyword.line) + ": keyword " + keyword.text +
-                           " has no terminating '/' (keyword " + s + " found at line " + std::to_string(t[end].line) +
-                           ")");
-        throw InputError(where(file, t[end].line) + ": keyword " + keyword.text + ": '" + s +
+          throw InputError(where(file, keyword.line) + ": keyword " + std::string(keyword.text) +
+                           " has no terminating '/' (keyword " + std::string(s) + " found at line " +
+                           std::to_string(t[end].line) + ")");
+        throw InputError(where(file, t[end].line) + ": keyword " + std::string(keyword.text) + ": '" + std::string(s) +
                          "' is not a number (expected a value or n*value)");
       }
       // The whole keyword is bounded, not each n*value: three 10^8 repeats made 4.5 GB.
       if (static_cast<double>(values.size()) + static_cast<double>(repeat) > valueLimit())
-        throw InputError(where(file, t[end].line) + ": keyword " + keyword.text + " would hold more than " +
-                         std::to_string(static_cast<long long>(valueLimit())) + " values at '" + s + "' " +
-                         valueLimitReason());
+        throw InputError(where(file, t[end].line) + ": keyword " + std::string(keyword.text) +
+                         " would hold more than " + std::to_string(static_cast<long long>(valueLimit())) +
+                         " values at '" + std::string(s) + "' " + valueLimitReason());
       values.insert(values.end(), static_cast<std::size_t>(repeat), value);
     }
     if (end == t.size() && end < limit)
-      throw InputError(where(file, keyword.line) + ": keyword " + keyword.text +
+      throw InputError(where(file, keyword.line) + ": keyword " + std::string(keyword.text) +
                        " has no terminating '/' before the end of the file");
     return values;
   }
@@ -201,7 +201,7 @@ struct Parser {
   bool recordIsNumeric(const std::vector<GrdeclToken>& t, std::size_t i) const {
     if (i >= t.size() || t[i].isSlash()) return true;  // empty record
     double v;
-    const std::string& s = t[i].text;
+    const std::string_view s = t[i].text;
     const std::size_t star = s.find('*');
     return !t[i].quoted &&
            (star == std::string::npos ? parseDouble(s, v) : star + 1 < s.size() && parseDouble(s.substr(star + 1), v));
@@ -214,9 +214,11 @@ struct Parser {
       throw InputError(file.string() + ": not a regular file (a GRDECL deck or INCLUDE must be a file)");
     std::ifstream in(file, std::ios::binary);
     if (!in) throw IoError(file.string() + ": cannot open GRDECL file");
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    const std::vector<GrdeclToken> t = tokenizeGrdecl(buffer.str());
+    // The whole text, read at once: the tokens view it while this file is parsed.
+    std::string text(static_cast<std::size_t>(std::filesystem::file_size(file)), '\0');
+    if (!in.read(text.data(), static_cast<std::streamsize>(text.size())))
+      throw IoError(file.string() + ": cannot read GRDECL file");
+    const std::vector<GrdeclToken> t = tokenizeGrdecl(text);
 
     std::size_t i = 0;
     while (i < t.size() && !stopped) {
@@ -226,8 +228,8 @@ struct Parser {
         continue;
       }
       if (!looksLikeKeyword(keyword))
-        throw InputError(where(file, keyword.line) + ": expected a keyword, found '" + keyword.text + "'");
-      const std::string& name = keyword.text;
+        throw InputError(where(file, keyword.line) + ": expected a keyword, found '" + std::string(keyword.text) + "'");
+      const std::string name(keyword.text);
       ++i;
       if (kStopKeywords.count(name)) {
         stopped = true;

@@ -8,6 +8,7 @@ namespace isovdb::reservoir {
 
 std::vector<GrdeclToken> tokenizeGrdecl(std::string_view text) {
   std::vector<GrdeclToken> tokens;
+  tokens.reserve(text.size() / 8);  // numbers of a few digits and a space
   int line = 1;
   std::size_t i = 0;
   const std::size_t n = text.size();
@@ -23,7 +24,7 @@ std::vector<GrdeclToken> tokenizeGrdecl(std::string_view text) {
     } else if (c == '\'' || c == '"') {
       const std::size_t end = text.find(c, i + 1);
       const std::size_t stop = end == std::string_view::npos ? n : end;
-      tokens.push_back({std::string(text.substr(i + 1, stop - i - 1)), line, true});
+      tokens.push_back({text.substr(i + 1, stop - i - 1), line, true});
       for (std::size_t k = i; k < stop; ++k) line += text[k] == '\n';
       i = stop + 1;
     } else if (c == '/') {
@@ -34,7 +35,7 @@ std::vector<GrdeclToken> tokenizeGrdecl(std::string_view text) {
       while (i < n && !std::isspace(static_cast<unsigned char>(text[i])) && text[i] != '/' && text[i] != '\'' &&
              text[i] != '"' && !(text[i] == '-' && i + 1 < n && text[i + 1] == '-'))
         ++i;
-      tokens.push_back({std::string(text.substr(start, i - start)), line, false});
+      tokens.push_back({text.substr(start, i - start), line, false});
     }
   }
   return tokens;
