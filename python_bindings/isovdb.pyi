@@ -40,7 +40,15 @@ class Mesh:
     @property
     def triangles(self) -> npt.NDArray[np.uint32]: ...
     @property
+    def faces(self) -> npt.NDArray[np.uint32]: ...
+    @property
     def normals(self) -> npt.NDArray[np.float32] | None: ...
+    @property
+    def area(self) -> float: ...
+    @property
+    def volume(self) -> float: ...
+    @property
+    def bounds(self) -> tuple[tuple[float, float, float], tuple[float, float, float]] | None: ...
     @property
     def vertex_count(self) -> int: ...
     @property
@@ -53,7 +61,7 @@ class Mesh:
                height: int = 600) -> npt.NDArray[np.uint8]: ...
 
 def from_numpy(array: npt.NDArray[Any], threshold: float | None = None, voxel_size: Vec3 = 1.0,
-               origin: Sequence[float] = (0.0, 0.0, 0.0)) -> Volume: ...
+               origin: Sequence[float] = (0.0, 0.0, 0.0), *, spacing: Vec3 | None = None) -> Volume: ...
 def read_volume(path: PathLike, *, dims: Sequence[int] | None = None, dtype: npt.DTypeLike | None = None,
                 big_endian: bool = False, spacing: Vec3 | None = None, header_bytes: int = 0,
                 threshold: float | None = None, labels: Sequence[float] | None = None, mask: str | None = None,
@@ -76,10 +84,10 @@ def euler_characteristic(volume: Volume, adjacency: Literal[26, 6] = 26, progres
 # distance_field() and extract() are made at import from the settings table the CLI's
 # flags come from (lib/isovdb/pipeline/extract_settings.cc); test_settings.py checks
 # these two signatures against it.
-def distance_field(volume: Volume, *, distance: Literal["interface", "tracker"] = "interface", half_width: int = 3,
+def distance_field(volume: Volume | npt.NDArray[Any], *, distance: Literal["interface", "tracker"] = "interface", half_width: int = 3,
                    sdf_chunk: int = 64, closing: int = 0, progress: Progress = None,
                    output: PathLike | None = None, grid_name: str = "sdf") -> Volume | dict[str, Any]: ...
-def extract(volume: Volume, *, method: Literal["adaptive", "regular", "vdb"] = "adaptive", iso: float = 0,
+def extract(volume: Volume | npt.NDArray[Any], *, method: Literal["adaptive", "regular", "vdb"] = "adaptive", iso: float = 0,
             adaptivity: float = 0, distance: Literal["interface", "tracker"] = "interface", half_width: int = 3,
             sdf_chunk: int = 64, closing: int = 0, meta_cell: int = 128, threads: int | None = 0,
             min_level: int = -1, max_cell_size: int = 16, max_level: int = -1, finest_size: int = 1,

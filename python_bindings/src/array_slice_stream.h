@@ -21,8 +21,11 @@ namespace isovdb::python {
 class ArraySliceStream final : public io::SliceStream {
  public:
   /// @param[in] shape  the array's shape (x, y, z), each > 0
+  /// @param[in] xFastest  the array is Fortran-ordered (x varies fastest, like a raw file's
+  ///                      samples and a [z, y, x] stack's transpose): it is read in z-planes;
+  ///                      else C-ordered (z fastest), read in x-planes
   ArraySliceStream(const std::byte* data, std::array<std::int64_t, 3> shape, io::SampleType type, bool bigEndian,
-                   std::array<double, 3> spacing, std::array<double, 3> origin);
+                   std::array<double, 3> spacing, std::array<double, 3> origin, bool xFastest = false);
 
   const std::string& source() const override { return source_; }
   const io::VolumeHeader& header() const override { return header_; }
@@ -35,6 +38,7 @@ class ArraySliceStream final : public io::SliceStream {
   std::string source_ = "numpy array";
   io::VolumeHeader header_;
   std::int64_t nextSlice_ = 0;
+  bool xFastest_ = false;
 };
 
 }  // namespace isovdb::python

@@ -54,7 +54,8 @@ void bindExtract(py::module_& m) {
                            "TypeError for a setting of the wrong type."}},
                          "Contours a volume into a closed triangle Mesh in world space (the `isovdb extract` job).\n\n"
                          "volume: a mask (its distance field is computed first), a distance field (from\n"
-                         "distance_field() or a level-set .vdb) or a scalar field (from_numpy of floats, SEG-Y).\n"
+                         "distance_field() or a level-set .vdb) or a scalar field (from_numpy of floats, SEG-Y);\n"
+                         "a 3-D numpy array is read by from_numpy(array) first.\n"
                          "Every setting is the CLI flag of the same name with the same default: method='adaptive'\n"
                          "(closed, manifold, free of self-intersections, on the data boundary's caps too, far\n"
                          "fewer triangles; within max_error=1 voxel of the full-resolution surface), 'regular'\n"

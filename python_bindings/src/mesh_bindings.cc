@@ -6,7 +6,9 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
+#include <utility>
 
 #include "bindings.h"
 #include "isovdb/io/mesh_file.h"
@@ -77,6 +79,41 @@ PyMesh readMesh(const std::filesystem::path& path) {
   return result;
 }
 
+/// Surface area and signed volume (positive for outward-facing closed surfaces), in double.
+std::pair<double, double> areaAndVolume(const mesh::Mesh& m) {
+  double area = 0, volume = 0;
+  for (const auto& t : m.triangles) {
+    std::array<std::array<double, 3>, 3> p{};
+    for (int k = 0; k < 3; ++k)
+      for (int a = 0; a < 3; ++a) p[k][a] = m.positions[t[k]][a];
+    const std::array<double, 3> u{p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]};
+    const std::array<double, 3> v{p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
+    const std::array<double, 3> n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    area += 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    volume += (p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) - p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
+               p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0])) /
+              6.0;
+  }
+  return {area, volume};
+}
+
+/// The state pickle and copy.deepcopy keep: copies of the arrays and the statistics as JSON text.
+py::tuple meshState(py::object self) {
+  const PyMesh& m = self.cast<const PyMesh&>();
+  const py::object normals =
+      m.mesh.normals.empty() ? py::none() : py::object(view(m.mesh.normals, self).attr("copy")());
+  return py::make_tuple(view(m.mesh.positions, self).attr("copy")(), view(m.mesh.triangles, self).attr("copy")(),
+                        normals, m.statistics.dump());
+}
+
+PyMesh meshFromState(const py::tuple& state) {
+  if (state.size() != 4)
+    throw py::value_error("Mesh: cannot unpickle a state of " + std::to_string(state.size()) + " items");
+  PyMesh result = makeMesh(state[0], state[1], state[2]);
+  result.statistics = Json::parse(state[3].cast<std::string>());
+  return result;
+}
+
 }  // namespace
 
 void bindMesh(py::module_& m) {
@@ -84,7 +121,9 @@ void bindMesh(py::module_& m) {
 An indexed triangle mesh in world space (as extract() returns it, or read_mesh() reads it).
 
 vertices, triangles and normals are numpy views onto the mesh's own buffers (no copy):
-writing into them changes the mesh; they stay valid as long as any of them or the Mesh lives.)doc")
+writing into them changes the mesh; they stay valid as long as any of them or the Mesh lives.
+A Mesh pickles (process pools, Dask) and copy.deepcopy()s: the copy owns its own arrays and
+statistics.)doc")
       .def(py::init(&makeMesh), py::arg("vertices"), py::arg("triangles"), py::arg("normals") = py::none(),
            "Mesh from an (n, 3) array of positions, an (m, 3) array of vertex indices and optionally (n, 3) "
            "normals (copied, as float32 and uint32).")
@@ -95,6 +134,9 @@ writing into them changes the mesh; they stay valid as long as any of them or th
           "triangles", [](py::object self) { return view(self.cast<const PyMesh&>().mesh.triangles, self); },
           "(m, 3) uint32 vertex indices, counter-clockwise seen from outside (outward orientation).")
       .def_property_readonly(
+          "faces", [](py::object self) { return view(self.cast<const PyMesh&>().mesh.triangles, self); },
+          "The triangles under the name trimesh, PyVista and Open3D use: (m, 3) uint32 vertex indices.")
+      .def_property_readonly(
           "normals",
           [](py::object self) -> py::object {
             const PyMesh& mesh = self.cast<const PyMesh&>();
@@ -104,6 +146,25 @@ writing into them changes the mesh; they stay valid as long as any of them or th
           "(n, 3) float32 per-vertex normals, or None when the mesh has none (the contouring methods "
           "produce none today; PLY files and Mesh(normals=...) may carry them).")
       .def_property_readonly("vertex_count", [](const PyMesh& m) { return m.mesh.vertexCount(); })
+      .def_property_readonly(
+          "area", [](const PyMesh& m) { return areaAndVolume(m.mesh).first; }, "Surface area, world units squared.")
+      .def_property_readonly(
+          "volume", [](const PyMesh& m) { return areaAndVolume(m.mesh).second; },
+          "Signed enclosed volume, world units cubed (divergence theorem): positive when a closed mesh's "
+          "triangles face outward, meaningless for an open one (check()['closed']).")
+      .def_property_readonly(
+          "bounds",
+          [](const PyMesh& m) -> py::object {
+            if (m.mesh.positions.empty()) return py::none();
+            std::array<float, 3> lo = m.mesh.positions.front(), hi = lo;
+            for (const auto& p : m.mesh.positions)
+              for (int a = 0; a < 3; ++a) {
+                lo[a] = std::min(lo[a], p[a]);
+                hi[a] = std::max(hi[a], p[a]);
+              }
+            return py::make_tuple(toTuple(lo), toTuple(hi));
+          },
+          "((xmin, ymin, zmin), (xmax, ymax, zmax)) of the vertices, or None for an empty mesh.")
       .def_property_readonly("triangle_count", [](const PyMesh& m) { return m.mesh.triangleCount(); })
       .def_property_readonly(
           "statistics", [](const PyMesh& m) { return toPython(m.statistics); },
@@ -145,6 +206,7 @@ A shaded picture of the mesh, as `isovdb extract --preview` draws it: an oblique
 the front, right and above, faces seen from outside bone-coloured, faces seen from behind
 red. Returns a (height, width, 3) uint8 array (display it with matplotlib's imshow or
 IPython); writes it as a PNG too when `path` is given.)doc")
+      .def(py::pickle(&meshState, &meshFromState))
       .def("__repr__", [](const PyMesh& m) {
         return "<isovdb.Mesh " + std::to_string(m.mesh.vertexCount()) + " vertices, " +
                std::to_string(m.mesh.triangleCount()) + " triangles>";

@@ -4,6 +4,7 @@
 #include <pybind11/pybind11.h>
 
 #include "bindings.h"
+#include "setting_keywords.h"
 #include "isovdb/errors.h"
 #include "isovdb/pipeline/memory.h"
 
@@ -31,7 +32,7 @@ PYBIND11_MODULE(isovdb, m) {
     try {
       if (error) std::rethrow_exception(error);
     } catch (const isovdb::InputError& e) {
-      PyErr_SetString(PyExc_ValueError, e.what());
+      PyErr_SetString(PyExc_ValueError, isovdb::python::inPythonTerms(e.what()).c_str());
     } catch (const isovdb::IoError& e) {
       PyErr_SetString(PyExc_OSError, e.what());
     } catch (const isovdb::Interrupted& e) {

@@ -26,18 +26,10 @@ const char* typeName() {
     return "a number";
 }
 
-/// The help text with its CLI flags (`--max-cell-size`) as keywords (`max_cell_size`).
-std::string keywordHelp(std::string_view help) {
-  static const std::regex flag("--([a-z][a-z-]*)");
-  std::string text(help), result;
-  auto last = text.cbegin();
-  for (std::sregex_iterator it(text.begin(), text.end(), flag), end; it != end; ++it) {
-    result.append(last, (*it)[0].first);
-    result += pipeline::keywordOf((*it)[1].str());
-    last = (*it)[0].second;
-  }
-  result.append(last, text.cend());
-  return result;
+/// A flag's Python keyword: its name with '_' for '-', except where Python's differs.
+std::string keywordOfFlag(const std::string& flag) {
+  if (flag == "type") return "dtype";  // read_volume(dtype=...) is --type
+  return pipeline::keywordOf(flag);
 }
 
 /// The current value of a setting as Python source (`0.15`, `True`, `'vdb'`): numbers as
@@ -75,6 +67,19 @@ std::string wrapped(const std::string& text, const std::string& indent) {
 }
 
 }  // namespace
+
+std::string inPythonTerms(std::string_view message) {
+  static const std::regex flag("(^|[\\s('\"])--([a-z][a-z-]*)");
+  std::string text(message), result;
+  auto last = text.cbegin();
+  for (std::sregex_iterator it(text.begin(), text.end(), flag), end; it != end; ++it) {
+    result.append(last, (*it)[2].first - 2);
+    result += keywordOfFlag((*it)[2].str());
+    last = (*it)[0].second;
+  }
+  result.append(last, text.cend());
+  return result;
+}
 
 void assignSettings(const std::vector<pipeline::Setting>& settings, const py::dict& values) {
   for (const pipeline::Setting& setting : settings) {
@@ -114,7 +119,7 @@ void defineSettingsFunction(py::module_& m, const std::string& name, const std::
     const std::string fallback = pythonSource(setting);
     parameters += ", " + keyword + "=" + fallback;
     values += "'" + keyword + "': " + keyword + ", ";
-    doc += wrapped(keyword + " (" + fallback + "): " + keywordHelp(setting.help), "    ") + "\n";
+    doc += wrapped(keyword + " (" + fallback + "): " + inPythonTerms(setting.help), "    ") + "\n";
   }
   doc += "\n";
   for (const ExtraKeyword& extra : extras) {
@@ -122,8 +127,11 @@ void defineSettingsFunction(py::module_& m, const std::string& name, const std::
     forwarded += ", " + extra.name + "=" + extra.name;
     doc += extra.help + "\n";
   }
-  const std::string source = "def " + name + "(" + parameters + "):\n    return " + implementation + "(volume, {" +
-                             values + "}" + forwarded + ")\n";
+  // A numpy array stands for from_numpy(array), as in scikit-image and PyVista.
+  const std::string source = "def " + name + "(" + parameters +
+                             "):\n    if not isinstance(volume, Volume):\n        volume = from_numpy(volume)\n"
+                             "    return " +
+                             implementation + "(volume, {" + values + "}" + forwarded + ")\n";
   py::exec(source, m.attr("__dict__"));
   py::object function = m.attr(name.c_str());
   function.attr("__doc__") = doc;

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -14,6 +15,11 @@
 #include "isovdb/pipeline/extract_settings.h"
 
 namespace isovdb::python {
+
+/// A library message in Python's terms: each CLI flag (`--meta-cell`, `--type`) named as the
+/// keyword Python takes (`meta_cell`, `dtype`). Flags are recognised at the start of the
+/// text or after a space, quote or parenthesis, so a file name holding "--" is kept.
+std::string inPythonTerms(std::string_view message);
 
 /// Stores each keyword of `values` in the setting it names; None keeps the setting's default.
 /// @throw InputError naming the keyword when a value has the wrong type.

@@ -42,7 +42,27 @@ io::SampleType sampleTypeOf(const py::dtype& dtype) {
   if (kind == 'f' && size == 4) return io::SampleType::Float32;
   if (kind == 'f' && size == 8) return io::SampleType::Float64;
   throw py::value_error("from_numpy: unsupported dtype " + py::str(static_cast<py::handle>(dtype)).cast<std::string>() +
-                        ", expected bool, (u)int8, (u)int16, (u)int32, float32 or float64");
+                        ", expected bool, (u)int8, (u)int16, (u)int32, (u)int64 (values within int32), float16, "
+                        "float32 or float64");
+}
+
+/// The array itself, or a converted copy for the dtypes numpy hands out that the ingest does not
+/// read: 64-bit integers (scipy.ndimage.label's labels) as int32 when their values fit, float16
+/// as float32. Other dtypes stay (sampleTypeOf names them).
+py::array withSupportedDtype(const py::array& array) {
+  const char kind = array.dtype().kind();
+  const auto size = array.dtype().itemsize();
+  if ((kind == 'i' || kind == 'u') && size == 8) {
+    const double lo = array.attr("min")().cast<double>(), hi = array.attr("max")().cast<double>();
+    if (lo < -2147483648.0 || hi > 2147483647.0)
+      throw py::value_error("from_numpy: " + py::str(static_cast<py::handle>(array.dtype())).cast<std::string>() +
+                            " values in [" + std::to_string(static_cast<long long>(lo)) + ", " +
+                            std::to_string(static_cast<long long>(hi)) +
+                            "] do not fit in int32; pass a.astype(numpy.float64) to read them as a scalar field");
+    return array.attr("astype")("int32");
+  }
+  if (kind == 'f' && size == 2) return array.attr("astype")("float32");
+  return array;
 }
 
 std::string shapeText(const py::array& array) {
@@ -50,21 +70,28 @@ std::string shapeText(const py::array& array) {
       .cast<std::string>();
 }
 
-PyVolume fromNumpy(const py::object& object, const py::object& threshold, const py::object& voxelSize,
-                   const py::object& origin) {
+PyVolume fromNumpy(const py::object& object, const py::object& threshold, py::object voxelSize,
+                   const py::object& origin, const py::object& spacingKeyword) {
+  if (!spacingKeyword.is_none()) {
+    if (!(py::isinstance<py::float_>(voxelSize) && voxelSize.cast<double>() == 1.0))
+      throw py::value_error("from_numpy: give voxel_size= or spacing= (the same keyword), not both");
+    voxelSize = spacingKeyword;
+  }
   if (!py::isinstance<py::array>(object))
     throw py::value_error("from_numpy: expected a numpy array, got " +
                           py::str(py::type::handle_of(object).attr("__name__")).cast<std::string>());
-  const auto array = py::reinterpret_borrow<py::array>(object);
+  auto array = py::reinterpret_borrow<py::array>(object);
   if (array.ndim() != 3)
     throw py::value_error("from_numpy: expected a 3-D array indexed [x, y, z], got a " + std::to_string(array.ndim()) +
                           "-D array of shape " + shapeText(array));
   if (array.size() == 0) throw py::value_error("from_numpy: empty array of shape " + shapeText(array));
+  array = withSupportedDtype(array);
   const io::SampleType type = sampleTypeOf(array.dtype());
-  if (!(array.flags() & py::array::c_style))
-    throw py::value_error(
-        "from_numpy: the array is not C-contiguous (a transposed or sliced view); "
-        "pass numpy.ascontiguousarray(a), which copies it");
+  // A [z, y, x] stack's transpose is Fortran-ordered: read as it lies (x fastest, like a raw
+  // file). Any other layout (a strided slice) is copied into C order first.
+  const bool xFastest = !(array.flags() & py::array::c_style) && (array.flags() & py::array::f_style);
+  if (!(array.flags() & py::array::c_style) && !xFastest)
+    array = py::module_::import("numpy").attr("ascontiguousarray")(array);
   const bool bigEndian = array.dtype().attr("byteorder").cast<std::string>() == ">";
   const std::array<double, 3> spacing = threeDoubles(voxelSize, "voxel_size");
   for (double s : spacing)
@@ -75,7 +102,7 @@ PyVolume fromNumpy(const py::object& object, const py::object& threshold, const 
   if (!threshold.is_none()) rule.threshold = threshold.cast<double>();
 
   ArraySliceStream stream(static_cast<const std::byte*>(array.data()), {array.shape(0), array.shape(1), array.shape(2)},
-                          type, bigEndian, spacing, position);
+                          type, bigEndian, spacing, position, xFastest);
   PyVolume result;
   {
     py::gil_scoped_release release;
@@ -249,7 +276,7 @@ isovalue) or "sdf" (narrow-band signed distance in voxels, negative inside). Mak
 read_volume(), read_segy(), from_numpy() or distance_field().)doc")
       .def_property_readonly(
           "kind", [](const PyVolume& v) { return std::string(volume::volumeKindName(v.volume.kind())); },
-          "\"mask\", \"scalar\" or \"sdf\".")
+          "\"mask\", \"scalar\" or \"distance field\".")
       .def_property_readonly(
           "name", [](const PyVolume& v) { return v.volume.name(); },
           "Name of the grid (the source file, or the grid name of a .vdb).")
@@ -292,19 +319,23 @@ header). Written through a temporary file. Raises OSError when the path is not w
       });
 
   m.def("from_numpy", &fromNumpy, py::arg("array"), py::arg("threshold") = py::none(), py::arg("voxel_size") = 1.0,
-        py::arg("origin") = py::make_tuple(0.0, 0.0, 0.0), R"doc(
+        py::arg("origin") = py::make_tuple(0.0, 0.0, 0.0), py::kw_only(), py::arg("spacing") = py::none(), R"doc(
 Makes a Volume from a 3-D numpy array indexed [x, y, z] (the order of pyopenvdb's
 copyFromArray and of the CLI's --dims X,Y,Z; a raw file for the CLI is array.T.tofile()).
 
-array: C-contiguous, dtype bool, (u)int8, (u)int16, (u)int32, float32 or float64, every
-  value finite. Read in place (no copy) by the same streaming ingest as a file.
+array: dtype bool, (u)int8, (u)int16, (u)int32, float32 or float64 (int64/uint64 whose values
+  fit in int32, and float16, are converted), every value finite. A C-ordered array or a
+  Fortran-ordered one (a [z, y, x] stack's transpose, stack.T: x fastest like a raw file) is
+  read in place, without a copy, by the same streaming ingest as a file; other layouts (a
+  strided slice) are copied first.
 threshold: None: integer and bool arrays become a mask (inside = value > 0), float arrays
   a scalar field (contour it with extract(iso=...)). A number: a mask, inside = value > threshold.
-voxel_size: world units per voxel, one number or (sx, sy, sz).
+voxel_size: world units per voxel, one number or (sx, sy, sz); spacing= is the same keyword
+  (read_volume's name), give one of them.
 origin: world position of voxel [0, 0, 0].
 
-Raises ValueError for a non-array, an array that is not 3-D, empty, not C-contiguous
-(use numpy.ascontiguousarray, which copies), of another dtype, or holding NaN/inf.)doc");
+Raises ValueError for a non-array, an array that is not 3-D, empty, of another dtype, or
+holding NaN/inf.)doc");
 
   m.def("read_volume", &readVolume, py::arg("path"), py::kw_only(), py::arg("dims") = py::none(),
         py::arg("dtype") = py::none(), py::arg("big_endian") = false, py::arg("spacing") = py::none(),

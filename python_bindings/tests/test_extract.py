@@ -147,8 +147,48 @@ def test_boundary_open_leaves_the_mesh_open_on_the_sampled_box():
     ({"threads": -2}, "threads"),
 ])
 def test_invalid_options_raise_value_error(kwargs, message, torus_volume):
-    with pytest.raises(ValueError, match=message):
+    with pytest.raises(ValueError, match=message) as raised:
         isovdb.extract(torus_volume, **kwargs)
+    assert "--" not in str(raised.value), "messages name keywords, not CLI flags"
+
+
+def test_messages_name_keywords_not_flags(torus_volume, tmp_path):
+    with pytest.raises(ValueError, match=r"^meta_cell: expected a power of two"):
+        isovdb.extract(torus_volume, meta_cell=3)
+    (tmp_path / "volume.raw").write_bytes(bytes(64))
+    with pytest.raises(ValueError, match=r"\bdims\b.*\bdtype\b") as raised:
+        isovdb.read_volume(tmp_path / "volume.raw")
+    assert "--" not in str(raised.value)
+
+
+def test_a_numpy_array_is_read_by_from_numpy():
+    mask = ball((24, 24, 24), (12, 12, 12), 8)
+    a = isovdb.extract(mask, method="regular")
+    b = isovdb.extract(isovdb.from_numpy(mask), method="regular")
+    assert np.array_equal(a.vertices, b.vertices) and np.array_equal(a.triangles, b.triangles)
+
+
+@pytest.mark.parametrize("iso", [float("nan"), float("inf")])
+def test_a_non_finite_iso_is_refused(iso, torus_volume):
+    with pytest.raises(ValueError, match="iso: expected a finite number"):
+        isovdb.extract(torus_volume, iso=iso)
+
+
+def test_an_iso_outside_a_scalar_fields_values_is_refused():
+    z, y, x = np.mgrid[0:32, 0:32, 0:32]
+    field = (12.0 - np.sqrt((x - 16) ** 2 + (y - 16) ** 2 + (z - 16) ** 2)).astype(np.float32)
+    assert isovdb.extract(field, iso=0.0).triangle_count > 0
+    with pytest.raises(ValueError, match=r"iso 500 lies outside the values' range \[-15\.7.*, 12\]"):
+        isovdb.extract(field, iso=500.0)
+
+
+def test_a_masks_iso_beyond_its_band_points_to_scalar_fields():
+    # An integer CT array is a mask (value > 0): iso is then a distance in voxels, not a
+    # sample value, and 500 voxels meets no distance field.
+    ct = (ball((24, 24, 24), (12, 12, 12), 8) * 1000).astype(np.uint16)
+    with pytest.raises(ValueError, match=r"is a mask, so iso 500 is a distance in voxels.*scalar field"):
+        isovdb.extract(ct, iso=500)
+    assert isovdb.extract(ct.astype(np.float32), iso=500).triangle_count > 0
 
 
 def test_progress_reports_stages_and_percentages(torus_volume):

@@ -105,4 +105,33 @@ def test_help_is_useful():
     doc = isovdb.extract.__doc__
     for word in ("adaptive", "regular", "vdb", "meta_cell", "finest_size", "max_cell_size", "progress", "threads"):
         assert word in doc
-    assert "numpy" in isovdb.from_numpy.__doc__ and "C-contiguous" in isovdb.from_numpy.__doc__
+    assert "numpy" in isovdb.from_numpy.__doc__ and "Fortran-ordered" in isovdb.from_numpy.__doc__
+    assert "pickles" in isovdb.Mesh.__doc__
+
+
+def test_pickle_and_deepcopy_give_an_independent_equal_mesh(mesh):
+    import copy
+    import pickle
+    for clone in (pickle.loads(pickle.dumps(mesh)), copy.deepcopy(mesh)):
+        assert np.array_equal(clone.vertices, mesh.vertices)
+        assert np.array_equal(clone.triangles, mesh.triangles)
+        assert clone.statistics == mesh.statistics
+        clone.vertices[0, 0] += 1.0  # its own buffers
+        assert clone.vertices[0, 0] != mesh.vertices[0, 0]
+    with_normals = isovdb.Mesh(*TETRAHEDRON, normals=np.eye(4, 3, dtype=np.float32))
+    assert np.array_equal(pickle.loads(pickle.dumps(with_normals)).normals, with_normals.normals)
+
+
+def test_faces_area_volume_and_bounds_of_a_tetrahedron():
+    tetrahedron = isovdb.Mesh(*TETRAHEDRON)
+    assert tetrahedron.faces is not None and np.array_equal(tetrahedron.faces, tetrahedron.triangles)
+    assert tetrahedron.area == pytest.approx(1.5 + np.sqrt(3) / 2)
+    assert tetrahedron.volume == pytest.approx(1 / 6)  # outward: positive
+    assert isovdb.Mesh(TETRAHEDRON[0], TETRAHEDRON[1][:, ::-1]).volume == pytest.approx(-1 / 6)
+    assert tetrahedron.bounds == ((0, 0, 0), (1, 1, 1))
+    assert isovdb.Mesh(np.zeros((0, 3), np.float32), np.zeros((0, 3), np.uint32)).bounds is None
+
+
+def test_a_ball_mesh_encloses_about_the_masks_voxels(mesh):
+    voxels = np.count_nonzero(ball((24, 24, 24), (12, 12, 12), 8))
+    assert mesh.volume == pytest.approx(voxels, rel=0.1)

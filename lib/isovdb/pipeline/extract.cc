@@ -60,6 +60,38 @@ void indexToWorld(mesh::Mesh& mesh, const volume::Geometry& geometry) {
   });
 }
 
+namespace {
+
+/// An isovalue that cannot meet any surface is refused with the reason, instead of an empty
+/// mesh without a word (scikit-image's marching_cubes refuses the same).
+void checkIsoReachesSurface(const volume::Volume& volume, float iso, int halfWidth) {
+  if (!std::isfinite(iso)) throw InputError("--iso: expected a finite number, got " + std::to_string(iso));
+  const auto number = [](float v) {
+    std::ostringstream text;
+    text << v;
+    return text.str();
+  };
+  if (volume.kind() == volume::VolumeKind::Mask) {
+    // The mask's distance field exists within the band only: |iso| >= half-width meets none of it.
+    if (std::abs(iso) >= static_cast<float>(halfWidth))
+      throw InputError("'" + volume.name() + "' is a mask, so --iso " + number(iso) +
+                       " is a distance in voxels from its boundary and must lie inside the distance field's band, "
+                       "|iso| < --half-width " +
+                       std::to_string(halfWidth) +
+                       "; to contour the samples' values at an isovalue, read them as a scalar field (--scalar; "
+                       "from Python, an array of floats) or make the mask value > ISO (--threshold ISO)");
+    return;
+  }
+  const volume::GridStats stats = volume.stats();
+  const float lo = std::min(stats.activeVoxels > 0 ? stats.minValue : stats.background, stats.background);
+  const float hi = std::max(stats.activeVoxels > 0 ? stats.maxValue : stats.background, stats.background);
+  if (iso < lo || iso > hi)
+    throw InputError("'" + volume.name() + "': --iso " + number(iso) + " lies outside the values' range [" +
+                     number(lo) + ", " + number(hi) + "] (the background, beyond the data, included): no surface");
+}
+
+}  // namespace
+
 void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::MeshSink& sink, Interrupter* interrupter,
                  Statistics* stats) {
   if (options.threads < 0)
@@ -67,6 +99,7 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
   std::optional<tbb::global_control> threads;
   if (options.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, options.threads);
   const float iso = options.contour.iso;
+  checkIsoReachesSurface(volume, iso, options.distance.halfWidth);
   const float deadBand = volume::deadBandOf(volume);
   if (volume.kind() == volume::VolumeKind::Scalar && std::abs(iso) < deadBand) {
     std::ostringstream message;

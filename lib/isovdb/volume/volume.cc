@@ -68,6 +68,7 @@ GridStats treeStats(const TreeT& tree, bool withRange) {
     }
   }
   if constexpr (std::is_same_v<typename TreeT::ValueType, float>) {
+    stats.background = tree.background();
     if (withRange && stats.activeVoxels > 0) {
       const auto extrema = openvdb::tools::minMax(tree);
       stats.minValue = extrema.min();

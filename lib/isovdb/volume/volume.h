@@ -65,6 +65,7 @@ struct GridStats {
   std::array<int, 3> bboxMin{0, 0, 0};  ///< active bounding box, index space, inclusive
   std::array<int, 3> bboxMax{-1, -1, -1};
   float minValue = 0.f, maxValue = 0.f;  ///< value range (Scalar and DistanceField only)
+  float background = 0.f;                ///< value of inactive space (Scalar and DistanceField only)
 };
 
 /// A sparse volume: one OpenVDB grid, its kind and its world geometry.
