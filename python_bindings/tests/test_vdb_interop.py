@@ -21,7 +21,7 @@ def test_isovdb_sdf_reads_in_pyopenvdb_as_a_world_unit_level_set(tmp_path):
     dense = np.zeros([h - l + 1 for l, h in zip(lo, hi)], np.float32)
     grid.copyToArray(dense, ijk=lo)
     # isovdb keeps voxels inside; the file holds world units (x voxel size)
-    assert np.allclose(dense, sdf.to_numpy() * 0.25, atol=1e-6)
+    assert np.allclose(dense, sdf.to_numpy(bbox=(lo, hi)) * 0.25, atol=1e-6)
 
 
 def test_isovdb_mask_reads_in_pyopenvdb(tmp_path):

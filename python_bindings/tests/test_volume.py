@@ -294,6 +294,14 @@ def test_distance_field_is_negative_inside_and_banded(sphere_mask):
     assert abs(values[21 + 10, 17, 15]) < 1.0
 
 
+def test_distance_field_keeps_the_masks_index_space(sphere_mask):
+    # to_numpy() of the field covers the mask's array, so the two line up voxel for voxel.
+    sdf = isovdb.distance_field(isovdb.from_numpy(sphere_mask))
+    values = sdf.to_numpy()
+    assert values.shape == sphere_mask.shape
+    assert np.array_equal(values < 0, sphere_mask != 0)
+
+
 def test_distance_field_rejects_non_masks():
     scalar = isovdb.from_numpy(np.zeros((4, 4, 4), np.float32))
     with pytest.raises(ValueError):

@@ -9,6 +9,7 @@
 #include <mutex>
 
 #include "isovdb/volume/band_chunks.h"
+#include "isovdb/volume/sampled_box.h"
 
 namespace isovdb::volume {
 
@@ -51,7 +52,11 @@ Volume distanceField(const Volume& mask, const DistanceFieldOptions& options, In
   sdf->setTransform(openvdb::math::Transform::createLinearTransform(1.0));
   sdf->setName("sdf");
   sdf->setGridClass(openvdb::GRID_LEVEL_SET);
-  return Volume(VolumeKind::DistanceField, sdf, mask.geometry(), mask.name());
+  Volume field(VolumeKind::DistanceField, sdf, mask.geometry(), mask.name());
+  // The field covers the mask's index space: where the data ended travels with it (to_numpy's
+  // default box, caps on the data boundary).
+  if (const std::optional<IndexBox> box = sampledBox(mask)) setSampledBox(field, *box);
+  return field;
 }
 
 Volume interiorMask(const Volume& sdf, double iso) {
