@@ -182,6 +182,25 @@ def test_an_iso_outside_a_scalar_fields_values_is_refused():
         isovdb.extract(field, iso=500.0)
 
 
+@pytest.mark.parametrize("method", ["adaptive", "regular"])
+def test_a_field_whose_background_is_inside_gives_its_body_not_a_box(method):
+    # 20 - r at iso 0: the background (0, beyond the array) counts as inside, and read as it
+    # is it closed a box around the array (2 components, inside out); beyond the data is
+    # outside, so the ball comes back alone, and a ball leaving the array gets flat caps.
+    z, y, x = np.mgrid[0:48, 0:48, 0:48]
+    r = np.sqrt((x - 24.0) ** 2 + (y - 24.0) ** 2 + (z - 24.0) ** 2)
+    for radius, box in ((20.0, False), (28.0, True)):
+        mesh = isovdb.extract((radius - r).astype(np.float32), method=method)
+        report = mesh.check(self_intersections=False)
+        assert report["closed"] and report["manifold"] and report["components"] == 1
+        assert mesh.volume > 0
+        lo, hi = mesh.bounds
+        if box:
+            assert min(lo) == pytest.approx(0, abs=2e-3) and max(hi) == pytest.approx(47, abs=2e-3)  # caps on the box
+        else:
+            assert mesh.volume == pytest.approx(4 / 3 * np.pi * radius ** 3, rel=0.02)
+
+
 def test_a_masks_iso_beyond_its_band_points_to_scalar_fields():
     # An integer CT array is a mask (value > 0): iso is then a distance in voxels, not a
     # sample value, and 500 voxels meets no distance field.

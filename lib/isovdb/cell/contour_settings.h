@@ -79,6 +79,8 @@ struct ContourSettings {
   /// far outside (pipeline/octree_contour.cc), leaves across a face are refined to one
   /// voxel (octree/build.cc) and their vertices kept within 2 * kInteriorMargin of it
   /// (contour/adaptive_contour.cc), so Ju–Udeshi's test sees the cap's final positions.
+  /// Regular mode gets it only where the background lies inside the surface (beyond the
+  /// box it reads far outside; its caps are flattened onto the box afterwards).
   std::optional<DataBox> dataBox{};
 };
 

@@ -13,6 +13,7 @@
 #include "isovdb/errors.h"
 #include "isovdb/pipeline/load_volume.h"
 #include "isovdb/volume/ingest.h"
+#include "isovdb/volume/meta_cells.h"
 #include "isovdb/volume/sampled_box.h"
 
 namespace isovdb::pipeline {
@@ -125,8 +126,13 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
   // Caps are flattened piece by piece (the mesh still streams); dropping them
   // (Open) needs the whole mesh, so it is collected first.
   const bool open = box && options.boundary == BoundaryMode::Open;
-  // Adaptive mode makes its caps flat on the box while contouring; the others' are flattened here.
-  const bool capsMade = method == ContourMethod::Adaptive;
+  // Beyond the box the octree methods read far outside: always in adaptive mode, and in regular
+  // mode where the background lies inside the surface (a numpy field 40 - r at iso 0: else the
+  // background beyond the array made a box around it). Their caps then lie on the box (within
+  // rounding: the crossings sit next to the last samples) and are not flattened; the vdb
+  // method's and regular mode's others are flattened here.
+  const bool capsMade = box && (method == ContourMethod::Adaptive || (method == ContourMethod::Regular && !byLayers &&
+                                                                      volume::backgroundInside(field, iso)));
   mesh::MeshCollector whole;
   CappingSink capped(open ? static_cast<mesh::MeshSink&>(whole) : sink, capsMade ? std::nullopt : box);
   if (method == ContourMethod::Vdb) {
@@ -139,7 +145,7 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
     cell::ContourSettings settings = options.contour;
     settings.topology = regularTopologyFor(options.regularTopology, kind);
     octree::OctreeOptions tree = options.octree;
-    if (box && capsMade) settings.dataBox = {{box->min, box->max}};  // only adaptive mode reads it
+    if (capsMade) settings.dataBox = {{box->min, box->max}};
     if (byLayers)
       contourMaskWithOctree(volume, options.distance, settings, tree, options.metaCellSize, capped, interrupter, stats);
     else

@@ -162,8 +162,9 @@ void farOutsideBeyondDataBox(cell::MetaCellSamples& samples, float iso, float bo
       }
 }
 
-/// The box whose caps the contouring makes (set by extract for adaptive mode only; the
-/// other methods' caps are flattened onto the box afterwards, pipeline/data_boundary.h).
+/// The box beyond which the contouring reads far outside (set by extract for adaptive mode,
+/// whose caps lie on it, and for regular mode where the background lies inside; regular
+/// mode's caps are flattened onto the box afterwards, pipeline/data_boundary.h).
 std::optional<volume::IndexBox> capsIndexBox(const cell::ContourSettings& settings) {
   if (!settings.dataBox) return std::nullopt;
   return volume::IndexBox{(*settings.dataBox)[0], (*settings.dataBox)[1]};
