@@ -6,6 +6,8 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <cmath>
+#include <fstream>
+#include <iterator>
 
 #include "array_slice_stream.h"
 #include "bindings.h"
@@ -202,6 +204,65 @@ void write(const PyVolume& self, const std::filesystem::path& path, const std::s
     throw InputError("'" + path.string() + "': unknown volume format, expected .vdb, .raw or .nrrd");
 }
 
+/// A temporary .vdb file for pickling, removed when this goes out of scope.
+class TemporaryVdb {
+ public:
+  TemporaryVdb() {
+    const py::tuple made = py::module_::import("tempfile").attr("mkstemp")(py::arg("suffix") = ".vdb");
+    py::module_::import("os").attr("close")(made[0]);
+    path_ = made[1].cast<std::string>();
+  }
+  TemporaryVdb(const TemporaryVdb&) = delete;
+  TemporaryVdb& operator=(const TemporaryVdb&) = delete;
+  ~TemporaryVdb() {
+    std::error_code ignored;
+    std::filesystem::remove(path_, ignored);
+  }
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+/// What pickle keeps of a Volume: the grid as .vdb bytes (metadata, sampled box and
+/// transform included), its name and what reading it recorded.
+py::tuple volumeState(const PyVolume& self) {
+  const std::array<double, 3>& spacing = self.volume.geometry().spacing;
+  if (self.volume.kind() == volume::VolumeKind::DistanceField && (spacing[0] != spacing[1] || spacing[0] != spacing[2]))
+    throw InputError("Volume '" + self.volume.name() +
+                     "' cannot be pickled: a distance field with a non-uniform voxel size (" +
+                     py::str(toTuple(spacing)).cast<std::string>() + ") has no .vdb level-set form");
+  const TemporaryVdb file;
+  {
+    py::gil_scoped_release release;
+    store::writeVdb(file.path(), self.volume);
+  }
+  std::ifstream in(file.path(), std::ios::binary);
+  const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  return py::make_tuple(py::bytes(bytes), self.volume.name(), self.input.dump());
+}
+
+PyVolume volumeFromState(const py::tuple& state) {
+  if (state.size() != 3)
+    throw py::value_error("Volume: cannot unpickle a state of " + std::to_string(state.size()) + " items");
+  const TemporaryVdb file;
+  {
+    std::ofstream out(file.path(), std::ios::binary);
+    const std::string bytes = state[0].cast<std::string>();
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    if (!out) throw IoError("Volume: cannot unpickle: '" + file.path().string() + "' could not be written");
+  }
+  volume::Volume read;
+  {
+    py::gil_scoped_release release;
+    read = store::readVdb(file.path());
+  }
+  PyVolume result;
+  result.volume = volume::Volume(read.kind(), read.grid(), read.geometry(), state[1].cast<std::string>());
+  result.input = Json::parse(state[2].cast<std::string>());
+  return result;
+}
+
 py::object distanceField(const PyVolume& source, const py::dict& settings, const py::object& progress,
                          const std::optional<std::filesystem::path>& output, const std::string& gridName) {
   pipeline::DistanceChoices choices;
@@ -272,8 +333,10 @@ A sparse volume: one OpenVDB grid in voxel index space, its kind and its world g
 (world = origin + spacing * index).
 
 kind is "mask" (binary, inside = active), "scalar" (a sampled field, contoured at an
-isovalue) or "sdf" (narrow-band signed distance in voxels, negative inside). Make one with
-read_volume(), read_segy(), from_numpy() or distance_field().)doc")
+isovalue) or "distance field" (narrow-band signed distance in voxels, negative inside). Make
+one with read_volume(), read_segy(), from_numpy() or distance_field(). A Volume pickles
+(process pools, Dask) and copy.deepcopy()s: the grid travels as .vdb bytes, with its
+geometry, sampled box and what reading it recorded.)doc")
       .def_property_readonly(
           "kind", [](const PyVolume& v) { return std::string(volume::volumeKindName(v.volume.kind())); },
           "\"mask\", \"scalar\" or \"distance field\".")
@@ -308,6 +371,7 @@ box (a volume from from_numpy() returns its array's shape), else the active boun
 Returns bool for masks (True inside), float32 otherwise; inactive voxels read as the
 grid's background (0 for scalars, the clip value for clipped SEG-Y, +/-half_width
 outside the band of a distance field). Raises ValueError for an empty box.)doc")
+      .def(py::pickle(&volumeState, &volumeFromState))
       .def("write", &write, py::arg("path"), py::arg("grid_name") = "", R"doc(
 Writes the volume by extension: .vdb (one grid with its world transform; distance fields
 as level sets in world units, readable by pyopenvdb and VFX tools; grid_name: default

@@ -333,3 +333,23 @@ def test_euler_characteristic_adjacency_and_errors():
         isovdb.euler_characteristic(volume, adjacency=18)
     with pytest.raises(ValueError, match="scalar"):
         isovdb.euler_characteristic(isovdb.from_numpy(np.zeros((3, 3, 3), np.float32)))
+
+
+def test_volumes_of_every_kind_pickle_and_deep_copy(sphere_mask, data_dir):
+    import copy
+    import pickle
+    mask = isovdb.from_numpy(sphere_mask, voxel_size=(1, 2, 3), origin=(5, 6, 7))
+    sdf = isovdb.distance_field(isovdb.from_numpy(sphere_mask, voxel_size=0.5, origin=(5, 6, 7)))
+    volumes = [mask, sdf, isovdb.from_numpy(sphere_mask.astype(np.float32) - 0.5),
+               isovdb.read_segy(data_dir / "seismic" / "f3.sgy", clip=1000)]
+    for volume in volumes:
+        for clone in (pickle.loads(pickle.dumps(volume)), copy.deepcopy(volume)):
+            assert (clone.kind, clone.name, clone.spacing, clone.origin) == \
+                (volume.kind, volume.name, volume.spacing, volume.origin)
+            assert clone.info() == volume.info()
+            assert np.array_equal(clone.to_numpy(), volume.to_numpy())
+    a, b = isovdb.extract(mask, method="regular"), isovdb.extract(pickle.loads(pickle.dumps(mask)), method="regular")
+    assert np.array_equal(a.vertices, b.vertices) and np.array_equal(a.triangles, b.triangles)
+    # A level set needs uniform voxels: an anisotropic distance field says so.
+    with pytest.raises(ValueError, match="cannot be pickled: a distance field with a non-uniform voxel size"):
+        pickle.dumps(isovdb.distance_field(mask))
