@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MPL-2.0
 // Copyright Contributors to the isovdb project.
 // Volume, from_numpy, read_volume, distance_field.
+#include <pybind11/eval.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
@@ -382,8 +383,16 @@ header). Written through a temporary file. Raises OSError when the path is not w
                "' shape " + py::str(py::cast(v).attr("shape")).cast<std::string>() + ">";
       });
 
-  m.def("from_numpy", &fromNumpy, py::arg("array"), py::arg("threshold") = py::none(), py::arg("voxel_size") = 1.0,
-        py::arg("origin") = py::make_tuple(0.0, 0.0, 0.0), py::kw_only(), py::arg("spacing") = py::none(), R"doc(
+  m.def("_from_numpy", &fromNumpy, py::arg("array"), py::arg("threshold"), py::arg("voxel_size"), py::arg("origin"),
+        py::arg("spacing"), "from_numpy()'s implementation.");
+  // Defined in Python so that a wrong keyword gets Python's own message naming it (pybind11's
+  // lists the overloads and prints the whole array).
+  py::exec(R"(def from_numpy(array, threshold=None, voxel_size=1.0, origin=(0.0, 0.0, 0.0), *, spacing=None):
+    return _from_numpy(array, threshold, voxel_size, origin, spacing)
+)",
+           m.attr("__dict__"));
+  m.attr("from_numpy").attr("__module__") = m.attr("__name__");
+  m.attr("from_numpy").attr("__doc__") = R"doc(
 Makes a Volume from a 3-D numpy array indexed [x, y, z] (the order of pyopenvdb's
 copyFromArray and of the CLI's --dims X,Y,Z; a raw file for the CLI is array.T.tofile()).
 
@@ -399,7 +408,7 @@ voxel_size: world units per voxel, one number or (sx, sy, sz); spacing= is the s
 origin: world position of voxel [0, 0, 0].
 
 Raises ValueError for a non-array, an array that is not 3-D, empty, of another dtype, or
-holding NaN/inf.)doc");
+holding NaN/inf.)doc";
 
   m.def("read_volume", &readVolume, py::arg("path"), py::kw_only(), py::arg("dims") = py::none(),
         py::arg("dtype") = py::none(), py::arg("big_endian") = false, py::arg("spacing") = py::none(),

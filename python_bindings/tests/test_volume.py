@@ -353,3 +353,9 @@ def test_volumes_of_every_kind_pickle_and_deep_copy(sphere_mask, data_dir):
     # A level set needs uniform voxels: an anisotropic distance field says so.
     with pytest.raises(ValueError, match="cannot be pickled: a distance field with a non-uniform voxel size"):
         pickle.dumps(isovdb.distance_field(mask))
+
+
+def test_a_wrong_keyword_is_named_without_printing_the_array(sphere_mask):
+    with pytest.raises(TypeError, match="unexpected keyword argument 'level'") as raised:
+        isovdb.from_numpy(sphere_mask, level=3)
+    assert len(str(raised.value)) < 200
