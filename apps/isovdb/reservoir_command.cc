@@ -48,7 +48,7 @@ void addReservoirCommand(CLI::App& app, Context& context) {
     for (const auto& input : state->inputs) inputs.push_back({"the input", input});
     checkFilesBeforeWork(inputs, {{"-o", state->output}, {"--stats", state->statsPath}});
     pipeline::Statistics stats;
-    const mesh::Mesh mesh = pipeline::extractReservoir(state->options, stats);
+    const mesh::Mesh mesh = pipeline::extractReservoir(state->options, stats, context.interrupter());
     {
       pipeline::Statistics::StageTimer timer(&stats, "write");
       io::writeMesh(state->output, mesh);

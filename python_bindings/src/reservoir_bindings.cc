@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "bindings.h"
+#include "progress_callback.h"
 #include "isovdb/pipeline/reservoir_extract.h"
 
 namespace isovdb::python {
@@ -18,7 +19,7 @@ namespace isovdb::python {
 namespace {
 
 PyMesh extractReservoir(const std::variant<std::filesystem::path, std::vector<std::filesystem::path>>& grid,
-                        const std::string& property, double iso, int tessellate) {
+                        const std::string& property, double iso, int tessellate, const py::object& progress) {
   pipeline::ReservoirOptions options;
   if (const auto* one = std::get_if<std::filesystem::path>(&grid))
     options.inputs = {*one};
@@ -29,10 +30,8 @@ PyMesh extractReservoir(const std::variant<std::filesystem::path, std::vector<st
   options.maxTessellation = tessellate;
   pipeline::Statistics stats;
   PyMesh result;
-  {
-    py::gil_scoped_release release;  // the stages report no progress (they take milliseconds)
-    result.mesh = pipeline::extractReservoir(options, stats);
-  }
+  CallbackProgress callback(progress);
+  callback.run([&] { result.mesh = pipeline::extractReservoir(options, stats, &callback); });
   result.statistics = std::move(stats.json());
   return result;
 }
@@ -42,7 +41,7 @@ PyMesh extractReservoir(const std::variant<std::filesystem::path, std::vector<st
 void bindReservoir(py::module_& m) {
   const pipeline::ReservoirOptions defaults;
   m.def("extract_reservoir", &extractReservoir, py::arg("grid"), py::kw_only(), py::arg("property"), py::arg("iso"),
-        py::arg("tessellate") = defaults.maxTessellation, R"doc(
+        py::arg("tessellate") = defaults.maxTessellation, py::arg("progress") = py::none(), R"doc(
 Isosurface of a cell property of an Eclipse corner-point grid (the `isovdb reservoir` job,
 paper 003): GRDECL deck -> corner-point grid -> cell values averaged to the cell corners
 over the active cells -> Marching Cubes on each hexahedron (asymptotic decider on faces),
@@ -53,6 +52,9 @@ grid: the .grdecl file, or a list: the grid file first, then files with more pro
 property: the cell property keyword (PORO, PERMX, FACIES, SOIL, ...). iso: its isovalue.
 tessellate: 0 keeps the flat triangles; K > 0 refines them as PN triangles (cubic geometry,
   envelope normals) with per-edge factors up to K, crack-free.
+progress: callable(stage: str, percent: int) per stage (read grdecl, corner-point grid,
+  marching cubes, pn triangles); if it raises, the work stops and its exception propagates
+  (Ctrl-C too).
 
 Returns a Mesh in the grid's coordinates with normals; mesh.statistics holds the figures
 (cells, active and inverted cells, handedness, triangles before and after tessellation,

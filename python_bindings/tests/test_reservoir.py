@@ -40,3 +40,24 @@ def test_bad_decks(tmp_path):
     bad.write_text("SPECGRID\n 1 1 1 1 F /\nCOORD\n 24*0 /\nZCORN\n 7*0 /\nPORO\n 1 /\n")
     with pytest.raises(ValueError, match="bad.grdecl"):
         isovdb.extract_reservoir(bad, property="PORO", iso=0.5)
+
+
+def test_progress_reports_each_stage_and_raising_cancels(data_dir):
+    deck = data_dir / "reservoir" / "spe9" / "SPE9_CP.DATA"
+    seen = []
+    isovdb.extract_reservoir(deck, property="PERMX", iso=100, tessellate=2,
+                             progress=lambda stage, percent: seen.append((stage, percent)))
+    stages = [stage for stage, _ in seen]
+    for stage in ("read grdecl", "corner-point grid", "marching cubes", "pn triangles"):
+        assert stage in stages
+    assert ("marching cubes", 100) in seen
+
+    class Stop(Exception):
+        pass
+
+    def stop(stage, percent):
+        if stage == "marching cubes":
+            raise Stop()
+
+    with pytest.raises(Stop):
+        isovdb.extract_reservoir(deck, property="PERMX", iso=100, progress=stop)

@@ -12,23 +12,29 @@
 
 namespace isovdb::pipeline {
 
-mesh::Mesh extractReservoir(const ReservoirOptions& options, Statistics& stats) {
+mesh::Mesh extractReservoir(const ReservoirOptions& options, Statistics& stats, Interrupter* interrupter) {
   reservoir::GrdeclDeck deck;
   reservoir::CornerPointGrid grid;
   reservoir::CornerField field;
   {
     Statistics::StageTimer timer(&stats, "read");
+    const ProgressStage progress(interrupter, "read grdecl");
+    progress.update(0, 1);
     deck = reservoir::readGrdecl(options.inputs);
+    progress.update(1, 1);
   }
   {
     Statistics::StageTimer timer(&stats, "grid");
+    const ProgressStage progress(interrupter, "corner-point grid");
+    progress.update(0, 1);
     grid = reservoir::buildCornerPointGrid(deck);
     field = reservoir::averageToCorners(grid, deck, options.property);
+    progress.update(1, 1);
   }
   reservoir::HexContourResult contour;
   {
     Statistics::StageTimer timer(&stats, "marching_cubes");
-    contour = reservoir::contourHexahedra(grid, field, {.iso = options.iso});
+    contour = reservoir::contourHexahedra(grid, field, {.iso = options.iso}, interrupter);
   }
   auto& section = stats["reservoir"];
   section["dims"] = grid.dims;
@@ -56,6 +62,8 @@ mesh::Mesh extractReservoir(const ReservoirOptions& options, Statistics& stats) 
   section["warnings"] = warnings;
   if (options.maxTessellation <= 0) return std::move(contour.mesh);
   Statistics::StageTimer timer(&stats, "pn_tessellation");
+  const ProgressStage progress(interrupter, "pn triangles");
+  progress.update(0, 1);
   reservoir::TessellationResult pn = reservoir::tessellatePn(contour.mesh, {.maxFactor = options.maxTessellation});
   section["tessellation_max_factor"] = options.maxTessellation;
   section["tessellation_mean_edge_factor"] = pn.meanFactor;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "isovdb/mesh/mesh.h"
+#include "isovdb/progress.h"
 #include "isovdb/pipeline/statistics.h"
 
 namespace isovdb::pipeline {
@@ -22,6 +23,6 @@ struct ReservoirOptions {
 
 /// Runs the reservoir stages; figures (cells, triangles, warnings, timings) go to `stats`.
 /// @throw InputError for a bad deck (naming the file).
-mesh::Mesh extractReservoir(const ReservoirOptions& options, Statistics& stats);
+mesh::Mesh extractReservoir(const ReservoirOptions& options, Statistics& stats, Interrupter* interrupter = nullptr);
 
 }  // namespace isovdb::pipeline

@@ -236,16 +236,24 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
 }  // namespace
 
 HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField& field,
-                                  const HexContourOptions& options) {
+                                  const HexContourOptions& options, Interrupter* interrupter) {
   const std::size_t cells = grid.cellCount();
   std::vector<BlockOutput> outputs((cells + kBlockCells - 1) / kBlockCells);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, outputs.size()), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t block = r.begin(); block != r.end(); ++block) {
-      const std::size_t end = std::min(cells, (block + 1) * kBlockCells);
-      for (std::size_t cell = block * kBlockCells; cell < end; ++cell)
-        if (field.usable[cell]) contourCell(grid, field, cell, options, outputs[block]);
-    }
-  });
+  // Groups of blocks in parallel; progress and cancellation between groups, on this thread.
+  constexpr std::size_t kGroupBlocks = 64;
+  const ProgressStage progress(interrupter, "marching cubes");
+  for (std::size_t group = 0; group < outputs.size(); group += kGroupBlocks) {
+    progress.update(static_cast<double>(group), static_cast<double>(outputs.size()));
+    const std::size_t last = std::min(outputs.size(), group + kGroupBlocks);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(group, last), [&](const tbb::blocked_range<std::size_t>& r) {
+      for (std::size_t block = r.begin(); block != r.end(); ++block) {
+        const std::size_t end = std::min(cells, (block + 1) * kBlockCells);
+        for (std::size_t cell = block * kBlockCells; cell < end; ++cell)
+          if (field.usable[cell]) contourCell(grid, field, cell, options, outputs[block]);
+      }
+    });
+  }
+  progress.update(1, 1);
 
   HexContourResult result;
   std::vector<std::uint64_t> keys;

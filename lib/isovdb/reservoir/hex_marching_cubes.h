@@ -21,6 +21,7 @@
 #include <cstdint>
 
 #include "isovdb/mesh/mesh.h"
+#include "isovdb/progress.h"
 #include "isovdb/reservoir/corner_point_grid.h"
 
 namespace isovdb::reservoir {
@@ -37,7 +38,9 @@ struct HexContourResult {
   std::int64_t ambiguousFaces = 0;  ///< faces resolved by the asymptotic decider (counted per cell)
 };
 
+/// @param interrupter  progress per group of cell blocks ("marching cubes") and cancellation
+///                     (throws Interrupted); may be null.
 HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField& field,
-                                  const HexContourOptions& options = {});
+                                  const HexContourOptions& options = {}, Interrupter* interrupter = nullptr);
 
 }  // namespace isovdb::reservoir
