@@ -6,13 +6,12 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <algorithm>
-#include <cmath>
 #include <optional>
-#include <utility>
 
 #include "bindings.h"
 #include "isovdb/io/mesh_file.h"
 #include "isovdb/io/png_file.h"
+#include "isovdb/mesh/measures.h"
 #include "isovdb/mesh/preview.h"
 #include "isovdb/mesh/validate.h"
 #include "isovdb/pipeline/mesh_report.h"
@@ -79,24 +78,6 @@ PyMesh readMesh(const std::filesystem::path& path) {
   return result;
 }
 
-/// Surface area and signed volume (positive for outward-facing closed surfaces), in double.
-std::pair<double, double> areaAndVolume(const mesh::Mesh& m) {
-  double area = 0, volume = 0;
-  for (const auto& t : m.triangles) {
-    std::array<std::array<double, 3>, 3> p{};
-    for (int k = 0; k < 3; ++k)
-      for (int a = 0; a < 3; ++a) p[k][a] = m.positions[t[k]][a];
-    const std::array<double, 3> u{p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]};
-    const std::array<double, 3> v{p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
-    const std::array<double, 3> n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
-    area += 0.5 * std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    volume += (p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) - p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
-               p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0])) /
-              6.0;
-  }
-  return {area, volume};
-}
-
 /// The state pickle and copy.deepcopy keep: copies of the arrays and the statistics as JSON text.
 py::tuple meshState(py::object self) {
   const PyMesh& m = self.cast<const PyMesh&>();
@@ -147,9 +128,9 @@ statistics.)doc")
           "produce none today; PLY files and Mesh(normals=...) may carry them).")
       .def_property_readonly("vertex_count", [](const PyMesh& m) { return m.mesh.vertexCount(); })
       .def_property_readonly(
-          "area", [](const PyMesh& m) { return areaAndVolume(m.mesh).first; }, "Surface area, world units squared.")
+          "area", [](const PyMesh& m) { return mesh::measure(m.mesh).area; }, "Surface area, world units squared.")
       .def_property_readonly(
-          "volume", [](const PyMesh& m) { return areaAndVolume(m.mesh).second; },
+          "volume", [](const PyMesh& m) { return mesh::measure(m.mesh).signedVolume; },
           "Signed enclosed volume, world units cubed (divergence theorem): positive when a closed mesh's "
           "triangles face outward, meaningless for an open one (check()['closed']).")
       .def_property_readonly(

@@ -18,6 +18,7 @@
 #include <tbb/parallel_for.h>
 
 #include "isovdb/errors.h"
+#include "isovdb/mesh/measures.h"
 #include "isovdb/mesh/mesh_checks.h"
 #include "isovdb/mesh/self_intersection.h"
 
@@ -262,11 +263,7 @@ std::vector<ComponentReport> buildComponents(const Mesh& mesh, const std::vector
       components.emplace_back();
     }
     ++components[l].triangles;
-    // The tetrahedron (origin, a, b, c): summed over a closed surface, the volume it encloses.
-    const auto corner = [&](int k) {
-      return Eigen::Map<const Eigen::Vector3f>(mesh.positions[tri[static_cast<std::size_t>(k)]].data()).cast<double>();
-    };
-    components[l].signedVolume += corner(0).dot(corner(1).cross(corner(2))) / 6.0;
+    components[l].signedVolume += signedVolumeTerm(mesh, tri);
   }
   std::vector<std::uint8_t> componentFlags(components.size(), 0);
   for (std::size_t v = 0; v < n; ++v) {
