@@ -3,15 +3,30 @@
 #include "isovdb/contour/error_bound.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <optional>
 
+#include "isovdb/cell/dmc_table.h"
+#include "isovdb/cell/dual_vertex.h"
 #include "isovdb/cell/trilinear.h"
+#include "isovdb/mesh/triangle_grid.h"
+#include "isovdb/octree/criteria.h"
+#include "isovdb/octree/sample_phases.h"
 
 namespace isovdb::contour {
 
-std::vector<octree::MortonKey> leavesBeyondErrorBound(const cell::MetaCellSamples& samples,
-                                                      const octree::LinearOctree& tree, const mesh::Mesh& mesh,
-                                                      float iso, float maxError, int finestSize) {
-  std::vector<octree::MortonKey> keys;
+namespace {
+
+/// Side of the bins the meta-cell's triangles are sorted into for the distance queries
+/// (voxels): a coarse leaf's triangles are up to twice its size long.
+constexpr double kBinVoxels = 4.0;
+
+/// Keys of the leaves coarser than `finestSize` whose closed box holds a vertex, triangle
+/// centroid or edge midpoint of `mesh` farther than `maxError` from the level.
+void addLeavesOfFarMeshPoints(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
+                              const mesh::Mesh& mesh, float iso, float maxError, int finestSize,
+                              std::vector<octree::MortonKey>& keys) {
   const auto check = [&](Vec3f p) {
     for (int a = 0; a < 3; ++a) p[a] -= static_cast<float>(samples.origin[a]);
     if (cell::distanceToLevel(samples, p, iso) <= maxError) return;
@@ -35,6 +50,66 @@ std::vector<octree::MortonKey> leavesBeyondErrorBound(const cell::MetaCellSample
     check({0.5f * (b[0] + c[0]), 0.5f * (b[1] + c[1]), 0.5f * (b[2] + c[2])});  // cheaper than a set of edges
     check({0.5f * (c[0] + a[0]), 0.5f * (c[1] + a[1]), 0.5f * (c[2] + a[2])});
   }
+}
+
+/// True if every vertex full-resolution contouring places in the unit cells of `leaf` that
+/// the surface crosses lies within `maxError` of the mesh in `grid`: manifold DMC's groups
+/// (dmc_table.h), a QEF vertex for a single group and mass points for several, as
+/// contour/leaf_groups.cc places them at 1 voxel.
+bool unitCellVerticesWithin(const cell::MetaCellSamples& samples, const octree::SamplePhases& phases,
+                            const octree::OctreeLeaf& leaf, cell::DualVertexOptions options,
+                            const mesh::TriangleGrid& grid, float maxError) {
+  bool within = true;
+  octree::forEachCrossedUnitCell(phases, leaf.origin, leaf.size, [&](const std::array<int, 3>& origin) {
+    if (!within) return;
+    const cell::DmcEntry& entry = cell::dmcEntry(octree::cellCornerSigns(phases, origin, 1));
+    options.massPointOnly = entry.vertexCount > 1;
+    for (int g = 0; g < entry.vertexCount && within; ++g) {
+      const cell::DualVertex v =
+          cell::computeDualVertex(samples, origin, 1, entry.groups[static_cast<std::size_t>(g)], options);
+      within = !v.valid() || grid.within(v.position, maxError);
+    }
+  });
+  return within;
+}
+
+/// Keys of the leaves coarser than `finestSize` holding a full-resolution vertex farther than
+/// `maxError` from `mesh`: the other side of the bound. A coarse leaf's vertex can sit on the
+/// level set and still miss a part of the surface regular mode meshes (a one-voxel slit of
+/// background along the leaf's edge, whose unit-cell vertices lie 0.6 voxel from the slit's
+/// crossings). Leaves on the meta-cell's boundary are left out: the seam's triangles, which
+/// would cover their points, are made later by stitching.
+void addLeavesMissingFullResolutionVertices(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
+                                            const mesh::Mesh& mesh, const cell::DualVertexOptions& options,
+                                            float maxError, int finestSize, std::vector<octree::MortonKey>& keys) {
+  if (!std::isfinite(maxError)) return;  // nothing lies farther than that
+  std::optional<octree::SamplePhases> phases;  // the grid and the phases only where a leaf needs them
+  std::optional<mesh::TriangleGrid> grid;
+  for (std::size_t i = 0; i < tree.leafCount(); ++i) {
+    const octree::OctreeLeaf& leaf = tree.leaf(i);
+    if (!leaf.surface || leaf.size <= finestSize) continue;
+    bool onBoundary = false;
+    for (int a = 0; a < 3; ++a)
+      onBoundary = onBoundary || leaf.origin[a] == 0 || leaf.origin[a] + leaf.size == samples.size;
+    if (onBoundary) continue;
+    if (!grid) {
+      phases.emplace(samples, options.iso);
+      grid.emplace(mesh, std::max(kBinVoxels, 2.0 * maxError));
+    }
+    if (!unitCellVerticesWithin(samples, *phases, leaf, options, *grid, maxError)) keys.push_back(leaf.key);
+  }
+}
+
+}  // namespace
+
+std::vector<octree::MortonKey> leavesBeyondErrorBound(const cell::MetaCellSamples& samples,
+                                                      const octree::LinearOctree& tree, const mesh::Mesh& mesh,
+                                                      const cell::DualVertexOptions& options, float maxError,
+                                                      int finestSize) {
+  std::vector<octree::MortonKey> keys;
+  addLeavesOfFarMeshPoints(samples, tree, mesh, options.iso, maxError, finestSize, keys);
+  // The costlier side once the mesh's own points hold: the pass would be built again anyway.
+  if (keys.empty()) addLeavesMissingFullResolutionVertices(samples, tree, mesh, options, maxError, finestSize, keys);
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
   return keys;

@@ -13,10 +13,20 @@
 /// field to first order (cell/trilinear.h, distanceToLevel); the leaves coarser than
 /// one voxel whose closed box holds a point beyond the bound are split, and the
 /// meta-cell is built and contoured again (pipeline/octree_contour.cc).
+///
+/// The other way round, the full-resolution surface against the mesh: the vertices
+/// full-resolution contouring would place in the unit cells of each coarse leaf
+/// (manifold DMC's groups, the vertices of adaptive mode at one voxel) must lie
+/// within the bound of the meta-cell's mesh (exact point-triangle distances,
+/// mesh/mesh_distance.h). A coarse leaf's vertex on the level set can still miss
+/// part of what regular mode meshes: the frog skeleton's one-voxel slit of
+/// background along a 2-voxel leaf's edge, whose unit-cell vertices lie 0.6 voxel
+/// from the slit's crossings, stayed 0.57 voxel off at every bound before.
 #pragma once
 
 #include <vector>
 
+#include "isovdb/cell/dual_vertex.h"
 #include "isovdb/cell/meta_cell_samples.h"
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/octree/linear_octree.h"
@@ -25,10 +35,14 @@ namespace isovdb::contour {
 
 /// @brief Keys of the leaves of `tree` larger than `finestSize` voxels (the octree's
 ///        finest cells, which cannot be split) whose closed box holds a
-///        vertex, triangle centroid or edge midpoint of `mesh` (global voxel index coordinates) farther
-///        than `maxError` from the level `iso`: sorted, unique.
+///        vertex, triangle centroid or edge midpoint of `mesh` (global voxel index
+///        coordinates) farther than `maxError` from the level `options.iso`, or
+///        which hold a full-resolution vertex farther than `maxError` from `mesh`
+///        (leaves on the meta-cell's boundary excepted: their seam is stitched
+///        later): sorted, unique. `options` place the vertices as contouring does.
 std::vector<octree::MortonKey> leavesBeyondErrorBound(const cell::MetaCellSamples& samples,
                                                       const octree::LinearOctree& tree, const mesh::Mesh& mesh,
-                                                      float iso, float maxError, int finestSize = 1);
+                                                      const cell::DualVertexOptions& options, float maxError,
+                                                      int finestSize = 1);
 
 }  // namespace isovdb::contour

@@ -111,7 +111,8 @@ contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const E
     // the block built again (each pass only deepens the tree, so this ends).
     std::vector<octree::MortonKey> beyond;
     if (bounded)
-      beyond = contour::leavesBeyondErrorBound(samples, tree, result.mesh, settings.iso, options.maxError, finest);
+      beyond = contour::leavesBeyondErrorBound(samples, tree, result.mesh, cell::dualVertexOptions(settings),
+                                               options.maxError, finest);
     totals.contourSeconds += secondsSince(t0);
     std::vector<octree::MortonKey> forced;
     std::set_union(options.forcedSplits.begin(), options.forcedSplits.end(), beyond.begin(), beyond.end(),
