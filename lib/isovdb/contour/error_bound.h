@@ -18,7 +18,7 @@
 /// full-resolution contouring would place in the unit cells of each coarse leaf
 /// (manifold DMC's groups, the vertices of adaptive mode at one voxel) must lie
 /// within the bound of the meta-cell's mesh (exact point-triangle distances,
-/// mesh/mesh_distance.h). A coarse leaf's vertex on the level set can still miss
+/// mesh/triangle_grid.h). A coarse leaf's vertex on the level set can still miss
 /// part of what regular mode meshes: the frog skeleton's one-voxel slit of
 /// background along a 2-voxel leaf's edge, whose unit-cell vertices lie 0.6 voxel
 /// from the slit's crossings, stayed 0.57 voxel off at every bound before.
