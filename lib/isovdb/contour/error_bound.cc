@@ -11,7 +11,6 @@
 #include "isovdb/cell/dual_vertex.h"
 #include "isovdb/cell/trilinear.h"
 #include "isovdb/mesh/triangle_grid.h"
-#include "isovdb/octree/criteria.h"
 #include "isovdb/octree/sample_phases.h"
 
 namespace isovdb::contour {
@@ -60,16 +59,17 @@ bool unitCellVerticesWithin(const cell::MetaCellSamples& samples, const octree::
                             const octree::OctreeLeaf& leaf, cell::DualVertexOptions options,
                             const mesh::TriangleGrid& grid, float maxError) {
   bool within = true;
-  octree::forEachCrossedUnitCell(phases, leaf.origin, leaf.size, [&](const std::array<int, 3>& origin) {
-    if (!within) return;
-    const cell::DmcEntry& entry = cell::dmcEntry(octree::cellCornerSigns(phases, origin, 1));
-    options.massPointOnly = entry.vertexCount > 1;
-    for (int g = 0; g < entry.vertexCount && within; ++g) {
-      const cell::DualVertex v =
-          cell::computeDualVertex(samples, origin, 1, entry.groups[static_cast<std::size_t>(g)], options);
-      within = !v.valid() || grid.within(v.position, maxError);
-    }
-  });
+  octree::forEachCrossedUnitCell(
+      phases, leaf.origin, leaf.size, [&](const std::array<int, 3>& origin, std::uint8_t config) {
+        if (!within) return;
+        const cell::DmcEntry& entry = cell::dmcEntry(config);
+        options.massPointOnly = entry.vertexCount > 1;
+        for (int g = 0; g < entry.vertexCount && within; ++g) {
+          const cell::DualVertex v =
+              cell::computeDualVertex(samples, origin, 1, entry.groups[static_cast<std::size_t>(g)], options);
+          within = !v.valid() || grid.within(v.position, maxError);
+        }
+      });
   return within;
 }
 
@@ -82,7 +82,7 @@ bool unitCellVerticesWithin(const cell::MetaCellSamples& samples, const octree::
 void addLeavesMissingFullResolutionVertices(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
                                             const mesh::Mesh& mesh, const cell::DualVertexOptions& options,
                                             float maxError, int finestSize, std::vector<octree::MortonKey>& keys) {
-  if (!std::isfinite(maxError)) return;  // nothing lies farther than that
+  if (!std::isfinite(maxError)) return;        // nothing lies farther than that
   std::optional<octree::SamplePhases> phases;  // the grid and the phases only where a leaf needs them
   std::optional<mesh::TriangleGrid> grid;
   for (std::size_t i = 0; i < tree.leafCount(); ++i) {

@@ -92,26 +92,37 @@ class SamplePhases {
   std::vector<std::uint64_t> words_;
 };
 
-/// @brief Calls `visit(cell)` (its min corner, meta-cell offsets) for every unit cell of
-///        [origin, origin + size]^3 whose eight corners are not all of one phase, in
-///        x-fastest order, reading four rows of phase bits per 63 cells along x.
+/// @brief Calls `visit(cell, config)` for every unit cell of [origin, origin + size]^3
+///        whose eight corners are not all of one phase: its min corner (meta-cell
+///        offsets) and corner signs (bit c set iff corner c is inside), in x-fastest order.
 /// @pre the cell lies in the block.
 template <class Visit>
 void forEachCrossedUnitCell(const SamplePhases& phases, std::array<int, 3> origin, int size, Visit&& visit) {
+  // Cells i0 .. i0 + 62 of a row come from one 64-bit run of each of the four sample
+  // rows at their corners: bit i of `all` (`any`) is set iff every (some) corner
+  // sample at x = i0 + i is inside; a cell is crossed iff it has an inside corner but
+  // not only inside corners.
+  constexpr int kCellsPerRun = 63;
   for (int k = 0; k < size; ++k)
     for (int j = 0; j < size; ++j)
-      for (int i0 = 0; i0 < size; i0 += 63) {
-        const int cells = std::min(63, size - i0);
+      for (int i0 = 0; i0 < size; i0 += kCellsPerRun) {
+        const int cells = std::min(kCellsPerRun, size - i0);
         const int x = origin[0] + i0, y = origin[1] + j, z = origin[2] + k;
-        const std::uint64_t r00 = phases.row(x, y, z, cells + 1), r10 = phases.row(x, y + 1, z, cells + 1);
-        const std::uint64_t r01 = phases.row(x, y, z + 1, cells + 1), r11 = phases.row(x, y + 1, z + 1, cells + 1);
-        const std::uint64_t all = r00 & r10 & r01 & r11, any = r00 | r10 | r01 | r11;
-        // Cell t has corners at bits t and t + 1 of the four rows.
-        std::uint64_t crossed = ((any | (any >> 1)) & ~(all & (all >> 1))) & SamplePhases::lowBits(cells);
+        const std::array<std::uint64_t, 4> rows{phases.row(x, y, z, cells + 1), phases.row(x, y + 1, z, cells + 1),
+                                                phases.row(x, y, z + 1, cells + 1),
+                                                phases.row(x, y + 1, z + 1, cells + 1)};
+        const std::uint64_t all = rows[0] & rows[1] & rows[2] & rows[3];
+        const std::uint64_t any = rows[0] | rows[1] | rows[2] | rows[3];
+        std::uint64_t crossed = (any | (any >> 1)) & ~(all & (all >> 1)) & SamplePhases::lowBits(cells);
         while (crossed != 0) {
-          const int t = std::countr_zero(crossed);
+          const int i = std::countr_zero(crossed);
           crossed &= crossed - 1;
-          visit(std::array<int, 3>{x + t, y, z});
+          std::uint8_t config = 0;
+          for (int c = 0; c < 8; ++c) {
+            const std::uint64_t row = rows[static_cast<std::size_t>(c >> 1)];  // (y, z) bits of the corner
+            config = static_cast<std::uint8_t>(config | (((row >> (i + (c & 1))) & 1u) << c));
+          }
+          visit(std::array<int, 3>{x + i, y, z}, config);
         }
       }
 }
