@@ -308,45 +308,48 @@ class MetaCellRun {
     const cell::ContourSettings& options = engine_.settings;
     std::size_t next = 0;
     candidates_ += cells.size();
-    tbb::parallel_pipeline(tokens_, tbb::make_filter<void, std::shared_ptr<MetaCellJob>>(
-                                        tbb::filter_mode::serial_in_order,
-                                        [&](tbb::flow_control& control) -> std::shared_ptr<MetaCellJob> {
-                                          if (next >= cells.size()) {
-                                            control.stop();
-                                            return nullptr;
-                                          }
-                                          auto job = std::make_shared<MetaCellJob>();
-                                          job->position = next++;
-                                          return job;
-                                        }) &
-                                        tbb::make_filter<std::shared_ptr<MetaCellJob>, std::shared_ptr<MetaCellJob>>(
-                                            tbb::filter_mode::parallel,
-                                            [&](std::shared_ptr<MetaCellJob> job) {
-                                              const auto t0 = std::chrono::steady_clock::now();
-                                              cell::MetaCellSamples& samples = sampleBlocks_.local();
-                                              read(cells[job->position], samples);
-                                              const float iso = engineIso(kind_, options.iso, engine_, samples);
-                                              job->totals.readSeconds += secondsSince(t0);
-                                              job->contoured = volume::hasSignChange(samples, iso);
-                                              if (job->contoured)
-                                                job->result = contourBlock(samples, engine_, iso, job->totals, nullptr);
-                                              return job;
-                                            }) &
-                                        tbb::make_filter<std::shared_ptr<MetaCellJob>, void>(
-                                            tbb::filter_mode::serial_in_order, [&](std::shared_ptr<MetaCellJob> job) {
-                                              totals_.add(job->totals);
-                                              if (job->contoured) {
-                                                ++contoured_;
-                                                const auto base = static_cast<std::uint32_t>(sink_.vertexCount());
-                                                for (mesh::Triangle& t : job->result.mesh.triangles)
-                                                  for (std::uint32_t& v : t) v += base;
-                                                sink_.addVertices(job->result.mesh.positions);
-                                                sink_.addTriangles(job->result.mesh.triangles);
-                                                contour::rebaseSeam(job->result.seam, base);
-                                                seams_.add(cells[job->position], std::move(job->result.seam));
-                                              }
-                                              cellDone();
-                                            }));
+    // The jobs are owned here, not by the pipeline's tokens: when a filter throws
+    // (Ctrl-C through cellDone, a bad block) TBB cancels the tokens in flight without
+    // destroying them, so an item type that owns memory would leak its meta-cell's mesh.
+    std::vector<std::unique_ptr<MetaCellJob>> jobs(cells.size());
+    tbb::parallel_pipeline(
+        tokens_, tbb::make_filter<void, MetaCellJob*>(tbb::filter_mode::serial_in_order,
+                                                      [&](tbb::flow_control& control) -> MetaCellJob* {
+                                                        if (next >= cells.size()) {
+                                                          control.stop();
+                                                          return nullptr;
+                                                        }
+                                                        jobs[next] = std::make_unique<MetaCellJob>();
+                                                        jobs[next]->position = next;
+                                                        return jobs[next++].get();
+                                                      }) &
+                     tbb::make_filter<MetaCellJob*, MetaCellJob*>(
+                         tbb::filter_mode::parallel,
+                         [&](MetaCellJob* job) {
+                           const auto t0 = std::chrono::steady_clock::now();
+                           cell::MetaCellSamples& samples = sampleBlocks_.local();
+                           read(cells[job->position], samples);
+                           const float iso = engineIso(kind_, options.iso, engine_, samples);
+                           job->totals.readSeconds += secondsSince(t0);
+                           job->contoured = volume::hasSignChange(samples, iso);
+                           if (job->contoured) job->result = contourBlock(samples, engine_, iso, job->totals, nullptr);
+                           return job;
+                         }) &
+                     tbb::make_filter<MetaCellJob*, void>(tbb::filter_mode::serial_in_order, [&](MetaCellJob* job) {
+                       totals_.add(job->totals);
+                       if (job->contoured) {
+                         ++contoured_;
+                         const auto base = static_cast<std::uint32_t>(sink_.vertexCount());
+                         for (mesh::Triangle& t : job->result.mesh.triangles)
+                           for (std::uint32_t& v : t) v += base;
+                         sink_.addVertices(job->result.mesh.positions);
+                         sink_.addTriangles(job->result.mesh.triangles);
+                         contour::rebaseSeam(job->result.seam, base);
+                         seams_.add(cells[job->position], std::move(job->result.seam));
+                       }
+                       jobs[job->position].reset();  // its mesh is in the sink now
+                       cellDone();
+                     }));
   }
 
   /// Stitches the seams and records the figures of the whole run.
