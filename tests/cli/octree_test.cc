@@ -76,6 +76,23 @@ TEST(CliOctree, MetaCellWithoutSurfaceAndBadMethod) {
   EXPECT_NE(output.find("sideways"), std::string::npos) << output;
 }
 
+// An index beyond the surface's meta-cells is refused by name (near the int range it
+// overflowed index * size: UBSan's report in the option walk).
+TEST(CliOctree, IndexOutsideTheSurfacesMetaCellsIsRefused) {
+  TempDir dir;
+  for (const std::string index : {"2,0,0", "-2147483648,-2147483648,-2147483648"}) {
+    std::string output;
+    EXPECT_EQ(runCommand(cliPath().string() + " -q octree " + writeBall(dir).string() +
+                             " --dims 64,64,64 --type uint8 --meta-cell 32 --index " + index,
+                         &output),
+              2)
+        << output;
+    EXPECT_NE(output.find("--index: " + index + " lies outside the surface's meta-cells (0..1, 0..1, 0..1"),
+              std::string::npos)
+        << output;
+  }
+}
+
 // The inspector shows the tree extract builds: with the same settings (here every
 // default) on a volume that fits in one meta-cell, the same leaves.
 TEST(CliOctree, SameLeavesAsExtractWithTheSameSettings) {

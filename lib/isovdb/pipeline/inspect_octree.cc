@@ -2,6 +2,9 @@
 // Copyright Contributors to the isovdb project.
 #include "isovdb/pipeline/inspect_octree.h"
 
+#include <algorithm>
+#include <string>
+
 #include "isovdb/errors.h"
 #include "isovdb/octree/inspect.h"
 #include "isovdb/pipeline/extract.h"
@@ -34,6 +37,24 @@ void inspectOctree(const volume::Volume& input, const InspectOctreeOptions& opti
   // samples really change sign (extract skips the others).
   octree::OctreeBuildStats buildStats;
   octree::LinearOctree tree;
+  if (options.metaCell) {
+    // Beyond the surface's meta-cells there is nothing to inspect (and index * size would
+    // overflow for indices near the int range).
+    volume::MetaCellIndex lo = partition.cells.front(), hi = lo;
+    for (const volume::MetaCellIndex& c : partition.cells)
+      for (int a = 0; a < 3; ++a) {
+        lo[a] = std::min(lo[a], c[a]);
+        hi[a] = std::max(hi[a], c[a]);
+      }
+    const volume::MetaCellIndex& wanted = *options.metaCell;
+    for (int a = 0; a < 3; ++a)
+      if (wanted[a] < lo[a] || wanted[a] > hi[a])
+        throw InputError("--index: " + std::to_string(wanted[0]) + "," + std::to_string(wanted[1]) + "," +
+                         std::to_string(wanted[2]) + " lies outside the surface's meta-cells (" +
+                         std::to_string(lo[0]) + ".." + std::to_string(hi[0]) + ", " + std::to_string(lo[1]) + ".." +
+                         std::to_string(hi[1]) + ", " + std::to_string(lo[2]) + ".." + std::to_string(hi[2]) +
+                         " at --meta-cell " + std::to_string(metaCellSize) + ")");
+  }
   volume::MetaCellIndex index = options.metaCell ? *options.metaCell : partition.cells.front();
   bool crossed = false;
   {
