@@ -165,9 +165,10 @@ TEST(InterfaceBand, CloserToAnalyticSolidsThanTheTracker) {
   const auto torus = [](double x, double y, double z) {
     return std::hypot(std::hypot(x - 32.4, y - 33.1) - 20.0, z - 31.8) - 8.3;
   };
-  for (const auto& [name, exact] :
+  for (const auto& [name, solid] :
        {std::pair<const char*, std::function<double(double, double, double)>>{"sphere", sphere}, {"torus", torus}}) {
     SCOPED_TRACE(name);
+    const auto& exact = solid;  // a lambda cannot capture a structured binding before C++20 in clang 14
     const Volume mask = maskOf({68, 68, 68}, [&](int x, int y, int z) { return exact(x, y, z) < 0; });
     const auto [mean, worst] = distanceError(interfaceField(mask), exact);
     const auto [trackerMean, trackerWorst] =
