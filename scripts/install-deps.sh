@@ -13,6 +13,8 @@ packages=(
   python3 python3-numpy python3-pytest python3-openvdb python3-segyio
   python3-dev pybind11-dev python3-matplotlib python3-nbformat python3-nbclient python3-ipykernel
 )
+# CI's sanitizer job (ISOVDB_SANITIZE=1): Clang with libFuzzer for fuzz/.
+[ "${ISOVDB_SANITIZE:-0}" = 1 ] && packages+=(clang-14 libfuzzer-14-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
