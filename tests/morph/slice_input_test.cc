@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <string>
 
 #include "isovdb/errors.h"
 #include "isovdb/morph/centring.h"
@@ -95,6 +97,24 @@ TEST(SliceImage, CorruptImageNamesTheFile) {
     FAIL();
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("bad.png"), std::string::npos);
+  }
+}
+
+// A top-down BMP stores its height negated; stb_image's header probe reports it so, and
+// the size check passed 8 x -16,777,208 pixels as fewer than any limit (the fuzzer's
+// slice_image harness: 134 M pixels decoded, then labelled for > 10 s).
+TEST(SliceImage, TopDownBmpCountsItsPixelsAgainstTheLimit) {
+  TempDir dir;
+  std::string bmp = monochromeBmp(rectangle(8, 8, 2, 2, 5, 5));
+  const std::int32_t height = -16777208;
+  for (int i = 0; i < 4; ++i) bmp[22 + i] = static_cast<char>((static_cast<std::uint32_t>(height) >> (8 * i)) & 0xff);
+  writeFile(dir / "tall.bmp", bmp);
+  try {
+    readSliceImage(dir / "tall.bmp", std::int64_t{1} << 20);
+    FAIL() << "a declared 8 x 16777208 image was decoded";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("tall.bmp': the image declares 8 x 16777208 pixels"), std::string::npos)
+        << e.what();
   }
 }
 

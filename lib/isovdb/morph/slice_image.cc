@@ -4,6 +4,8 @@
 
 #include <stb_image.h>
 
+#include <cstdint>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <string>
@@ -27,11 +29,16 @@ Mask2 readSliceImage(const std::filesystem::path& path, std::int64_t maxPixels) 
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   int width = 0, height = 0, channels = 0;
   // The header's size first: decoding allocates it before reading a single pixel.
+  // A top-down BMP declares a negative height, which stb_image's info reports as is
+  // (and its decoder as the absolute value): the fuzzer's 8 x -16,777,208 passed as
+  // fewer pixels than the limit.
   if (stbi_info_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()), static_cast<int>(bytes.size()), &width,
-                            &height, &channels) &&
-      static_cast<std::int64_t>(width) * height > maxPixels)
-    throw InputError("'" + path.string() + "': the image declares " + std::to_string(width) + " x " +
-                     std::to_string(height) + " pixels, more than --max-pixels " + std::to_string(maxPixels));
+                            &height, &channels)) {
+    const std::int64_t w = std::abs(static_cast<std::int64_t>(width)), h = std::abs(static_cast<std::int64_t>(height));
+    if (w * h > maxPixels)
+      throw InputError("'" + path.string() + "': the image declares " + std::to_string(w) + " x " + std::to_string(h) +
+                       " pixels, more than --max-pixels " + std::to_string(maxPixels));
+  }
   stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(bytes.data()),
                                           static_cast<int>(bytes.size()), &width, &height, &channels, 1);
   if (!pixels)
