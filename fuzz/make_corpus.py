@@ -9,6 +9,7 @@ their provenance there). Run once with the CLI built (the .vdb seeds are made by
     /usr/bin/python3 fuzz/make_corpus.py [--cli build/isovdb]
 """
 import argparse
+import base64
 import gzip
 import os
 import shutil
@@ -106,6 +107,10 @@ def main():
     disc = [[255 if (x - 3.5) ** 2 + (y - 3.5) ** 2 < 9 else 0 for x in range(8)] for y in range(8)]
     put("slice_image", "disc.png", png(8, 8, disc))
     put("slice_image", "disc.bmp", bmp(8, 8, disc))
+    # Findings kept as seeds (each replayed by ctest): a top-down BMP declaring 8 x -16,777,208.
+    put("slice_image", "finding_top_down_bmp", base64.b64decode(
+        "Qk32AAAAAAD/WTYAAAAoAAAACAAAAAgAAP8BABgAAAAAAMAAAAATCwAAEwsAAAAAAAAAAAAA////////////Qk32AAAAAP8AAAD/////"
+        "//////9CTfYAAAAA/7T/AAAAAAAAAAAA/5L/////////////////////AAAANgAAACgAAAA2AAAAKAAAAAgAAAAAAAAACAAAAA=="))
 
     # extract: dims - 2 per axis, flags (bit 0 adaptive, bit 1 one block), then one bit per voxel.
     def mask(dims, flags, inside):
