@@ -3,16 +3,16 @@
 # Copyright Contributors to the isovdb project.
 """Writes the seed corpora of fuzz/corpus/: small valid inputs of every reader (a
 fuzzer mutates from them), plus a few of the repository's sample files (data/, with
-their provenance there). Run once with the CLI built (the .vdb seeds are made by
-`isovdb sdf`); the files are committed, so nothing runs this in CI.
+their provenance there). Inputs that were findings of bench/fuzz.sh are kept beside
+them as corpus/<harness>/finding_* (left alone here), so ctest replays every one.
+Run once with the CLI built (the .vdb seeds are made by `isovdb sdf`); the files are
+committed, so nothing runs this in CI.
 
     /usr/bin/python3 fuzz/make_corpus.py [--cli build/isovdb]
 """
 import argparse
-import base64
 import gzip
 import os
-import shutil
 import struct
 import subprocess
 import tempfile
@@ -59,7 +59,11 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--cli", default=os.path.join(ROOT, "build", "isovdb"))
     args = parser.parse_args()
-    shutil.rmtree(os.path.join(HERE, "corpus"), ignore_errors=True)
+    # The fuzzers' findings (finding_*, copied from bench/fuzz.sh's OUT/findings/) stay.
+    for folder, _, names in os.walk(os.path.join(HERE, "corpus")):
+        for name in names:
+            if not name.startswith("finding_"):
+                os.remove(os.path.join(folder, name))
     voxels = ball()
 
     # raw: 4 option bytes (type | endianness << 3 | scalar << 4, dims - 1 each) then samples.
@@ -107,10 +111,6 @@ def main():
     disc = [[255 if (x - 3.5) ** 2 + (y - 3.5) ** 2 < 9 else 0 for x in range(8)] for y in range(8)]
     put("slice_image", "disc.png", png(8, 8, disc))
     put("slice_image", "disc.bmp", bmp(8, 8, disc))
-    # Findings kept as seeds (each replayed by ctest): a top-down BMP declaring 8 x -16,777,208.
-    put("slice_image", "finding_top_down_bmp", base64.b64decode(
-        "Qk32AAAAAAD/WTYAAAAoAAAACAAAAAgAAP8BABgAAAAAAMAAAAATCwAAEwsAAAAAAAAAAAAA////////////Qk32AAAAAP8AAAD/////"
-        "//////9CTfYAAAAA/7T/AAAAAAAAAAAA/5L/////////////////////AAAANgAAACgAAAA2AAAAKAAAAAgAAAAAAAAACAAAAA=="))
 
     # extract: dims - 2 per axis, flags (bit 0 adaptive, bit 1 one block), then one bit per voxel.
     def mask(dims, flags, inside):
