@@ -26,6 +26,9 @@ elif ! grep -q '^ISOVDB_BUILD_FUZZERS:BOOL=ON' "$build/CMakeCache.txt"; then
   exit 2
 fi
 cmake --build "$build" -j"$(nproc)" --target "${harnesses[@]/#/fuzz_}"
+# The tests' sanitizer environment (cmake/IsovdbSanitizers.cmake): TBB's alignment reports
+# suppressed, every other report fatal.
+export UBSAN_OPTIONS="suppressions=$PWD/cmake/ubsan_suppressions.txt:halt_on_error=1:print_stacktrace=1"
 found=0
 for name in "${harnesses[@]}"; do
   mkdir -p "$out/corpus/$name" "$out/findings/$name"
