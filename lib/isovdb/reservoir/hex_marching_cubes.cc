@@ -26,7 +26,7 @@ constexpr double kMaxCornerOffset = 0.02;
 
 constexpr int kFaces[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
 
-int edgeId(int a, int b) {  // 12 edges: axis * 4 + the other two bits
+constexpr int edgeId(int a, int b) {  // 12 edges: axis * 4 + the other two bits
   const int axisBit = a ^ b;
   const int axis = axisBit == 1 ? 0 : axisBit == 2 ? 1 : 2;
   const int base = a & ~axisBit;
@@ -35,6 +35,24 @@ int edgeId(int a, int b) {  // 12 edges: axis * 4 + the other two bits
     if (bit != axis) rest |= ((base >> bit) & 1) << r++;
   return axis * 4 + rest;
 }
+
+/// The faces (bits of kFaces) that hold each edge (edgeId's numbering).
+constexpr std::array<int, 12> kEdgeFaces = [] {
+  std::array<int, 12> masks{};
+  for (int a = 0; a < 8; ++a)
+    for (int axisBit : {1, 2, 4}) {
+      if (a & axisBit) continue;
+      const int b = a | axisBit;
+      int mask = 0;
+      for (int f = 0; f < 6; ++f) {
+        int found = 0;
+        for (int c : kFaces[f]) found += c == a || c == b;
+        mask |= (found == 2) << f;
+      }
+      masks[static_cast<std::size_t>(edgeId(a, b))] = mask;
+    }
+  return masks;
+}();
 
 struct CellVertex {
   std::uint64_t key;
@@ -133,6 +151,16 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
 
   const auto& ids = grid.pointIds[cell];
   const double det = centreJacobian(grid.corners[cell]);
+  // A corner's gradient serves each of its edges that the surface crosses (up to three).
+  std::array<Vec3d, 8> gradientAt;
+  std::uint8_t gradientKnown = 0;
+  auto gradientOf = [&](int corner) -> const Vec3d& {
+    if (!(gradientKnown >> corner & 1)) {
+      gradientAt[static_cast<std::size_t>(corner)] = cornerGradient(grid, field, cell, corner);
+      gradientKnown |= static_cast<std::uint8_t>(1 << corner);
+    }
+    return gradientAt[static_cast<std::size_t>(corner)];
+  };
   const bool flip = det < 0 || (det == 0 && grid.orientation < 0);
   std::array<int, 12> vertexOf;
   vertexOf.fill(-1);
@@ -171,24 +199,14 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
         v.key = (std::uint64_t{1} << 62) | ids[t < 0.5 ? a : b];
     }
     v.position = (pa + t * (pb - pa)).cast<float>();
-    v.gradient = options.normals
-                     ? Vec3d((1 - t) * cornerGradient(grid, field, cell, a) + t * cornerGradient(grid, field, cell, b))
-                     : Vec3d::Zero();
+    v.gradient = options.normals ? Vec3d((1 - t) * gradientOf(a) + t * gradientOf(b)) : Vec3d::Zero();
     vertexOf[edge] = static_cast<int>(out.vertices.size());
     out.vertices.push_back(v);
     return vertexOf[edge];
   };
   // Faces holding each cell edge: a fan diagonal between two crossings of one face
   // would coincide with the neighbour cell's diagonal (an edge of four triangles).
-  auto faceMask = [&](int edge) {
-    int mask = 0;
-    for (int f = 0; f < 6; ++f) {
-      int found = 0;
-      for (int c : kFaces[f]) found += c == edgeCorners[edge][0] || c == edgeCorners[edge][1];
-      mask |= (found == 2) << f;
-    }
-    return mask;
-  };
+  const auto faceMask = [](int edge) { return kEdgeFaces[static_cast<std::size_t>(edge)]; };
   auto emit = [&](int a, int b, int c) {
     std::array<int, 3> tri{a, c, b};  // faces towards lower values
     if (flip) std::swap(tri[1], tri[2]);
@@ -267,12 +285,26 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
   mesh::Mesh& m = result.mesh;
   m.positions.resize(keys.size());
   std::vector<Vec3d> gradients(keys.size(), Vec3d::Zero());
-  std::vector<std::uint32_t> index;
-  for (const BlockOutput& out : outputs) {
-    index.resize(out.vertices.size());
+  // Each block's vertices found among the keys in parallel; the sums below stay in block
+  // order, so the normals do not depend on the thread count.
+  std::vector<std::vector<std::uint32_t>> indices(outputs.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, outputs.size()), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t block = r.begin(); block != r.end(); ++block) {
+      const std::vector<CellVertex>& vertices = outputs[block].vertices;
+      indices[block].resize(vertices.size());
+      for (std::size_t n = 0; n < vertices.size(); ++n)
+        indices[block][n] =
+            static_cast<std::uint32_t>(std::lower_bound(keys.begin(), keys.end(), vertices[n].key) - keys.begin());
+    }
+  });
+  std::size_t triangles = 0;
+  for (const BlockOutput& out : outputs) triangles += out.triangles.size();
+  m.triangles.reserve(triangles);
+  for (std::size_t block = 0; block < outputs.size(); ++block) {
+    const BlockOutput& out = outputs[block];
+    const std::vector<std::uint32_t>& index = indices[block];
     for (std::size_t n = 0; n < out.vertices.size(); ++n) {
       const CellVertex& v = out.vertices[n];
-      index[n] = static_cast<std::uint32_t>(std::lower_bound(keys.begin(), keys.end(), v.key) - keys.begin());
       m.positions[index[n]] = {v.position.x(), v.position.y(), v.position.z()};
       gradients[index[n]] += v.gradient;
     }
