@@ -21,7 +21,7 @@ void addCheckCommand(CLI::App& app, Context& context) {
       app.add_subcommand("check",
                          "Validate a mesh: closed, manifold, self-intersections, Euler characteristic and genus. "
                          "Exit status 1 when a guarantee fails.");
-  command->add_option("MESH", state->mesh, "Mesh file (.ply)")->required();
+  command->add_option("MESH", state->mesh, "Mesh file (.ply, .obj, .stl or .glb)")->required();
   command->add_option("--against", state->against,
                       "Volume the mesh represents: compare chi(mesh) with 2*chi(solid) "
                       "(see --adjacency); the input flags below say how to read it");

@@ -46,8 +46,8 @@ void addCompareCommand(CLI::App& app, Context& context) {
       "Distance between two meshes of one surface (e.g. adaptive against regular): the two-sided Hausdorff "
       "distance, sampled, with mean and 99th percentile each way, in mesh units. Exit status 1 when it exceeds "
       "--max-distance.");
-  command->add_option("A", state->a, "First mesh (.ply or .obj)")->required();
-  command->add_option("B", state->b, "Second mesh (.ply or .obj)")->required();
+  command->add_option("A", state->a, "First mesh (.ply, .obj, .stl or .glb)")->required();
+  command->add_option("B", state->b, "Second mesh (.ply, .obj, .stl or .glb)")->required();
   command
       ->add_option("--spacing", state->spacing,
                    "Largest gap between samples on a triangle (mesh units); the true distance is at most the "

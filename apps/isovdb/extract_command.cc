@@ -30,7 +30,7 @@ void addExtractCommand(CLI::App& app, Context& context) {
     bool noSelfIntersections = false;
   };
   auto state = std::make_shared<State>();
-  CLI::App* command = app.add_subcommand("extract", "Volume -> triangle mesh (.ply or .obj)");
+  CLI::App* command = app.add_subcommand("extract", "Volume -> triangle mesh (.ply, .obj, .stl or .glb)");
   command->add_option("IN", state->input, "Volume file (.raw, .nrrd, .nhdr, .mhd, .mha, .sgy, .segy, .vdb)")
       ->required();
   command->add_option("-o,--output", state->output, "Output mesh (.ply binary, or .obj)")->required();
@@ -46,8 +46,7 @@ void addExtractCommand(CLI::App& app, Context& context) {
   command->callback([state, &context] {
     mesh::Mesh mesh;
     const pipeline::ExtractOptions options = state->choices.resolve();
-    if (!io::isMeshPath(state->output))
-      throw InputError("'" + state->output + "': unknown mesh format, expected .ply or .obj");
+    io::checkMeshPath(state->output);
     if (!state->previewPath.empty() && std::filesystem::path(state->previewPath).extension() != ".png")
       throw InputError("'" + state->previewPath + "': --preview writes a .png");
     checkFilesBeforeWork({{"the input", state->input}},

@@ -44,7 +44,7 @@ void addMorphCommand(CLI::App& app, Context& context) {
                          "level-set metamorphosis between them -> mesh");
   command->add_option("SLICES", state->input, "Folder of slice images (.png/.bmp), or a binary volume file")
       ->required();
-  command->add_option("-o,--output", state->output, "Output mesh (.ply or .obj)")->required();
+  command->add_option("-o,--output", state->output, "Output mesh (.ply, .obj, .stl or .glb)")->required();
   command->add_option("--heights", state->heights, "Folder input: text file with one height per slice image");
   command->add_option("--spacing", state->spacing, "Folder input: uniform spacing between slices (world units)");
   command->add_option("--pixel-size", state->pixelSize, "Folder input: pixel size (world units)")
@@ -117,8 +117,7 @@ void addMorphCommand(CLI::App& app, Context& context) {
     options.pair.progress = parseNamed(morph::kProgressNames, state->progress, "--progress", "progress mode");
     options.pair.particles = state->pls;
     morph::checkReconstructOptions(options);
-    if (!io::isMeshPath(state->output))
-      throw InputError("'" + state->output + "': unknown mesh format, expected .ply or .obj");
+    io::checkMeshPath(state->output);
     checkFilesBeforeWork({{"the input", state->input}, {"--heights", state->heights}},
                          {{"-o", state->output}, {"--stats", state->statsPath}, {"--vdb", state->vdbPath}});
     if (!state->saveSlices.empty()) {

@@ -27,7 +27,8 @@ void addReservoirCommand(CLI::App& app, Context& context) {
   command->add_option("--property", state->options.property, "Cell property keyword (PORO, FACIES, PERMX, ...)")
       ->required();
   command->add_option("--iso", state->options.iso, "Iso-value")->required();
-  command->add_option("-o,--output", state->output, "Output mesh (.ply binary, or .obj), with normals")->required();
+  command->add_option("-o,--output", state->output, "Output mesh: .ply (binary), .obj or .glb with normals, or .stl")
+      ->required();
   command->add_option("--tessellate", state->tessellate, "max=K: curved PN triangles, per-edge factors up to K");
   command->add_option("--stats", state->statsPath, "Also write the figures as JSON");
   command->callback([state, &context] {
@@ -46,6 +47,7 @@ void addReservoirCommand(CLI::App& app, Context& context) {
     }
     std::vector<NamedFile> inputs;
     for (const auto& input : state->inputs) inputs.push_back({"the input", input});
+    io::checkMeshPath(state->output);
     checkFilesBeforeWork(inputs, {{"-o", state->output}, {"--stats", state->statsPath}});
     pipeline::Statistics stats;
     const mesh::Mesh mesh = pipeline::extractReservoir(state->options, stats, context.interrupter());

@@ -46,7 +46,7 @@ void bindExtract(py::module_& m) {
                            "  exception propagates; nothing is returned. Ctrl-C (KeyboardInterrupt, Jupyter's\n"
                            "  \"interrupt kernel\") cancels the same way, with or without a callback."},
                           {"output", "None",
-                           "output: None (return a Mesh), or a .ply/.obj path: write the mesh there exactly as\n"
+                           "output: None (return a Mesh), or a .ply/.obj/.stl/.glb path: write the mesh there as\n"
                            "  `isovdb extract -o PATH` does (the octree methods stream a .ply meta-cell by meta-cell,\n"
                            "  never holding the mesh; same bytes as the CLI) and return the run's statistics dict.\n\n"
                            "The GIL is released while contouring. Mesh.statistics holds the run's figures.\n"

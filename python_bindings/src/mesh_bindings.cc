@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MPL-2.0
 // Copyright Contributors to the isovdb project.
 // Mesh (numpy views of the C++ buffers), its validation and files.
+#include <pybind11/eval.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
@@ -11,6 +12,7 @@
 #include "bindings.h"
 #include "isovdb/io/mesh_file.h"
 #include "isovdb/io/png_file.h"
+#include "isovdb/mesh/components.h"
 #include "isovdb/mesh/measures.h"
 #include "isovdb/mesh/preview.h"
 #include "isovdb/mesh/validate.h"
@@ -121,11 +123,20 @@ statistics.)doc")
           "normals",
           [](py::object self) -> py::object {
             const PyMesh& mesh = self.cast<const PyMesh&>();
-            if (mesh.mesh.normals.empty()) return py::none();
-            return view(mesh.mesh.normals, self);
+            if (!mesh.mesh.normals.empty()) return view(mesh.mesh.normals, self);
+            std::vector<mesh::Vec3f> normals;
+            {
+              py::gil_scoped_release release;
+              normals = mesh::areaWeightedNormals(mesh.mesh);
+            }
+            py::array_t<float> out({static_cast<py::ssize_t>(normals.size()), py::ssize_t{3}});
+            if (!normals.empty()) std::copy_n(normals.front().data(), 3 * normals.size(), out.mutable_data());
+            return out;
           },
-          "(n, 3) float32 per-vertex normals, or None when the mesh has none (the contouring methods "
-          "produce none today; PLY files and Mesh(normals=...) may carry them).")
+          "(n, 3) float32 unit vertex normals, facing outward: the mesh's own (reservoir meshes carry the "
+          "field's gradient, PLY files and Mesh(normals=...) may carry some; a view), else area-weighted "
+          "normals of the triangles around each vertex, computed on each access (a new array; zero for a "
+          "vertex no triangle uses).")
       .def_property_readonly("vertex_count", [](const PyMesh& m) { return m.mesh.vertexCount(); })
       .def_property_readonly(
           "area", [](const PyMesh& m) { return mesh::measure(m.mesh).area; }, "Surface area, world units squared.")
@@ -151,6 +162,27 @@ statistics.)doc")
           "statistics", [](const PyMesh& m) { return toPython(m.statistics); },
           "Figures of the run that made the mesh (as `isovdb extract --stats` writes them): timings_s per "
           "stage, grid and mesh counts, meta-cells contoured/skipped, seams stitched. Empty for read_mesh().")
+      .def(
+          "components",
+          [](const PyMesh& self) {
+            std::vector<mesh::Mesh> parts;
+            {
+              py::gil_scoped_release release;
+              parts = mesh::splitComponents(self.mesh);
+            }
+            py::list out;
+            for (mesh::Mesh& part : parts) {
+              PyMesh piece;
+              piece.mesh = std::move(part);
+              out.append(py::cast(std::move(piece)));
+            }
+            return out;
+          },
+          R"doc(
+The connected components (triangles connected through shared vertices) as a list of Mesh,
+in the order of each one's first triangle (check()['largest_components'] sorts them by
+size instead). Each keeps its triangles and vertices (and normals, if stored) in their order,
+renumbered; unused vertices are dropped. Copies.)doc")
       .def("check", &check, py::arg("self_intersections") = true, R"doc(
 Validates the mesh and returns the figures `isovdb check` reports under "mesh": vertices,
 referenced_vertices, triangles, edges, boundary_edges, non_manifold_edges,
@@ -166,9 +198,9 @@ component its triangles, vertices, Euler characteristic, closed, genus and signe
             io::writeMesh(path, self.mesh);
           },
           py::arg("path"), R"doc(
-Writes the mesh by extension: .ply (binary little-endian, the same bytes as the CLI writes)
-or .obj, through a temporary file. Raises ValueError for another extension, OSError when
-the path is not writable.)doc")
+Writes the mesh by extension: .ply (binary little-endian, the same bytes as the CLI writes),
+.obj, .stl (binary; no vertex normals) or .glb (binary glTF 2.0), through a temporary file. Raises ValueError for
+another extension, OSError when the path is not writable.)doc")
       .def(
           "render",
           [](const PyMesh& self, const std::optional<std::filesystem::path>& path, int width, int height) {
@@ -193,8 +225,58 @@ IPython); writes it as a PNG too when `path` is given.)doc")
                std::to_string(m.mesh.triangleCount()) + " triangles>";
       });
 
+  // Hand-offs to the packages notebooks draw and analyse meshes with, imported only when called.
+  py::exec(R"py(
+def _mesh_to_vtk(self):
+    """The mesh as a vtkPolyData (python3-vtk9): points float32, triangles as polygons, normals as
+point normals. A copy; raises ImportError when VTK is not installed."""
+    import numpy as np
+    from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+    points = vtkPoints()
+    points.SetData(numpy_to_vtk(np.ascontiguousarray(self.vertices), deep=True))
+    cells = vtkCellArray()
+    offsets = np.arange(0, 3 * self.triangle_count + 1, 3, dtype=np.int64)
+    cells.SetData(numpy_to_vtkIdTypeArray(offsets, deep=True),
+                  numpy_to_vtkIdTypeArray(self.triangles.astype(np.int64).ravel(), deep=True))
+    poly = vtkPolyData()
+    poly.SetPoints(points)
+    poly.SetPolys(cells)
+    normals = numpy_to_vtk(np.ascontiguousarray(self.normals), deep=True)
+    normals.SetName("Normals")
+    poly.GetPointData().SetNormals(normals)
+    return poly
+
+def _mesh_to_pyvista(self):
+    """The mesh as a pyvista.PolyData (a copy). Raises ImportError when PyVista is not installed."""
+    try:
+        import pyvista
+    except ImportError as e:
+        raise ImportError("Mesh.to_pyvista() needs the pyvista package (Mesh.to_vtk() needs only VTK)") from e
+    return pyvista.wrap(self.to_vtk())
+
+def _mesh_to_trimesh(self):
+    """The mesh as a trimesh.Trimesh (copies, no merging or repair). Raises ImportError when trimesh
+is not installed."""
+    try:
+        import trimesh
+    except ImportError as e:
+        raise ImportError("Mesh.to_trimesh() needs the trimesh package") from e
+    return trimesh.Trimesh(vertices=self.vertices.copy(), faces=self.triangles.copy(),
+                           vertex_normals=self.normals.copy(), process=False)
+
+Mesh.to_vtk = _mesh_to_vtk
+Mesh.to_pyvista = _mesh_to_pyvista
+Mesh.to_trimesh = _mesh_to_trimesh
+del _mesh_to_vtk, _mesh_to_pyvista, _mesh_to_trimesh
+)py",
+           m.attr("__dict__"));
+
   m.def("read_mesh", &readMesh, py::arg("path"),
-        "Reads a .ply mesh. Raises OSError for a missing file, ValueError for a malformed one.");
+        "Reads a .ply, .obj (polygons as fans), .stl (binary or ASCII; corners welded by exact "
+        "position) or .glb (binary glTF 2.0; every triangle primitive) mesh. Raises OSError "
+        "for a missing file, ValueError for a malformed one or another extension.");
 }
 
 }  // namespace isovdb::python

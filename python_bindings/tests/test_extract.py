@@ -145,6 +145,7 @@ def test_boundary_open_leaves_the_mesh_open_on_the_sampled_box():
     ({"topology": "digital"}, "unknown reading"),
     ({"meta_cell": 100}, "meta"),
     ({"threads": -2}, "threads"),
+    ({"inside": "sideways"}, "inside: unknown side 'sideways', expected above or below"),
 ])
 def test_invalid_options_raise_value_error(kwargs, message, torus_volume):
     with pytest.raises(ValueError, match=message) as raised:
@@ -199,6 +200,23 @@ def test_a_field_whose_background_is_inside_gives_its_body_not_a_box(method):
             assert min(lo) == pytest.approx(0, abs=2e-3) and max(hi) == pytest.approx(47, abs=2e-3)  # caps on the box
         else:
             assert mesh.volume == pytest.approx(4 / 3 * np.pi * radius ** 3, rel=0.02)
+
+
+@pytest.mark.parametrize("method", ["adaptive", "regular", "vdb"])
+def test_inside_below_meshes_a_signed_distance_array_outward(method):
+    # OpenVDB's and scikit-fmm's convention, negative inside: read with the default side
+    # (inside above, like a density) it is a box around a cavity.
+    z, y, x = np.mgrid[0:40, 0:40, 0:40]
+    sdf = (np.sqrt((x - 19.5) ** 2 + (y - 20.0) ** 2 + (z - 19.0) ** 2) - 12.0).astype(np.float32)
+    below = isovdb.extract(sdf, method=method, inside="below")
+    mirrored = isovdb.extract(-sdf, method=method)
+    assert np.array_equal(below.vertices, mirrored.vertices) and np.array_equal(below.triangles, mirrored.triangles)
+    assert below.statistics["contour"]["inside"] == "below"
+    if method != "vdb":  # volumeToMesh still boxes a field whose background is inside
+        report = below.check()
+        assert report["closed"] and report["components"] == 1 and report["self_intersecting_pairs"] == 0
+        assert below.volume == pytest.approx(4 / 3 * np.pi * 12.0 ** 3, rel=0.02)
+        assert isovdb.extract(sdf, method=method).check(self_intersections=False)["components"] == 2
 
 
 def test_a_masks_iso_beyond_its_band_points_to_scalar_fields():

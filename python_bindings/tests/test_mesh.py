@@ -22,8 +22,7 @@ def test_arrays_have_the_documented_shapes_and_types(mesh):
     assert mesh.vertices.dtype == np.float32 and mesh.vertices.shape == (mesh.vertex_count, 3)
     assert mesh.triangles.dtype == np.uint32 and mesh.triangles.shape == (mesh.triangle_count, 3)
     assert mesh.triangles.max() < mesh.vertex_count
-    if mesh.normals is not None:
-        assert mesh.normals.shape == mesh.vertices.shape
+    assert mesh.normals.dtype == np.float32 and mesh.normals.shape == mesh.vertices.shape
 
 
 def test_vertices_are_views_onto_the_mesh_and_keep_it_alive():
@@ -62,9 +61,93 @@ def test_normals_travel_through_ply_files(tmp_path):
     mesh.write(tmp_path / "n.ply")
     back = isovdb.read_mesh(tmp_path / "n.ply")
     assert np.array_equal(back.normals, normals)
-    assert isovdb.Mesh(vertices, triangles).normals is None
     with pytest.raises(ValueError, match="3 normals for 4 vertices"):
         isovdb.Mesh(vertices, triangles, normals=normals[:3])
+
+
+@pytest.mark.parametrize("method", ["adaptive", "regular", "vdb"])
+def test_every_method_gives_outward_unit_normals(method):
+    mesh = isovdb.extract(ball((32, 32, 32), (16, 16, 16), 10), method=method)
+    normals = mesh.normals
+    assert np.allclose(np.linalg.norm(normals, axis=1), 1, atol=1e-5)
+    outward = np.einsum("ij,ij->i", normals, mesh.vertices - np.float32(16))
+    assert (outward > 0).all(), f"{(outward <= 0).sum()} of {len(outward)} normals point inward"
+
+
+def test_computed_normals_are_area_weighted():
+    vertices, triangles = TETRAHEDRON
+    normals = isovdb.Mesh(vertices, triangles).normals
+    assert not np.shares_memory(normals, isovdb.Mesh(vertices, triangles).normals)
+    assert np.allclose(normals[0], -np.ones(3) / np.sqrt(3))  # three unit right triangles around the origin
+    assert np.allclose(normals[3], [0, 0, 1])  # -y and -x faces (area 1/2) and the (1, 1, 1) face (area 3^0.5/2)
+    assert np.array_equal(isovdb.Mesh(vertices[:4], triangles[:0]).normals, np.zeros((4, 3), np.float32))
+
+
+def test_stl_round_trip_keeps_the_surface(mesh, tmp_path):
+    mesh.write(tmp_path / "m.stl")
+    back = isovdb.read_mesh(tmp_path / "m.stl")
+    assert (back.vertex_count, back.triangle_count) == (mesh.vertex_count, mesh.triangle_count)
+    assert back.check()["closed"] and back.volume == pytest.approx(mesh.volume, rel=1e-6)
+    def corners(m):  # each triangle's corners in winding order, as a sorted list
+        return sorted(map(tuple, m.vertices[m.triangles].reshape(-1, 9).tolist()))
+    assert corners(back) == corners(mesh)
+
+
+@pytest.mark.parametrize("suffix", [".obj", ".glb"])
+def test_obj_and_glb_round_trips_are_exact(mesh, tmp_path, suffix):
+    mesh.write(tmp_path / ("m" + suffix))
+    back = isovdb.read_mesh(tmp_path / ("m" + suffix))
+    assert np.array_equal(back.vertices, mesh.vertices) and np.array_equal(back.triangles, mesh.triangles)
+
+
+def test_glb_opens_in_vtks_gltf_reader(mesh, tmp_path):
+    pytest.importorskip("vtkmodules")
+    from vtkmodules.vtkIOGeometry import vtkGLTFReader
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    mesh.write(tmp_path / "m.glb")
+    reader = vtkGLTFReader()
+    reader.SetFileName(str(tmp_path / "m.glb"))
+    reader.Update()
+    poly = reader.GetOutput()
+    while not hasattr(poly, "GetPoints"):  # the scene's blocks: node, mesh, primitive
+        poly = poly.GetBlock(0)
+    assert (poly.GetNumberOfPoints(), poly.GetNumberOfCells()) == (mesh.vertex_count, mesh.triangle_count)
+    assert np.array_equal(vtk_to_numpy(poly.GetPoints().GetData()), mesh.vertices)
+
+
+def test_to_vtk_hands_over_points_triangles_and_normals(mesh):
+    pytest.importorskip("vtkmodules")
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    poly = mesh.to_vtk()
+    assert (poly.GetNumberOfPoints(), poly.GetNumberOfPolys()) == (mesh.vertex_count, mesh.triangle_count)
+    assert np.array_equal(vtk_to_numpy(poly.GetPoints().GetData()), mesh.vertices)
+    connectivity = vtk_to_numpy(poly.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+    assert np.array_equal(connectivity, mesh.triangles)
+    assert np.array_equal(vtk_to_numpy(poly.GetPointData().GetNormals()), mesh.normals)
+
+
+def test_missing_packages_are_named(mesh):
+    for method, package in (("to_pyvista", "pyvista"), ("to_trimesh", "trimesh")):
+        try:
+            __import__(package)
+        except ImportError:
+            with pytest.raises(ImportError, match=package):
+                getattr(mesh, method)()
+
+
+def test_components_split_the_mesh_in_first_triangle_order():
+    two = isovdb.extract(ball((40, 24, 24), (10, 12, 12), 6) | ball((40, 24, 24), (29, 12, 12), 7))
+    parts = two.components()
+    assert len(parts) == two.check()["components"] == 2
+    assert sum(p.triangle_count for p in parts) == two.triangle_count
+    assert sum(p.vertex_count for p in parts) == two.vertex_count
+    first = two.triangles[0]
+    assert np.array_equal(parts[0].vertices[parts[0].triangles[0]], two.vertices[first])
+    for part, radius in zip(sorted(parts, key=lambda p: p.vertices.mean(axis=0)[0]), (6, 7)):
+        report = part.check()
+        assert report["closed"] and report["components"] == 1 and report["euler_characteristic"] == 2
+        assert part.volume == pytest.approx(4 / 3 * np.pi * radius ** 3, rel=0.15)
+    assert isovdb.Mesh(np.zeros((3, 3), np.float32), np.zeros((0, 3), np.uint32)).components() == []
 
 
 def test_mesh_constructor_rejects_bad_arrays():
@@ -90,8 +173,10 @@ def test_write_and_read_back(tmp_path, mesh, suffix):
 
 
 def test_write_and_read_errors(tmp_path, mesh):
-    with pytest.raises(ValueError, match="stl"):
-        mesh.write(tmp_path / "m.stl")
+    with pytest.raises(ValueError, match="gltf"):
+        mesh.write(tmp_path / "m.gltf")
+    with pytest.raises(ValueError, match="gltf"):
+        isovdb.read_mesh(tmp_path / "m.gltf")
     with pytest.raises(OSError):
         mesh.write(tmp_path / "missing" / "m.ply")
     with pytest.raises(OSError, match="(?i)no such file"):

@@ -126,8 +126,8 @@ TEST_F(CliBadInput, OutputPathNotWritable) {
 TEST_F(CliBadInput, UnknownMeshFormat) {
   writeFile(in / "v.raw", std::string(1000, '\1'));
   expectCleanFailure(
-      runCli("extract " + (in / "v.raw").string() + " --dims 10,10,10 --type uint8 -o " + (out / "mesh.stl").string()),
-      {"mesh.stl", ".ply or .obj"}, out);
+      runCli("extract " + (in / "v.raw").string() + " --dims 10,10,10 --type uint8 -o " + (out / "mesh.gltf").string()),
+      {"mesh.gltf", ".ply, .obj, .stl or .glb"}, out);
 }
 
 // Hostile sizes and values: each is refused before the work they would ask for.

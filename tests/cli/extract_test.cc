@@ -120,6 +120,41 @@ TEST(CliExtract, StreamsMetaCellsAndCheckAgreesWithTheObject) {
   }
 }
 
+// An STL mesh carries no shared vertices: check welds its corners back, so the
+// same guarantees and topology hold as for the PLY of the same run.
+TEST(CliExtract, StlOutputChecksLikeThePly) {
+  TempDir dir;
+  const auto genus2 = writeShape(dir, samples::ShapeKind::Genus2, 48);
+  const auto mesh = dir / "genus2.stl";
+  const auto stats = dir / "check.json";
+  std::string output;
+  ASSERT_EQ(runCommand(cliPath().string() + " -q extract " + genus2.string() + " -o " + mesh.string(), &output), 0)
+      << output;
+  ASSERT_EQ(runCommand(cliPath().string() + " -q check " + mesh.string() + " --against " + genus2.string() +
+                           " --stats " + stats.string(),
+                       &output),
+            0)
+      << output;
+  const nlohmann::json json = readJson(stats);
+  EXPECT_EQ(json["mesh"]["euler_characteristic"].get<int>(), -2);  // genus 2
+  EXPECT_EQ(std::filesystem::file_size(mesh), 84 + 50 * json["mesh"]["triangles"].get<std::uint64_t>());
+}
+
+TEST(CliExtract, ObjAndGlbOutputsCheckLikeThePly) {
+  TempDir dir;
+  const auto genus2 = writeShape(dir, samples::ShapeKind::Genus2, 40);
+  std::string output;
+  for (const char* extension : {".obj", ".glb"}) {
+    const auto mesh = dir / ("genus2" + std::string(extension));
+    const auto stats = dir / "check.json";
+    ASSERT_EQ(runCommand(cliPath().string() + " -q extract " + genus2.string() + " -o " + mesh.string(), &output), 0)
+        << output;
+    ASSERT_EQ(runCommand(cliPath().string() + " -q check " + mesh.string() + " --stats " + stats.string(), &output), 0)
+        << extension << ": " << output;
+    EXPECT_EQ(readJson(stats)["mesh"]["euler_characteristic"].get<int>(), -2) << extension;  // genus 2
+  }
+}
+
 TEST(CliExtract, RejectsABadMetaCellSizeWithoutWritingAnything) {
   TempDir dir;
   const auto sphere = writeShape(dir, samples::ShapeKind::Sphere, 32);

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "isovdb/errors.h"
+#include "mesh_file_test_support.h"
 #include "support/test_support.h"
 
 namespace isovdb::io {
@@ -96,6 +97,53 @@ TEST(Obj, FailedWriteLeavesNoFile) {
   bad.triangles.push_back({1, 2, 4});
   EXPECT_THROW(writeObj(dir / "bad.obj", bad), InputError);
   EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
+}
+
+TEST(Obj, ReadBackGivesTheWrittenMeshAndItsNormals) {
+  test::TempDir dir;
+  Mesh mesh = quad();
+  writeObj(dir / "plain.obj", mesh);
+  const Mesh plain = readObj(dir / "plain.obj");
+  EXPECT_EQ(plain.positions, mesh.positions);  // shortest round-trip text: bit for bit
+  EXPECT_EQ(plain.triangles, mesh.triangles);
+  EXPECT_TRUE(plain.normals.empty());
+  mesh.normals = {{0, 0, 1}, {0, 0, 1}, {0, -1, 0}, {0.5f, 0, 0}};
+  writeObj(dir / "normals.obj", mesh);
+  EXPECT_EQ(readObj(dir / "normals.obj").normals, mesh.normals);
+}
+
+TEST(Obj, ReadsPolygonsRelativeIndicesAndOtherExportersLines) {
+  test::TempDir dir;
+  test::writeFile(dir / "other.obj",
+                  "# exported elsewhere\nmtllib m.mtl\no thing\n"
+                  "v 0 0 0 1 0 0\nv 1 0 0\r\nv 1 1 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\n"
+                  "g quad\nusemtl red\ns off\n"
+                  "f 1/1/1 2/1/1 3/1/1 4/1/1\n"  // a quad: a fan of two triangles
+                  "v 0 0 2\nv 1 0 2\nv 0 1 2\n"
+                  "f -3 -2 -1  # relative to the vertices so far\n"
+                  "l 1 2\n");
+  const Mesh mesh = readObj(dir / "other.obj");
+  ASSERT_EQ(mesh.positions.size(), 7u);
+  EXPECT_EQ(mesh.positions[0], (mesh::Vec3f{0, 0, 0}));  // colours after x y z ignored
+  ASSERT_EQ(mesh.triangles.size(), 3u);
+  EXPECT_EQ(mesh.triangles[0], (mesh::Triangle{0, 1, 2}));
+  EXPECT_EQ(mesh.triangles[1], (mesh::Triangle{0, 2, 3}));
+  EXPECT_EQ(mesh.triangles[2], (mesh::Triangle{4, 5, 6}));
+  EXPECT_TRUE(mesh.normals.empty());  // one normal shared by four vertices: not per vertex
+}
+
+TEST(Obj, BadFilesAreRefusedByNameAndLine) {
+  test::TempDir dir;
+  const auto expectInputError = [&](const std::string& name, const std::string& content, const std::string& what) {
+    test::expectFileRefused(dir, name, content, what, [](const auto& path) { readObj(path); });
+  };
+  expectInputError("word.obj", "v 0 0 0\nv 1 zero 0\n", "word.obj':2: expected three finite numbers");
+  expectInputError("nan.obj", "v 0 0 nan\n", "finite");
+  expectInputError("two.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n", ":3: a face with 2 corners");
+  expectInputError("zero.obj", "v 0 0 0\nf 0 1 1\n", "expected a vertex index, found '0'");
+  expectInputError("relative.obj", "v 0 0 0\nf -1 -2 -3\n", "relative index -2");
+  expectInputError("missing.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", "refers to vertex 9");
+  EXPECT_THROW(readObj(dir / "absent.obj"), IoError);
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MPL-2.0
 // Copyright Contributors to the isovdb project.
 /// @file mesh_file.h
-/// @brief Mesh files chosen by extension: .ply (binary little-endian) or .obj.
+/// @brief Mesh files chosen by extension: .ply (binary little-endian), .obj, .stl (binary) or
+///        .glb (binary glTF 2.0).
 #pragma once
 
 #include <filesystem>
@@ -10,14 +11,15 @@
 
 namespace isovdb::io {
 
-/// True for the extensions writeMesh accepts (.ply, .obj; any case).
-bool isMeshPath(const std::filesystem::path& path);
+/// Refuses a path whose extension writeMesh does not accept (.ply, .obj, .stl, .glb; any case),
+/// before any work. @throw InputError naming the path and the accepted extensions.
+void checkMeshPath(const std::filesystem::path& path);
 
-/// Writes PLY or OBJ by extension, through a temporary file.
+/// Writes PLY, OBJ, binary STL or GLB by extension, through a temporary file.
 /// @throw InputError for another extension; IoError when not writable.
 void writeMesh(const std::filesystem::path& path, const mesh::Mesh& mesh);
 
-/// Reads a PLY file. @throw IoError / InputError (names the file).
+/// Reads a PLY, OBJ, STL (binary or ASCII) or GLB file by extension. @throw IoError / InputError (names the file).
 mesh::Mesh readMesh(const std::filesystem::path& path);
 
 }  // namespace isovdb::io

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MPL-2.0
 // Copyright Contributors to the isovdb project.
 /// @file obj.h
-/// @brief Writes triangle meshes as Wavefront OBJ text.
+/// @brief Triangle meshes as Wavefront OBJ text (written and read).
 ///
 /// Positions are written as they are stored in the mesh: pipeline/ applies
 /// the index-to-world transform before calling writeObj().
@@ -30,5 +30,19 @@ namespace isovdb::io {
 ///        triangle references a missing vertex (nothing is written)
 /// @throw IoError when the file cannot be created or written
 void writeObj(const std::filesystem::path& path, const mesh::Mesh& mesh);
+
+/// @brief Reads the polygons of an OBJ file as triangles (a polygon of n corners
+///        becomes a fan of n - 2 triangles from its first corner).
+///
+/// Reads `v` (the first three numbers; colours after them are ignored), `vn` and
+/// `f` lines whose corners are `v`, `v/vt`, `v//vn` or `v/vt/vn`, with 1-based or
+/// negative (relative) indices; other lines (`vt`, `g`, `o`, `s`, `usemtl`,
+/// `mtllib`, `l`, comments) are skipped. Normals are kept when every corner's
+/// normal index equals its vertex index (the layout writeObj() writes);
+/// otherwise they are dropped, since the mesh holds one normal per vertex.
+/// @throw IoError when the file cannot be opened or read
+/// @throw InputError naming the file and line: a malformed or non-finite number,
+///        a face with fewer than 3 corners, an index of no vertex
+mesh::Mesh readObj(const std::filesystem::path& path);
 
 }  // namespace isovdb::io

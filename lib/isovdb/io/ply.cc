@@ -5,13 +5,10 @@
 #include <algorithm>
 #include <array>
 #include <bit>
-#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <cstring>
 #include <limits>
-#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -21,6 +18,7 @@
 #include "isovdb/io/little_endian.h"
 #include "isovdb/mesh/mesh_checks.h"
 #include "isovdb/io/sample_type.h"
+#include "isovdb/io/whole_file.h"
 
 namespace isovdb::io {
 
@@ -478,23 +476,6 @@ class BodyReader {
   Source src_;
   std::uint64_t vertexCount_ = 0;
 };
-
-std::string readWholeFile(const std::filesystem::path& path) {
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
-  if (!f) throw IoError("cannot read '" + path.string() + "': " + std::strerror(errno));
-  // One read of the size the file system reports, then more if the file grew.
-  std::error_code ec;
-  const std::uintmax_t expected = std::filesystem::file_size(path, ec);
-  std::string data(ec ? 0 : static_cast<std::size_t>(expected), '\0');
-  data.resize(std::fread(data.data(), 1, data.size(), f.get()));
-  char buffer[1 << 16];
-  while (!std::ferror(f.get()) && !std::feof(f.get())) {
-    const std::size_t n = std::fread(buffer, 1, sizeof buffer, f.get());
-    data.append(buffer, n);
-  }
-  if (std::ferror(f.get())) throw IoError("cannot read '" + path.string() + "': " + std::strerror(errno));
-  return data;
-}
 
 }  // namespace
 

@@ -5,6 +5,9 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <cmath>
+#include <vector>
+
 namespace isovdb::mesh {
 namespace {
 
@@ -30,6 +33,22 @@ MeshMeasures measure(const Mesh& mesh) {
     result.signedVolume += signedVolumeTerm(mesh, tri);
   }
   return result;
+}
+
+std::vector<Vec3f> areaWeightedNormals(const Mesh& mesh) {
+  std::vector<Eigen::Vector3d> sums(mesh.positions.size(), Eigen::Vector3d::Zero());
+  for (const Triangle& tri : mesh.triangles) {
+    const Eigen::Vector3d a = corner(mesh, tri, 0);
+    const Eigen::Vector3d n = (corner(mesh, tri, 1) - a).cross(corner(mesh, tri, 2) - a);  // twice the area
+    for (const std::uint32_t v : tri) sums[v] += n;
+  }
+  std::vector<Vec3f> normals(sums.size(), Vec3f{0.0f, 0.0f, 0.0f});
+  for (std::size_t v = 0; v < sums.size(); ++v) {
+    const double length = sums[v].norm();
+    if (length > 0 && std::isfinite(length))
+      for (int a = 0; a < 3; ++a) normals[v][static_cast<std::size_t>(a)] = static_cast<float>(sums[v][a] / length);
+  }
+  return normals;
 }
 
 }  // namespace isovdb::mesh

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MPL-2.0
 // Copyright Contributors to the isovdb project.
 /// @file measures.h
-/// @brief A mesh's area and signed volume: the validator sums the volume per component,
-///        the Python Mesh reports both for the whole mesh.
+/// @brief A mesh's area, signed volume and vertex normals: the validator sums the volume per
+///        component, the Python Mesh reports them for the whole mesh.
 #pragma once
 
 #include "isovdb/mesh/mesh.h"
@@ -24,5 +24,12 @@ struct MeshMeasures {
 /// Sums of the triangles' areas and signed volume terms.
 /// @pre every triangle references a vertex of `mesh`
 MeshMeasures measure(const Mesh& mesh);
+
+/// Area-weighted vertex normals (the sum of the unnormalised normals of the triangles around
+/// each vertex, normalised; zero for a vertex no triangle with area uses). They face the way
+/// the triangles' winding does: outward on isovdb's meshes. Sums in triangle order, so the
+/// result does not depend on anything but the mesh.
+/// @pre every triangle references a vertex of `mesh`
+std::vector<Vec3f> areaWeightedNormals(const Mesh& mesh);
 
 }  // namespace isovdb::mesh

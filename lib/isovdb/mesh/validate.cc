@@ -18,6 +18,7 @@
 #include <tbb/parallel_for.h>
 
 #include "isovdb/errors.h"
+#include "isovdb/mesh/components.h"
 #include "isovdb/mesh/measures.h"
 #include "isovdb/mesh/mesh_checks.h"
 #include "isovdb/mesh/self_intersection.h"
@@ -195,62 +196,14 @@ Totals analyseUmbrellas(const Stars& stars, std::vector<VertexFigures>& figures)
   return totals.combine([](Totals a, const Totals& b) { return a += b; });
 }
 
-/// Concurrent union-find over vertices: a root is always the smallest index
-/// of its set (larger roots are linked under smaller ones), so the final
-/// partition and its roots do not depend on the schedule.
-class ConcurrentUnionFind {
- public:
-  explicit ConcurrentUnionFind(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0u); }
-
-  std::uint32_t find(std::uint32_t x) {
-    while (true) {
-      std::uint32_t p = load(x);
-      if (p == x) return x;
-      const std::uint32_t g = load(p);
-      if (g == p) return p;
-      std::atomic_ref<std::uint32_t>(parent_[x]).compare_exchange_weak(p, g, std::memory_order_relaxed);
-      x = g;
-    }
-  }
-
-  void unite(std::uint32_t a, std::uint32_t b) {
-    while (true) {
-      a = find(a);
-      b = find(b);
-      if (a == b) return;
-      if (a < b) std::swap(a, b);
-      std::uint32_t expected = a;
-      if (std::atomic_ref<std::uint32_t>(parent_[a]).compare_exchange_strong(expected, b, std::memory_order_relaxed))
-        return;
-    }
-  }
-
- private:
-  std::uint32_t load(std::uint32_t x) {
-    return std::atomic_ref<std::uint32_t>(parent_[x]).load(std::memory_order_relaxed);
-  }
-  std::vector<std::uint32_t> parent_;
-};
-
 /// Component labels in the order of each component's first triangle; fills
 /// the per-component figures from the per-vertex ones.
 std::vector<ComponentReport> buildComponents(const Mesh& mesh, const std::vector<std::uint8_t>& flags,
                                              const std::vector<VertexFigures>& figures) {
   const std::size_t n = mesh.positions.size();
   const std::size_t triangleCount = mesh.triangles.size();
-  ConcurrentUnionFind sets(n);
-  tbb::parallel_for(Range(0, triangleCount, kGrain), [&](const Range& r) {
-    for (std::size_t t = r.begin(); t != r.end(); ++t) {
-      if (flags[t] == kCollapsed) continue;
-      const Triangle& tri = mesh.triangles[t];
-      sets.unite(tri[0], tri[1]);
-      sets.unite(tri[0], tri[2]);
-    }
-  });
-  std::vector<std::uint32_t> root(n);
-  tbb::parallel_for(Range(0, n, kGrain), [&](const Range& r) {
-    for (std::size_t v = r.begin(); v != r.end(); ++v) root[v] = sets.find(static_cast<std::uint32_t>(v));
-  });
+  const std::vector<std::uint32_t> root =
+      vertexComponentRoots(mesh, [&](std::size_t t) { return flags[t] != kCollapsed; });
 
   std::vector<std::uint32_t> label(n, kNone);  // indexed by root
   std::vector<ComponentReport> components;

@@ -39,6 +39,12 @@ volume::Volume toContourable(const volume::Volume& volume, const volume::Distanc
   return sdf;
 }
 
+volume::Volume withInsideAboveIso(const volume::Volume& volume, ScalarInside inside, float& iso) {
+  if (volume.kind() != volume::VolumeKind::Scalar || inside == ScalarInside::Above) return volume;
+  iso = -iso;
+  return volume::negatedScalar(volume);
+}
+
 void indexToWorld(mesh::Mesh& mesh, const volume::Geometry& geometry) {
   const auto& s = geometry.spacing;
   const auto& o = geometry.origin;
@@ -99,7 +105,7 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
     throw InputError("--threads: expected 0 (every core) or more, got " + std::to_string(options.threads));
   std::optional<tbb::global_control> threads;
   if (options.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, options.threads);
-  const float iso = options.contour.iso;
+  float iso = options.contour.iso;
   checkIsoReachesSurface(volume, iso, options.distance.halfWidth);
   const float deadBand = volume::deadBandOf(volume);
   if (volume.kind() == volume::VolumeKind::Scalar && std::abs(iso) < deadBand) {
@@ -109,6 +115,7 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
     throw InputError(message.str());
   }
   const volume::VolumeKind kind = volume.kind();
+  volume = withInsideAboveIso(volume, options.scalarInside, iso);
   const std::optional<volume::IndexBox> box = volume::sampledBox(volume);
   const ContourMethod method = options.contour.method;
   // A mask contoured by meta-cells gets its distance field layer by layer, as the
@@ -143,6 +150,7 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
     capped.addTriangles(mesh.triangles);
   } else {
     cell::ContourSettings settings = options.contour;
+    settings.iso = iso;
     settings.topology = regularTopologyFor(options.regularTopology, kind);
     octree::OctreeOptions tree = options.octree;
     if (capsMade) settings.dataBox = {{box->min, box->max}};
@@ -164,7 +172,9 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
       section["cap_triangles_dropped"] = dropped;
     }
     section["method"] = std::string(contourMethodName(method));
-    section["iso"] = iso;
+    section["iso"] = options.contour.iso;
+    if (kind == volume::VolumeKind::Scalar)
+      section["inside"] = std::string(nameOf(kScalarInsideNames, options.scalarInside));
     if (method == ContourMethod::Vdb) section["adaptivity"] = options.adaptivity;
     if (method == ContourMethod::Adaptive && options.octree.maxError > 0.0f) {
       section["max_error"] = options.octree.maxError;

@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "isovdb/mesh/mesh.h"
+#include "isovdb/named_values.h"
 #include "isovdb/mesh/mesh_sink.h"
 #include "isovdb/pipeline/data_boundary.h"
 #include "isovdb/pipeline/octree_contour.h"
@@ -34,6 +35,14 @@ cell::RegularTopology regularTopologyFor(const std::optional<cell::RegularTopolo
 /// and the mesh within a voxel of the full-resolution surface; below half a voxel a mask's
 /// one-voxel steps refine most leaves to one voxel (docs/cli.md, the error bound's table).
 inline constexpr float kDefaultMaxError = 1.0f;
+
+/// Which side of the isovalue a scalar field's object lies on: above (density, CT,
+/// amplitude: inside = value > iso) or below (a signed distance negative inside, as
+/// OpenVDB's level sets and scikit-fmm's fields; a travel time). Masks and distance fields
+/// have their own sides (the mask's voxels; negative inside).
+enum class ScalarInside { Above, Below };
+inline constexpr NameTable<ScalarInside, 2> kScalarInsideNames{
+    {{ScalarInside::Above, "above"}, {ScalarInside::Below, "below"}}};
 
 /// Every setting of `isovdb extract` (each field is a CLI flag and a Python keyword).
 struct ExtractOptions {
@@ -61,7 +70,14 @@ struct ExtractOptions {
   /// Surfaces reaching the sampled data's boundary: capped there (closed mesh) or
   /// left open on it (data_boundary.h). Volumes without a sampled box are left as contoured.
   BoundaryMode boundary = BoundaryMode::Cap;
+  /// Scalar fields: the object's side of the isovalue (ignored for masks and distance fields).
+  ScalarInside scalarInside = ScalarInside::Above;
 };
+
+/// A scalar field whose inside lies below the isovalue becomes -field, and `iso` -iso: the
+/// engine and volumeToMesh take a scalar's inside above it. A copy (volume::negatedScalar),
+/// so the caller's volume is unchanged; any other input is returned as it is.
+volume::Volume withInsideAboveIso(const volume::Volume& volume, ScalarInside inside, float& iso);
 
 /// A mask becomes its distance field; distance fields and scalars pass through.
 volume::Volume toContourable(const volume::Volume& volume, const volume::DistanceFieldOptions& options,

@@ -33,6 +33,7 @@ ExtractOptions ExtractChoices::resolve(bool keywords) const {
                        nameList(cell::kRegularTopologyNames));
   }
   result.boundary = parseNamed(kBoundaryModeNames, boundary, settingName("boundary", keywords), "mode");
+  result.scalarInside = parseNamed(kScalarInsideNames, inside, settingName("inside", keywords), "side");
   result.distance = DistanceChoices{options.distance, distance}.resolve(keywords);
   return result;
 }
@@ -71,6 +72,10 @@ std::vector<Setting> extractSettings(ExtractChoices& c) {
        "Isovalue: voxels on distance fields (0 = the mask boundary, > 0 grows the surface), field units on "
        "scalars",
        &o.contour.iso},
+      {"inside",
+       "Scalar fields: the object's side of the isovalue, above (density, CT, amplitude) or below (a signed "
+       "distance negative inside); masks and distance fields keep their own",
+       &c.inside},
       {"adaptivity", "vdb method: OpenVDB's adaptivity in [0, 1]", &o.adaptivity},
   };
   // Then the distance field's, then the octree methods'.

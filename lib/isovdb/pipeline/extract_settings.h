@@ -25,6 +25,7 @@ struct ExtractChoices {
   std::string topology = "auto";  ///< auto | voxels | mdmc
   std::string boundary = std::string(boundaryModeName(ExtractOptions{}.boundary));
   std::string distance = std::string(volume::distanceMethodName(ExtractOptions{}.distance.method));
+  std::string inside = std::string(nameOf(kScalarInsideNames, ExtractOptions{}.scalarInside));
 
   /// The options with the named settings parsed.
   /// @param keywords true: messages name Python keywords (`method`), false: CLI flags (`--method`).

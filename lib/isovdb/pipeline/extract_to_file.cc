@@ -12,7 +12,7 @@ namespace isovdb::pipeline {
 
 std::uint64_t extractToFile(volume::Volume volume, const ExtractOptions& options, const std::filesystem::path& path,
                             Interrupter* interrupter, Statistics* stats) {
-  if (!io::isMeshPath(path)) throw InputError("'" + path.string() + "': unknown mesh format, expected .ply or .obj");
+  io::checkMeshPath(path);
   io::AtomicFile::checkWritable(path);
   const bool stream = options.contour.method != ContourMethod::Vdb && io::lowerExtension(path) == ".ply";
   if (stream) {

@@ -12,7 +12,7 @@
 
 namespace isovdb::pipeline {
 
-/// Contours `volume` into `path` (.ply or .obj, by extension). The octree methods
+/// Contours `volume` into `path` (.ply, .obj or .stl, by extension). The octree methods
 /// stream a .ply meta-cell by meta-cell (the mesh is never held whole; the header
 /// keeps room for the final counts); otherwise the mesh is built and written whole.
 /// Written through a temporary file. Records "output.streamed" and a "write" timing.

@@ -22,7 +22,8 @@ void inspectOctree(const volume::Volume& input, const InspectOctreeOptions& opti
                      std::to_string(metaCellSize));
   cell::ContourSettings settings = extract.contour;
   settings.topology = regularTopologyFor(extract.regularTopology, input.kind());
-  const volume::Volume field = toContourable(input, extract.distance, interrupter, &stats);
+  const volume::Volume field = toContourable(withInsideAboveIso(input, extract.scalarInside, settings.iso),
+                                             extract.distance, interrupter, &stats);
   volume::MetaCellPartition partition;
   {
     Statistics::StageTimer timer(&stats, "partition");

@@ -3,6 +3,7 @@
 #include "isovdb/volume/volume.h"
 
 #include <openvdb/tools/Count.h>
+#include <openvdb/tools/ValueTransformer.h>
 
 #include <cmath>
 #include <limits>
@@ -84,6 +85,16 @@ GridStats Volume::stats() const {
   if (!grid_) return {};
   if (kind_ == VolumeKind::Mask) return treeStats(maskGrid(*this).tree(), false);
   return treeStats(fieldGrid(*this).tree(), true);
+}
+
+Volume negatedScalar(const Volume& volume) {
+  if (volume.kind() != VolumeKind::Scalar)
+    throw InputError("'" + volume.name() + "': only a scalar field can be read with its inside below the isovalue");
+  const FieldGrid::Ptr grid = fieldGrid(volume).deepCopy();
+  const float background = grid->background();
+  openvdb::tools::foreach (grid->beginValueAll(), [](const FieldGrid::ValueAllIter& it) { it.setValue(-*it); });
+  grid->tree().root().setBackground(-background, /*updateChildNodes=*/false);  // inactive values negated above
+  return Volume(VolumeKind::Scalar, grid, volume.geometry(), volume.name());
 }
 
 }  // namespace isovdb::volume

@@ -94,4 +94,11 @@ class Volume {
   std::string name_;
 };
 
+/// A copy of scalar field `volume` with every value negated, the background too, and its
+/// geometry, name and metadata (the sampled box) kept: a field whose object lies below the
+/// isovalue, for code that takes a scalar's inside to lie above it. A deep copy (the
+/// grid's memory again); the input is left as it is.
+/// @throw InputError when `volume` is not a scalar field
+Volume negatedScalar(const Volume& volume);
+
 }  // namespace isovdb::volume
