@@ -183,7 +183,7 @@ def test_an_iso_outside_a_scalar_fields_values_is_refused():
         isovdb.extract(field, iso=500.0)
 
 
-@pytest.mark.parametrize("method", ["adaptive", "regular"])
+@pytest.mark.parametrize("method", ["adaptive", "regular", "vdb"])
 def test_a_field_whose_background_is_inside_gives_its_body_not_a_box(method):
     # 20 - r at iso 0: the background (0, beyond the array) counts as inside, and read as it
     # is it closed a box around the array (2 components, inside out); beyond the data is
@@ -212,11 +212,10 @@ def test_inside_below_meshes_a_signed_distance_array_outward(method):
     mirrored = isovdb.extract(-sdf, method=method)
     assert np.array_equal(below.vertices, mirrored.vertices) and np.array_equal(below.triangles, mirrored.triangles)
     assert below.statistics["contour"]["inside"] == "below"
-    if method != "vdb":  # volumeToMesh still boxes a field whose background is inside
-        report = below.check()
-        assert report["closed"] and report["components"] == 1 and report["self_intersecting_pairs"] == 0
-        assert below.volume == pytest.approx(4 / 3 * np.pi * 12.0 ** 3, rel=0.02)
-        assert isovdb.extract(sdf, method=method).check(self_intersections=False)["components"] == 2
+    report = below.check()
+    assert report["closed"] and report["components"] == 1 and report["self_intersecting_pairs"] == 0
+    assert below.volume == pytest.approx(4 / 3 * np.pi * 12.0 ** 3, rel=0.02)
+    assert isovdb.extract(sdf, method=method).check(self_intersections=False)["components"] == 2
 
 
 def test_a_masks_iso_beyond_its_band_points_to_scalar_fields():

@@ -5,13 +5,15 @@
 #include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 
-#include <optional>
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "isovdb/contour/vdb_mesher.h"
 #include "isovdb/errors.h"
 #include "isovdb/pipeline/load_volume.h"
+#include "isovdb/volume/background.h"
 #include "isovdb/volume/ingest.h"
 #include "isovdb/volume/meta_cells.h"
 #include "isovdb/volume/sampled_box.h"
@@ -144,6 +146,14 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
   CappingSink capped(open ? static_cast<mesh::MeshSink&>(whole) : sink, capsMade ? std::nullopt : box);
   if (method == ContourMethod::Vdb) {
     Statistics::StageTimer timer(stats, "contour");
+    // volumeToMesh meshes every crossing, the background's too: a background inside the
+    // surface (a numpy field 40 - r at iso 0) closed a box around the array. Beyond the
+    // sampled box is outside, as in the octree methods: the background moves a step
+    // outside (a copy); caps where the body leaves the data are flattened onto the box.
+    if (box && volume::backgroundInside(field, iso)) {
+      const float step = std::max(1.0f, std::abs(iso) * 1e-3f);  // a float step at any |iso|
+      field = volume::withBackground(field, kind == volume::VolumeKind::Scalar ? iso - step : iso + step);
+    }
     const mesh::Mesh mesh =
         contour::contourWithOpenVdb(field, {.iso = iso, .adaptivity = options.adaptivity}, interrupter);
     capped.addVertices(mesh.positions);
