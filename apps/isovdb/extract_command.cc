@@ -33,7 +33,7 @@ void addExtractCommand(CLI::App& app, Context& context) {
   CLI::App* command = app.add_subcommand("extract", "Volume -> triangle mesh (.ply, .obj, .stl or .glb)");
   command->add_option("IN", state->input, "Volume file (.raw, .nrrd, .nhdr, .mhd, .mha, .sgy, .segy, .vdb)")
       ->required();
-  command->add_option("-o,--output", state->output, "Output mesh (.ply binary, or .obj)")->required();
+  command->add_option("-o,--output", state->output, "Output mesh (.ply binary, .obj, .stl or .glb)")->required();
   addSettingFlags(*command, pipeline::extractSettings(state->choices));
   command->add_flag("--check", state->check, "Validate the mesh (closed, manifold, self-intersections, Euler)");
   command->add_flag("--no-self-intersections", state->noSelfIntersections,

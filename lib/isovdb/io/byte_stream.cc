@@ -15,12 +15,11 @@
 #include <new>
 
 #include "isovdb/errors.h"
+#include "isovdb/io/path_util.h"
 
 namespace isovdb::io {
 
 namespace {
-
-std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
 
 /// Largest chunk handed to pread() or zlib at once (zlib counters are 32-bit).
 constexpr std::size_t kMaxChunk = std::size_t{1} << 30;

@@ -16,7 +16,9 @@
 
 #include "isovdb/errors.h"
 #include "isovdb/io/atomic_file.h"
+#include "isovdb/io/block_writer.h"
 #include "isovdb/io/little_endian.h"
+#include "isovdb/io/path_util.h"
 #include "isovdb/io/whole_file.h"
 #include "isovdb/mesh/mesh_checks.h"
 
@@ -34,9 +36,6 @@ constexpr int kUnsignedByte = 5121;
 constexpr int kUnsignedShort = 5123;
 constexpr int kUnsignedInt = 5125;
 constexpr int kTriangles = 4;
-constexpr std::size_t kFlushBytes = 1 << 20;
-
-std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
 
 /// The scene description: one node, one mesh, one triangle primitive whose arrays
 /// lie back to back in the BIN chunk (positions, normals, indices).
@@ -100,30 +99,6 @@ json describe(const mesh::Mesh& mesh, std::uint64_t binBytes) {
   gltf["buffers"] = json::array({buffer});
   return gltf;
 }
-
-/// Appends to a file through a buffer of about kFlushBytes.
-class ChunkWriter {
- public:
-  explicit ChunkWriter(AtomicFile& file) : file_(file) { buffer_.reserve(kFlushBytes + 16); }
-  template <class T>
-  void put(T value) {
-    const auto bytes = littleEndianBytes(value);
-    buffer_.append(bytes.data(), bytes.size());
-    if (buffer_.size() >= kFlushBytes) flush();
-  }
-  void put(const std::string& bytes) {
-    buffer_ += bytes;
-    flush();
-  }
-  void flush() {
-    if (!buffer_.empty()) file_.write(buffer_);
-    buffer_.clear();
-  }
-
- private:
-  AtomicFile& file_;
-  std::string buffer_;
-};
 
 /// The parsed chunks of a .glb file and the accessor reads over them; every
 /// failure names the file.
@@ -237,9 +212,6 @@ void readIndex(const char* p, int component, std::uint64_t& value, std::size_t) 
 
 void writeGlb(const std::filesystem::path& path, const mesh::Mesh& mesh) {
   mesh::detail::checkIndices(mesh, "cannot write " + quoted(path));
-  if (!mesh.normals.empty() && mesh.normals.size() != mesh.positions.size())
-    throw InputError("cannot write " + quoted(path) + ": " + std::to_string(mesh.normals.size()) + " normals for " +
-                     std::to_string(mesh.positions.size()) + " vertices");
   const bool empty = mesh.triangles.empty();
   const std::uint64_t binBytes =
       empty ? 0 : 12 * (std::uint64_t{mesh.positions.size()} * (mesh.normals.empty() ? 1 : 2) + mesh.triangles.size());
@@ -251,22 +223,22 @@ void writeGlb(const std::filesystem::path& path, const mesh::Mesh& mesh) {
                      " bytes, more than a GLB file can hold (4 GiB); write .ply instead");
 
   AtomicFile file(path);
-  ChunkWriter out(file);
-  out.put(kMagic);
-  out.put(std::uint32_t{2});
-  out.put(static_cast<std::uint32_t>(total));
-  out.put(static_cast<std::uint32_t>(text.size()));
-  out.put(kJsonChunk);
-  out.put(text);
+  BlockWriter out(file);
+  out.putLittleEndian(kMagic);
+  out.putLittleEndian(std::uint32_t{2});
+  out.putLittleEndian(static_cast<std::uint32_t>(total));
+  out.putLittleEndian(static_cast<std::uint32_t>(text.size()));
+  out.putLittleEndian(kJsonChunk);
+  out.put(text.data(), text.size());
   if (!empty) {
-    out.put(static_cast<std::uint32_t>(binBytes));
-    out.put(kBinChunk);
+    out.putLittleEndian(static_cast<std::uint32_t>(binBytes));
+    out.putLittleEndian(kBinChunk);
     for (const mesh::Vec3f& p : mesh.positions)
-      for (const float c : p) out.put(c);
+      for (const float c : p) out.putLittleEndian(c);
     for (const mesh::Vec3f& n : mesh.normals)
-      for (const float c : n) out.put(c);
+      for (const float c : n) out.putLittleEndian(c);
     for (const mesh::Triangle& t : mesh.triangles)
-      for (const std::uint32_t v : t) out.put(v);
+      for (const std::uint32_t v : t) out.putLittleEndian(v);
   }
   out.flush();
   file.commit();

@@ -8,4 +8,6 @@ namespace isovdb::io {
 
 std::string lowerExtension(const std::filesystem::path& path) { return detail::lower(path.extension().string()); }
 
+std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
+
 }  // namespace isovdb::io

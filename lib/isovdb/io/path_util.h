@@ -13,4 +13,7 @@ namespace isovdb::io {
 /// Picks the file format, so "VOL.NRRD" and "vol.nrrd" read alike.
 std::string lowerExtension(const std::filesystem::path& path);
 
+/// `path` in single quotes, as every message names a file ('in.nrrd').
+std::string quoted(const std::filesystem::path& path);
+
 }  // namespace isovdb::io

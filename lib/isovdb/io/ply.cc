@@ -15,6 +15,7 @@
 
 #include "isovdb/errors.h"
 #include "isovdb/io/atomic_file.h"
+#include "isovdb/io/block_writer.h"
 #include "isovdb/io/little_endian.h"
 #include "isovdb/mesh/mesh_checks.h"
 #include "isovdb/io/sample_type.h"
@@ -36,35 +37,6 @@ void checkMesh(const std::filesystem::path& path, const Mesh& mesh) {
     throw InputError("cannot write '" + path.string() + "': more than 2^32 - 1 vertices");
   mesh::detail::checkIndices(mesh, "cannot write '" + path.string() + "'");
 }
-
-/// Collects little-endian bytes and hands them to the file in large blocks.
-class BlockWriter {
- public:
-  explicit BlockWriter(AtomicFile& file) : file_(file) { buffer_.reserve(kBlock + 64); }
-
-  void put(const void* data, std::size_t bytes) {
-    const auto* p = static_cast<const char*>(data);
-    buffer_.insert(buffer_.end(), p, p + bytes);
-    flushIfFull();
-  }
-  template <class T>
-  void putLittleEndian(T value) {
-    appendLittleEndian(buffer_, value);
-    flushIfFull();
-  }
-  void flush() {
-    file_.write(buffer_.data(), buffer_.size());
-    buffer_.clear();
-  }
-
- private:
-  void flushIfFull() {
-    if (buffer_.size() >= kBlock) flush();
-  }
-  static constexpr std::size_t kBlock = std::size_t{1} << 20;
-  AtomicFile& file_;
-  std::vector<char> buffer_;
-};
 
 // ---------------------------------------------------------------------------
 // Header

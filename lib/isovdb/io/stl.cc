@@ -13,7 +13,9 @@
 
 #include "isovdb/errors.h"
 #include "isovdb/io/atomic_file.h"
+#include "isovdb/io/block_writer.h"
 #include "isovdb/io/little_endian.h"
+#include "isovdb/io/path_util.h"
 #include "isovdb/io/whole_file.h"
 #include "isovdb/mesh/mesh_checks.h"
 #include "isovdb/mesh/weld.h"
@@ -24,9 +26,6 @@ namespace {
 
 constexpr std::size_t kHeaderBytes = 80;
 constexpr std::size_t kFacetBytes = 50;  // normal, 3 corners (12 float32) and a uint16
-constexpr std::size_t kFacetsPerBlock = 1 << 16;
-
-std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
 
 mesh::Vec3f facetNormal(const mesh::Vec3f& a, const mesh::Vec3f& b, const mesh::Vec3f& c) {
   const double u[3] = {double{b[0]} - a[0], double{b[1]} - a[1], double{b[2]} - a[2]};
@@ -144,27 +143,21 @@ void writeStl(const std::filesystem::path& path, const mesh::Mesh& mesh) {
     throw InputError("cannot write " + quoted(path) + ": " + std::to_string(mesh.triangles.size()) +
                      " triangles, more than binary STL can count");
   AtomicFile file(path);
-  std::vector<char> bytes;
+  BlockWriter out(file);
   std::string header = "binary STL written by isovdb";
   header.resize(kHeaderBytes, ' ');
-  bytes.insert(bytes.end(), header.begin(), header.end());
-  appendLittleEndian(bytes, static_cast<std::uint32_t>(mesh.triangles.size()));
-  for (std::size_t begin = 0; begin < mesh.triangles.size(); begin += kFacetsPerBlock) {
-    const std::size_t end = std::min(mesh.triangles.size(), begin + kFacetsPerBlock);
-    for (std::size_t t = begin; t < end; ++t) {
-      const auto& tri = mesh.triangles[t];
-      const mesh::Vec3f& a = mesh.positions[tri[0]];
-      const mesh::Vec3f& b = mesh.positions[tri[1]];
-      const mesh::Vec3f& c = mesh.positions[tri[2]];
-      for (float value : facetNormal(a, b, c)) appendLittleEndian(bytes, value);
-      for (const mesh::Vec3f* corner : {&a, &b, &c})
-        for (float value : *corner) appendLittleEndian(bytes, value);
-      appendLittleEndian(bytes, std::uint16_t{0});
-    }
-    file.write(bytes.data(), bytes.size());
-    bytes.clear();
+  out.put(header.data(), header.size());
+  out.putLittleEndian(static_cast<std::uint32_t>(mesh.triangles.size()));
+  for (const mesh::Triangle& tri : mesh.triangles) {
+    const mesh::Vec3f& a = mesh.positions[tri[0]];
+    const mesh::Vec3f& b = mesh.positions[tri[1]];
+    const mesh::Vec3f& c = mesh.positions[tri[2]];
+    for (const float value : facetNormal(a, b, c)) out.putLittleEndian(value);
+    for (const mesh::Vec3f* corner : {&a, &b, &c})
+      for (const float value : *corner) out.putLittleEndian(value);
+    out.putLittleEndian(std::uint16_t{0});
   }
-  if (!bytes.empty()) file.write(bytes.data(), bytes.size());
+  out.flush();
   file.commit();
 }
 

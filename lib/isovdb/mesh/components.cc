@@ -87,14 +87,12 @@ std::vector<Mesh> splitComponents(const Mesh& mesh) {
     }
     triangleLabel[t] = l;
   }
-  // Vertices in their order: the new index of each used vertex within its part.
+  // Vertices in their order: the new index of each used vertex within its part. A vertex
+  // no triangle uses is a set of its own, so its root got no label.
   std::vector<std::uint32_t> local(mesh.positions.size(), kNone);
-  std::vector<char> used(mesh.positions.size(), 0);
-  for (const Triangle& tri : mesh.triangles)
-    for (const std::uint32_t v : tri) used[v] = 1;
   const bool normals = mesh.normals.size() == mesh.positions.size() && !mesh.normals.empty();
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-    if (!used[v]) continue;
+    if (label[root[v]] == kNone) continue;
     Mesh& part = parts[label[root[v]]];
     local[v] = static_cast<std::uint32_t>(part.positions.size());
     part.positions.push_back(mesh.positions[v]);

@@ -17,18 +17,19 @@
 #include <tuple>
 
 #include "isovdb/errors.h"
+#include "isovdb/io/path_util.h"
 #include "isovdb/store/vdb_grid_setup.h"
 
 namespace isovdb::store {
 
 namespace {
 
+using io::quoted;
+
 using Tree = volume::FieldGrid::TreeType;
 using UpperNode = Tree::RootNodeType::ChildNodeType;  // 4096^3 voxels, 32^3 slots
 using LowerNode = UpperNode::ChildNodeType;           // 128^3 voxels, 16^3 slots
 using LeafRecord = LeafwiseLevelSetWriter::LeafRecord;
-
-std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
 
 /// Why a stream's write failed: the system's reason when the write set errno (cleared
 /// before it; a full disk: "No space left on device"), else the likely one.

@@ -10,6 +10,7 @@
 
 #include "isovdb/errors.h"
 #include "isovdb/io/atomic_file.h"
+#include "isovdb/io/path_util.h"
 #include "isovdb/store/vdb_grid_setup.h"
 #include "isovdb/store/vdb_layout.h"
 #include "isovdb/volume/grids.h"
@@ -18,13 +19,13 @@ namespace isovdb::store {
 
 namespace {
 
+using io::quoted;
+
 using volume::FieldGrid;
 using volume::Geometry;
 using volume::MaskGrid;
 using volume::Volume;
 using volume::VolumeKind;
-
-std::string quoted(const std::filesystem::path& path) { return "'" + path.string() + "'"; }
 
 std::string className(openvdb::GridClass gridClass) {
   switch (gridClass) {
