@@ -55,6 +55,26 @@ def bmp(width, height, rows):
     return b"BM" + struct.pack("<IHHI", 14 + len(header) + len(pixels), 0, 0, 14 + len(header)) + header + pixels
 
 
+def glb(points, faces):
+    """Binary glTF 2.0: one mesh, one triangle primitive, float positions and uint16 indices."""
+    positions = b"".join(struct.pack("<3f", *p) for p in points)
+    indices = b"".join(struct.pack("<3H", *f) for f in faces)
+    indices += b"\0" * (-len(indices) % 4)
+    lo = [min(p[a] for p in points) for a in range(3)]
+    hi = [max(p[a] for p in points) for a in range(3)]
+    doc = ('{"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],'
+           '"meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1,"mode":4}]}],'
+           '"accessors":[{"bufferView":0,"componentType":5126,"count":%d,"type":"VEC3","min":%s,"max":%s},'
+           '{"bufferView":1,"componentType":5123,"count":%d,"type":"SCALAR"}],'
+           '"bufferViews":[{"buffer":0,"byteOffset":0,"byteLength":%d},{"buffer":0,"byteOffset":%d,"byteLength":%d}],'
+           '"buffers":[{"byteLength":%d}]}' % (len(points), lo, hi, 3 * len(faces), len(positions), len(positions),
+                                                6 * len(faces), len(positions) + len(indices))).encode()
+    doc += b" " * (-len(doc) % 4)
+    body = positions + indices
+    chunks = struct.pack("<I4s", len(doc), b"JSON") + doc + struct.pack("<I4s", len(body), b"BIN\0") + body
+    return struct.pack("<4sII", b"glTF", 2, 12 + len(chunks)) + chunks
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--cli", default=os.path.join(ROOT, "build", "isovdb"))
@@ -107,6 +127,18 @@ def main():
                              + "".join("3 %d %d %d\n" % f for f in faces)).encode())
     put("ply", "binary.ply", head.format("binary_little_endian 1.0").encode()
         + b"".join(struct.pack("<3f", *p) for p in tetra) + b"".join(struct.pack("<B3i", 3, *f) for f in faces))
+
+    # The same tetrahedron in the other mesh formats readMesh takes.
+    put("obj", "tetra.obj", ("# tetrahedron\n" + "".join("v %g %g %g\n" % p for p in tetra)
+                             + "vn 0 0 1\n" + "".join("f %d//1 %d//1 %d//1\n" % tuple(i + 1 for i in f) for f in faces)
+                             + "f -4 -3 -2\n").encode())
+    corners = [[tetra[i] for i in f] for f in faces]
+    put("stl", "ascii.stl", ("solid tetra\n" + "".join(
+        "facet normal 0 0 0\nouter loop\n" + "".join("vertex %g %g %g\n" % p for p in c) + "endloop\nendfacet\n"
+        for c in corners) + "endsolid tetra\n").encode())
+    put("stl", "binary.stl", b"tetra".ljust(80, b" ") + struct.pack("<I", len(corners)) + b"".join(
+        struct.pack("<3f", 0, 0, 0) + b"".join(struct.pack("<3f", *p) for p in c) + b"\0\0" for c in corners))
+    put("glb", "tetra.glb", glb(tetra, faces))
 
     disc = [[255 if (x - 3.5) ** 2 + (y - 3.5) ** 2 < 9 else 0 for x in range(8)] for y in range(8)]
     put("slice_image", "disc.png", png(8, 8, disc))

@@ -71,7 +71,7 @@ void addExtractCommand(CLI::App& app, Context& context) {
     }
     if (triangles == 0)
       std::fprintf(stderr, "isovdb: warning: '%s': no surface at iso %g (empty mesh)\n", state->input.c_str(),
-                   options.contour.iso);
+                   stats["contour"].value("iso", 0.0));
     stats["output"]["path"] = state->output;
     bool passed = true;
     if (state->check) {

@@ -18,6 +18,8 @@ void addSettingFlags(CLI::App& command, const std::vector<pipeline::Setting>& se
             // A setting on by default also takes --no-name, which turns it off.
             const std::string names = setting.negatable ? flag + ",!--no-" + std::string(setting.name) : flag;
             command.add_flag(names, *value, help)->default_str(*value ? "on" : "off");
+          } else if constexpr (std::is_same_v<T, std::optional<float>>) {
+            command.add_option(flag, *value, help);  // unset by default: no default shown
           } else {
             command.add_option(flag, *value, help)->capture_default_str();
           }

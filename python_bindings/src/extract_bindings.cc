@@ -16,9 +16,13 @@ namespace isovdb::python {
 namespace {
 
 py::object extract(const PyVolume& volume, const py::dict& settings, const py::object& progress,
-                   const std::optional<std::filesystem::path>& output) {
+                   const std::optional<std::filesystem::path>& output, const py::object& level) {
   pipeline::ExtractChoices choices;
   assignSettings(pipeline::extractSettings(choices), settings);
+  if (!level.is_none()) {
+    if (choices.options.iso) throw py::value_error("give iso= or level= (the same setting), not both");
+    assignSettings(pipeline::extractSettings(choices), py::dict(py::arg("iso") = level));
+  }
   const pipeline::ExtractOptions options = choices.resolve(/*keywords=*/true);
   CallbackProgress callback(progress);
   pipeline::Statistics stats;
@@ -37,7 +41,7 @@ py::object extract(const PyVolume& volume, const py::dict& settings, const py::o
 
 void bindExtract(py::module_& m) {
   m.def("_extract", &extract, py::arg("volume"), py::arg("settings"), py::kw_only(), py::arg("progress"),
-        py::arg("output"), "extract()'s implementation: the settings as a dict of keywords.");
+        py::arg("output"), py::arg("level"), "extract()'s implementation: the settings as a dict of keywords.");
   pipeline::ExtractChoices defaults;
   defineSettingsFunction(m, "extract", "_extract", pipeline::extractSettings(defaults),
                          {{"progress", "None",
@@ -51,7 +55,8 @@ void bindExtract(py::module_& m) {
                            "  never holding the mesh; same bytes as the CLI) and return the run's statistics dict.\n\n"
                            "The GIL is released while contouring. Mesh.statistics holds the run's figures.\n"
                            "Raises ValueError for an invalid setting or a scalar iso inside a clipped dead band,\n"
-                           "TypeError for a setting of the wrong type."}},
+                           "TypeError for a setting of the wrong type."},
+                          {"level", "None", "level: scikit-image's name for iso (give one, not both)."}},
                          "Contours a volume into a closed triangle Mesh in world space (the `isovdb extract` job).\n\n"
                          "volume: a mask (its distance field is computed first), a distance field (from\n"
                          "distance_field() or a level-set .vdb) or a scalar field (from_numpy of floats, SEG-Y);\n"

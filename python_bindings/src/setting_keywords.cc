@@ -22,6 +22,8 @@ const char* typeName() {
     return "an int";
   else if constexpr (std::is_same_v<T, std::string>)
     return "a str";
+  else if constexpr (std::is_same_v<T, std::optional<float>>)
+    return "a number or None";
   else
     return "a number";
 }
@@ -43,7 +45,12 @@ std::string pythonSource(const pipeline::Setting& setting) {
           out << (*value ? "True" : "False");
         else if constexpr (std::is_same_v<T, std::string>)
           out << py::repr(py::str(*value)).cast<std::string>();
-        else
+        else if constexpr (std::is_same_v<T, std::optional<float>>) {
+          if (*value)
+            out << **value;
+          else
+            out << "None";
+        } else
           out << *value;
       },
       setting.value);
@@ -97,7 +104,10 @@ void assignSettings(const std::vector<pipeline::Setting>& settings, const py::di
           if constexpr (std::is_same_v<T, int>) ok = ok && py::isinstance<py::int_>(value);
           if (ok) {
             try {
-              *field = value.cast<T>();
+              if constexpr (std::is_same_v<T, std::optional<float>>)
+                *field = value.cast<float>();
+              else
+                *field = value.cast<T>();
               return;
             } catch (const py::cast_error&) {
             }
@@ -127,9 +137,10 @@ void defineSettingsFunction(py::module_& m, const std::string& name, const std::
     forwarded += ", " + extra.name + "=" + extra.name;
     doc += extra.help + "\n";
   }
-  // A numpy array stands for from_numpy(array), as in scikit-image and PyVista.
+  // A numpy array stands for from_numpy(array), as in scikit-image and PyVista, and a
+  // pyopenvdb grid for from_openvdb(grid) (_as_volume, volume_bindings.cc).
   const std::string source = "def " + name + "(" + parameters +
-                             "):\n    if not isinstance(volume, Volume):\n        volume = from_numpy(volume)\n"
+                             "):\n    volume = _as_volume(volume)\n"
                              "    return " +
                              implementation + "(volume, {" + values + "}" + forwarded + ")\n";
   py::exec(source, m.attr("__dict__"));

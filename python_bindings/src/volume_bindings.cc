@@ -74,7 +74,13 @@ std::string shapeText(const py::array& array) {
 }
 
 PyVolume fromNumpy(const py::object& object, const py::object& threshold, py::object voxelSize,
-                   const py::object& origin, const py::object& spacingKeyword) {
+                   const py::object& origin, const py::object& spacingKeyword, const py::object& kindKeyword) {
+  const std::string kind = kindKeyword.is_none() ? "" : py::str(kindKeyword).cast<std::string>();
+  if (!kindKeyword.is_none() && (!py::isinstance<py::str>(kindKeyword) || (kind != "mask" && kind != "field")))
+    throw py::value_error("from_numpy: kind: expected None (by dtype), 'mask' or 'field', got " +
+                          py::repr(kindKeyword).cast<std::string>());
+  if (kind == "field" && !threshold.is_none())
+    throw py::value_error("from_numpy: kind='field' keeps the values; a threshold makes a mask (kind='mask')");
   if (!spacingKeyword.is_none()) {
     if (!(py::isinstance<py::float_>(voxelSize) && voxelSize.cast<double>() == 1.0))
       throw py::value_error("from_numpy: give voxel_size= or spacing= (the same keyword), not both");
@@ -100,7 +106,7 @@ PyVolume fromNumpy(const py::object& object, const py::object& threshold, py::ob
   for (double s : spacing)
     if (!(s > 0) || !std::isfinite(s)) throw py::value_error("voxel_size: expected finite values > 0");
   const std::array<double, 3> position = threeDoubles(origin, "origin");
-  const bool scalar = threshold.is_none() && io::isFloatingPoint(type);
+  const bool scalar = kind == "field" || (kind.empty() && threshold.is_none() && io::isFloatingPoint(type));
   volume::MaskRule rule;
   if (!threshold.is_none()) rule.threshold = threshold.cast<double>();
 
@@ -384,11 +390,11 @@ header). Written through a temporary file. Raises OSError when the path is not w
       });
 
   m.def("_from_numpy", &fromNumpy, py::arg("array"), py::arg("threshold"), py::arg("voxel_size"), py::arg("origin"),
-        py::arg("spacing"), "from_numpy()'s implementation.");
+        py::arg("spacing"), py::arg("kind"), "from_numpy()'s implementation.");
   // Defined in Python so that a wrong keyword gets Python's own message naming it (pybind11's
   // lists the overloads and prints the whole array).
-  py::exec(R"(def from_numpy(array, threshold=None, voxel_size=1.0, origin=(0.0, 0.0, 0.0), *, spacing=None):
-    return _from_numpy(array, threshold, voxel_size, origin, spacing)
+  py::exec(R"(def from_numpy(array, threshold=None, voxel_size=1.0, origin=(0.0, 0.0, 0.0), *, spacing=None, kind=None):
+    return _from_numpy(array, threshold, voxel_size, origin, spacing, kind)
 )",
            m.attr("__dict__"));
   m.attr("from_numpy").attr("__module__") = m.attr("__name__");
@@ -403,6 +409,9 @@ array: dtype bool, (u)int8, (u)int16, (u)int32, float32 or float64 (int64/uint64
   strided slice) are copied first.
 threshold: None: integer and bool arrays become a mask (inside = value > 0), float arrays
   a scalar field (contour it with extract(iso=...)). A number: a mask, inside = value > threshold.
+kind: None (by dtype and threshold, as above), 'mask' (inside = value > threshold, default 0,
+  whatever the dtype) or 'field' (a scalar field whatever the dtype: an integer CT array
+  contoured at extract(iso=...) in its own units).
 voxel_size: world units per voxel, one number or (sx, sy, sz); spacing= is the same keyword
   (read_volume's name), give one of them.
 origin: world position of voxel [0, 0, 0].
@@ -461,9 +470,46 @@ Raises ValueError for a scalar field or another adjacency.)doc");
                           {"grid_name", "'sdf'",
                            "grid_name: the grid's name in the output file.\n\n"
                            "Raises ValueError when `volume` is not a mask or a setting is invalid."}},
-                         "Narrow-band signed distance field of a mask (kind \"sdf\"): distances in voxels, NEGATIVE\n"
-                         "inside, the surface between inside and outside voxel centres, the sign of every voxel\n"
-                         "the mask's (the `isovdb sdf` job; voxels beyond the band read +/-half_width).");
+                         "Narrow-band signed distance field of a mask (kind \"distance field\"): distances in voxels,\n"
+                         "NEGATIVE inside, the surface between inside and outside voxel centres, the sign of every\n"
+                         "voxel the mask's (the `isovdb sdf` job; voxels beyond the band read +/-half_width).");
+
+  // pyopenvdb grids cross through a .vdb file: pyopenvdb and this module each link their own
+  // OpenVDB, so a grid object cannot be shared in memory. extract() and distance_field() take
+  // one wherever they take a Volume (_as_volume).
+  py::exec(R"py(def from_openvdb(grid):
+    import os, tempfile
+    try:
+        import pyopenvdb
+    except ImportError as error:
+        raise ValueError("from_openvdb: needs pyopenvdb (Debian: python3-openvdb)") from error
+    with tempfile.TemporaryDirectory(prefix="isovdb-") as folder:
+        path = os.path.join(folder, "grid.vdb")
+        pyopenvdb.write(path, grids=[grid])
+        try:
+            return read_volume(path, grid=grid.name) if grid.name else read_volume(path)
+        except ValueError as error:
+            raise ValueError("from_openvdb: " + type(grid).__name__ + " '" + grid.name + "': " +
+                             str(error).replace("'" + path + "'", "the grid")) from None
+
+
+def _as_volume(volume):
+    if isinstance(volume, Volume):
+        return volume
+    if hasattr(volume, "gridClass") and hasattr(volume, "copyToArray"):
+        return from_openvdb(volume)
+    return from_numpy(volume)
+)py",
+           m.attr("__dict__"));
+  m.attr("from_openvdb").attr("__module__") = m.attr("__name__");
+  m.attr("from_openvdb").attr("__doc__") = R"doc(
+Makes a Volume from a pyopenvdb grid (Debian's python3-openvdb): a level set (GridClass
+LEVEL_SET, world units) becomes a distance field in voxels, a BoolGrid a mask, another
+FloatGrid or DoubleGrid a scalar field, with the grid's transform (uniform scale and
+translation). The grid crosses through a temporary .vdb file (pyopenvdb links its own
+OpenVDB). extract() and distance_field() take a grid directly.
+
+Raises ValueError for a grid type isovdb does not read (vector grids, ...).)doc";
 }
 
 }  // namespace isovdb::python

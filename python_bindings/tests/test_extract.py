@@ -191,7 +191,7 @@ def test_a_field_whose_background_is_inside_gives_its_body_not_a_box(method):
     z, y, x = np.mgrid[0:48, 0:48, 0:48]
     r = np.sqrt((x - 24.0) ** 2 + (y - 24.0) ** 2 + (z - 24.0) ** 2)
     for radius, box in ((20.0, False), (28.0, True)):
-        mesh = isovdb.extract((radius - r).astype(np.float32), method=method)
+        mesh = isovdb.extract((radius - r).astype(np.float32), method=method, iso=0.0)
         report = mesh.check(self_intersections=False)
         assert report["closed"] and report["manifold"] and report["components"] == 1
         assert mesh.volume > 0
@@ -208,14 +208,35 @@ def test_inside_below_meshes_a_signed_distance_array_outward(method):
     # (inside above, like a density) it is a box around a cavity.
     z, y, x = np.mgrid[0:40, 0:40, 0:40]
     sdf = (np.sqrt((x - 19.5) ** 2 + (y - 20.0) ** 2 + (z - 19.0) ** 2) - 12.0).astype(np.float32)
-    below = isovdb.extract(sdf, method=method, inside="below")
-    mirrored = isovdb.extract(-sdf, method=method)
+    below = isovdb.extract(sdf, method=method, inside="below", iso=0.0)
+    mirrored = isovdb.extract(-sdf, method=method, iso=0.0)
     assert np.array_equal(below.vertices, mirrored.vertices) and np.array_equal(below.triangles, mirrored.triangles)
     assert below.statistics["contour"]["inside"] == "below"
     report = below.check()
     assert report["closed"] and report["components"] == 1 and report["self_intersecting_pairs"] == 0
     assert below.volume == pytest.approx(4 / 3 * np.pi * 12.0 ** 3, rel=0.02)
-    assert isovdb.extract(sdf, method=method).check(self_intersections=False)["components"] == 2
+    assert isovdb.extract(sdf, method=method, iso=0.0).check(self_intersections=False)["components"] == 2
+
+
+def test_without_iso_a_field_is_contoured_at_the_middle_of_its_values():
+    # scikit-image's rule: a CT-like field of 200 outside and 1200 inside, given no iso, meets
+    # its surface at 700 (at 0, the old default, it had none); level= is iso's other name.
+    z, y, x = np.mgrid[0:40, 0:40, 0:40]
+    ct = (200.0 + 1000.0 * (np.sqrt((x - 19.5) ** 2 + (y - 20.0) ** 2 + (z - 19.0) ** 2) < 12.0)).astype(np.float32)
+    mesh = isovdb.extract(ct)
+    assert mesh.statistics["contour"]["iso"] == 700.0
+    assert mesh.statistics["contour"]["iso_rule"] == "middle of the values' range"
+    assert mesh.check()["closed"] and mesh.volume == pytest.approx(4 / 3 * np.pi * 12.0 ** 3, rel=0.05)
+    at = isovdb.extract(ct, iso=700.0)
+    assert np.array_equal(mesh.triangles, at.triangles) and "iso_rule" not in at.statistics["contour"]
+    assert np.array_equal(isovdb.extract(ct, level=700.0).triangles, at.triangles)
+    with pytest.raises(ValueError, match="iso= or level="):
+        isovdb.extract(ct, iso=700.0, level=700.0)
+    # A mask and a distance field keep 0: their boundary.
+    assert isovdb.extract(ct > 700).statistics["contour"]["iso"] == 0.0
+    # A constant field has no middle: refused, naming its value, as scikit-image refuses it.
+    with pytest.raises(ValueError, match=r"every value is 3, so no isovalue meets a surface \(give iso"):
+        isovdb.extract(np.full((8, 8, 8), 3.0, np.float32))
 
 
 def test_a_masks_iso_beyond_its_band_points_to_scalar_fields():

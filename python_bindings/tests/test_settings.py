@@ -14,7 +14,7 @@ import pytest
 import isovdb
 from conftest import ROOT, ball
 
-NOT_SETTINGS = {"volume", "progress", "output", "grid_name"}
+NOT_SETTINGS = {"volume", "progress", "output", "grid_name", "level"}
 
 
 def settings_of(function):
@@ -35,7 +35,7 @@ def cli_defaults(cli, command):
 
 
 def python_value(text):
-    if text is None:
+    if text is None or text == "unset":  # docs/cli.md's word for a setting without a default
         return None
     if text in ("on", "off"):
         return text == "on"

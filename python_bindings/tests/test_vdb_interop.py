@@ -89,3 +89,24 @@ def test_streamed_distance_field_rejects_non_masks(tmp_path):
     with pytest.raises(ValueError, match="made from a mask"):
         isovdb.distance_field(sdf, output=tmp_path / "s.vdb")
     assert not (tmp_path / "s.vdb").exists()
+
+
+def test_a_pyopenvdb_grid_is_taken_wherever_a_volume_is():
+    # extract() and distance_field() take pyopenvdb grids as they take numpy arrays (from_openvdb).
+    grid = vdb.createLevelSetSphere(radius=3.0, center=(1, 2, 3), voxelSize=0.2, halfWidth=3.0)
+    grid.name = "sphere"
+    volume = isovdb.from_openvdb(grid)
+    assert volume.kind == "distance field" and volume.spacing == pytest.approx((0.2, 0.2, 0.2))
+    mesh = isovdb.extract(grid, method="adaptive")
+    assert np.array_equal(mesh.triangles, isovdb.extract(volume, method="adaptive").triangles)
+    assert mesh.check()["closed"] and mesh.volume == pytest.approx(4 / 3 * np.pi * 27, rel=0.03)
+    array = ball((20, 22, 24), (9, 10, 11), 6)
+    mask = vdb.BoolGrid()
+    mask.copyFromArray(array)  # unnamed: the file's first grid
+    assert isovdb.from_openvdb(mask).kind == "mask"
+    assert isovdb.distance_field(mask).kind == "distance field"
+    vectors = vdb.Vec3SGrid()
+    vectors.name = "velocity"
+    vectors.copyFromArray(np.ones((4, 4, 4, 3), np.float32))
+    with pytest.raises(ValueError, match="from_openvdb: Vec3SGrid 'velocity': "):
+        isovdb.from_openvdb(vectors)

@@ -359,3 +359,22 @@ def test_a_wrong_keyword_is_named_without_printing_the_array(sphere_mask):
     with pytest.raises(TypeError, match="unexpected keyword argument 'level'") as raised:
         isovdb.from_numpy(sphere_mask, level=3)
     assert len(str(raised.value)) < 200
+
+
+def test_kind_overrides_the_dtypes_guess():
+    # An integer CT array is a mask by its dtype; kind="field" contours its values, and a
+    # float array becomes a mask (value > threshold) with kind="mask".
+    z, y, x = np.mgrid[0:32, 0:32, 0:32]
+    inside = (x - 15.5) ** 2 + (y - 16.0) ** 2 + (z - 15.0) ** 2 < 10.0 ** 2
+    ct = np.where(inside, 1200, 200).astype(np.uint16)
+    assert isovdb.from_numpy(ct).kind == "mask"
+    field = isovdb.from_numpy(ct, kind="field")
+    assert field.kind == "scalar"
+    mesh = isovdb.extract(field, iso=500.0)
+    assert mesh.check()["closed"] and mesh.volume == pytest.approx(4 / 3 * np.pi * 10.0 ** 3, rel=0.06)
+    as_float = isovdb.from_numpy(ct.astype(np.float32), kind="mask", threshold=700.0)
+    assert as_float.kind == "mask" and np.array_equal(as_float.to_numpy(), inside)
+    with pytest.raises(ValueError, match="kind: expected None"):
+        isovdb.from_numpy(ct, kind="sdf")
+    with pytest.raises(ValueError, match="a threshold makes a mask"):
+        isovdb.from_numpy(ct, kind="field", threshold=3.0)

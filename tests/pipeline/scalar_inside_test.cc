@@ -33,7 +33,7 @@ volume::Volume ballField(float sign) {
 mesh::Mesh extractWith(const volume::Volume& field, ContourMethod method, ScalarInside inside, float iso) {
   ExtractOptions options;
   options.contour.method = method;
-  options.contour.iso = iso;
+  options.iso = iso;
   options.scalarInside = inside;
   options.metaCellSize = 16;  // seams through the ball
   return extractMesh(field, options);

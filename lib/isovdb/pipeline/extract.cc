@@ -9,6 +9,7 @@
 #include <cmath>
 #include <optional>
 #include <sstream>
+#include <utility>
 
 #include "isovdb/contour/vdb_mesher.h"
 #include "isovdb/errors.h"
@@ -71,6 +72,24 @@ void indexToWorld(mesh::Mesh& mesh, const volume::Geometry& geometry) {
 
 namespace {
 
+/// The smallest and largest value of a field. The background counts where it stands for samples:
+/// inactive voxels inside the sampled box (a sparse grid's pruned values, SEG-Y's dead band), or
+/// everywhere when the grid records no box (a .vdb level set).
+std::pair<float, float> valueRange(const volume::Volume& volume) {
+  const volume::GridStats stats = volume.stats();
+  bool backgroundSampled = stats.activeVoxels == 0;
+  if (const std::optional<volume::IndexBox> box = volume::sampledBox(volume)) {
+    double samples = 1.0;
+    for (int a = 0; a < 3; ++a) samples *= static_cast<double>(box->max[a]) - box->min[a] + 1.0;
+    backgroundSampled = backgroundSampled || static_cast<double>(stats.activeVoxels) < samples;
+  } else {
+    backgroundSampled = true;
+  }
+  if (!backgroundSampled) return {stats.minValue, stats.maxValue};
+  return {std::min(stats.activeVoxels > 0 ? stats.minValue : stats.background, stats.background),
+          std::max(stats.activeVoxels > 0 ? stats.maxValue : stats.background, stats.background)};
+}
+
 /// An isovalue that cannot meet any surface is refused with the reason, instead of an empty
 /// mesh without a word (scikit-image's marching_cubes refuses the same).
 void checkIsoReachesSurface(const volume::Volume& volume, float iso, int halfWidth) {
@@ -91,15 +110,26 @@ void checkIsoReachesSurface(const volume::Volume& volume, float iso, int halfWid
                        "from Python, an array of floats) or make the mask value > ISO (--threshold ISO)");
     return;
   }
-  const volume::GridStats stats = volume.stats();
-  const float lo = std::min(stats.activeVoxels > 0 ? stats.minValue : stats.background, stats.background);
-  const float hi = std::max(stats.activeVoxels > 0 ? stats.maxValue : stats.background, stats.background);
+  const auto [lo, hi] = valueRange(volume);
   if (iso < lo || iso > hi)
     throw InputError("'" + volume.name() + "': --iso " + number(iso) + " lies outside the values' range [" +
-                     number(lo) + ", " + number(hi) + "] (the background, beyond the data, included): no surface");
+                     number(lo) + ", " + number(hi) + "]: no surface");
 }
 
 }  // namespace
+
+float isoFor(const volume::Volume& volume, const ExtractOptions& options) {
+  if (options.iso) return *options.iso;
+  if (volume.kind() != volume::VolumeKind::Scalar) return 0.0f;
+  const auto [lo, hi] = valueRange(volume);
+  if (!(lo < hi)) {
+    std::ostringstream message;
+    message << "'" << volume.name() << "': every value is " << lo
+            << ", so no isovalue meets a surface (give --iso to choose one)";
+    throw InputError(message.str());
+  }
+  return lo + 0.5f * (hi - lo);  // not (lo + hi) / 2: that overflows near the float range's ends
+}
 
 void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::MeshSink& sink, Interrupter* interrupter,
                  Statistics* stats) {
@@ -107,7 +137,8 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
     throw InputError("--threads: expected 0 (every core) or more, got " + std::to_string(options.threads));
   std::optional<tbb::global_control> threads;
   if (options.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, options.threads);
-  float iso = options.contour.iso;
+  float iso = isoFor(volume, options);
+  const float givenIso = iso;  // before withInsideAboveIso negates it
   checkIsoReachesSurface(volume, iso, options.distance.halfWidth);
   const float deadBand = volume::deadBandOf(volume);
   if (volume.kind() == volume::VolumeKind::Scalar && std::abs(iso) < deadBand) {
@@ -182,7 +213,8 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
       section["cap_triangles_dropped"] = dropped;
     }
     section["method"] = std::string(contourMethodName(method));
-    section["iso"] = options.contour.iso;
+    section["iso"] = givenIso;
+    if (!options.iso && kind == volume::VolumeKind::Scalar) section["iso_rule"] = "middle of the values' range";
     if (kind == volume::VolumeKind::Scalar)
       section["inside"] = std::string(nameOf(kScalarInsideNames, options.scalarInside));
     if (method == ContourMethod::Vdb) section["adaptivity"] = options.adaptivity;

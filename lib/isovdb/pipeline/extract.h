@@ -47,10 +47,12 @@ inline constexpr NameTable<ScalarInside, 2> kScalarInsideNames{
 /// Every setting of `isovdb extract` (each field is a CLI flag and a Python keyword).
 struct ExtractOptions {
   /// The method (adaptive by default, the CLI's and Python's: our engine within
-  /// kDefaultMaxError; vdb is OpenVDB's volumeToMesh, the reference), the isovalue (voxels on a distance field, 0 = the
-  /// mask boundary, > 0 grows the surface; the field's units on a scalar volume) and what the octree, contouring and
-  /// stitching share.
+  /// kDefaultMaxError; vdb is OpenVDB's volumeToMesh, the reference) and what the octree, contouring and
+  /// stitching share. Its iso is set from `iso` (isoFor).
   cell::ContourSettings contour{.method = ContourMethod::Adaptive};
+  /// The isovalue: voxels on a distance field (0 = the mask boundary, > 0 grows the surface), the field's units on a
+  /// scalar volume. Unset: 0 on masks and distance fields, the middle of a scalar field's values (isoFor).
+  std::optional<float> iso;
   /// Octree methods: the octree's own knobs (depths, QEF, error bound and feature criteria).
   octree::OctreeOptions octree{.maxError = kDefaultMaxError};
   /// Octree methods: S, voxels per meta-cell edge (power of two, 16..512; 128 = VDB
@@ -73,6 +75,11 @@ struct ExtractOptions {
   /// Scalar fields: the object's side of the isovalue (ignored for masks and distance fields).
   ScalarInside scalarInside = ScalarInside::Above;
 };
+
+/// The isovalue `options` contour `volume` at: options.iso, or when unset 0 on masks and distance
+/// fields and the middle of a scalar field's values, the background beyond the data included
+/// (scikit-image's rule, which meets a surface whenever the values are not all equal).
+float isoFor(const volume::Volume& volume, const ExtractOptions& options);
 
 /// A scalar field whose inside lies below the isovalue becomes -field, and `iso` -iso: the
 /// engine and volumeToMesh take a scalar's inside above it. A copy (volume::negatedScalar),

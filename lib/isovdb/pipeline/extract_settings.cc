@@ -70,8 +70,9 @@ std::vector<Setting> extractSettings(ExtractChoices& c) {
        &c.method},
       {"iso",
        "Isovalue: voxels on distance fields (0 = the mask boundary, > 0 grows the surface), field units on "
-       "scalars",
-       &o.contour.iso},
+       "scalars. Not given: 0 on masks and distance fields, the middle of the values' range on scalar fields "
+       "(scikit-image's rule)",
+       &o.iso},
       {"inside",
        "Scalar fields: the object's side of the isovalue, above (density, CT, amplitude) or below (a signed "
        "distance negative inside); masks and distance fields keep their own",

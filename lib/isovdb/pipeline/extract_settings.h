@@ -8,6 +8,7 @@
 ///        type stub and the documentation against it, so no name or default can drift.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -46,7 +47,8 @@ struct DistanceChoices {
 struct Setting {
   std::string_view name;  ///< CLI `--name`; Python `name` with '-' -> '_'
   std::string_view help;
-  std::variant<int*, float*, double*, bool*, std::string*> value;
+  /// An optional number is unset by default (CLI: flag not given; Python: None).
+  std::variant<int*, float*, double*, bool*, std::string*, std::optional<float>*> value;
   /// For a bool that defaults to true: the CLI flag that turns it off (`--no-name`).
   bool negatable = false;
 };

@@ -21,6 +21,7 @@ void inspectOctree(const volume::Volume& input, const InspectOctreeOptions& opti
     throw InputError("--meta-cell: expected a power of two in 16..512 (octree inspects one meta-cell), got " +
                      std::to_string(metaCellSize));
   cell::ContourSettings settings = extract.contour;
+  settings.iso = isoFor(input, extract);
   settings.topology = regularTopologyFor(extract.regularTopology, input.kind());
   const volume::Volume field = toContourable(withInsideAboveIso(input, extract.scalarInside, settings.iso),
                                              extract.distance, interrupter, &stats);

@@ -136,15 +136,18 @@ Volume readVdbGrid(const std::filesystem::path& path, const std::string& gridNam
   const auto file = openFile(path);
   std::string name = gridName;
   if (name.empty()) {
+    // The first grid of a readable type; its name may be empty (pyopenvdb writes unnamed grids).
     const openvdb::GridPtrVecPtr metadata = file->readAllGridMetadata();
+    bool found = false;
     for (const openvdb::GridBase::Ptr& grid : *metadata) {
       const std::string type = grid->valueType();
       if (type == "float" || type == "double" || type == "bool" || type == "mask") {
         name = grid->getName();
+        found = true;
         break;
       }
     }
-    if (name.empty()) throw InputError(quoted(path) + ": no float, double, bool or mask grid in the file");
+    if (!found) throw InputError(quoted(path) + ": no float, double, bool or mask grid in the file");
   } else if (!file->hasGrid(name)) {
     std::string names;
     for (auto it = file->beginName(); it != file->endName(); ++it) names += (names.empty() ? "" : ", ") + *it;
