@@ -140,6 +140,35 @@ TEST(CliExtract, StlOutputChecksLikeThePly) {
   EXPECT_EQ(std::filesystem::file_size(mesh), 84 + 50 * json["mesh"]["triangles"].get<std::uint64_t>());
 }
 
+TEST(CliExtract, AScalarFieldWithoutIsoMeetsItsSurfaceAtTheMiddleOfItsValues) {
+  // scikit-image's rule: the genus-2 shape's 0/1 samples read as a scalar field, no --iso: 0.5.
+  TempDir dir;
+  const auto genus2 = writeShape(dir, samples::ShapeKind::Genus2, 48);
+  const auto mesh = dir / "genus2.ply";
+  const auto stats = dir / "extract.json";
+  std::string output;
+  ASSERT_EQ(runCommand(cliPath().string() + " -q extract " + genus2.string() + " --scalar --check -o " + mesh.string() +
+                           " --stats " + stats.string(),
+                       &output),
+            0)
+      << output;
+  const nlohmann::json json = readJson(stats);
+  EXPECT_EQ(json["contour"]["iso"].get<double>(), 0.5);
+  EXPECT_EQ(json["contour"]["iso_rule"].get<std::string>(), "middle of the values' range");
+  EXPECT_EQ(json["check"]["euler_characteristic"].get<int>(), -2);
+  // A constant field has no middle: refused, naming the file and the value.
+  const auto constant = dir / "constant.nrrd";
+  writeFile(constant, "NRRD0004\ntype: uint8\ndimension: 3\nsizes: 4 4 4\nencoding: raw\n\n" + std::string(64, '\7'));
+  EXPECT_EQ(
+      runCommand(cliPath().string() + " -q extract " + constant.string() + " --scalar -o " + (dir / "c.ply").string(),
+                 &output),
+      2);  // bad input
+  EXPECT_NE(output.find("constant.nrrd': every value is 7, so no isovalue meets a surface (give --iso"),
+            std::string::npos)
+      << output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "c.ply"));
+}
+
 TEST(CliExtract, ObjAndGlbOutputsCheckLikeThePly) {
   TempDir dir;
   const auto genus2 = writeShape(dir, samples::ShapeKind::Genus2, 40);

@@ -19,9 +19,17 @@ CellBox cellBoxOf(const std::array<std::optional<int>, 6>& bounds, const CellBox
                                   " outside 1.." + std::to_string(dims[static_cast<std::size_t>(axis)]));
     (b % 2 == 0 ? box.lo : box.hi)[static_cast<std::size_t>(axis)] = value - 1;
   }
-  for (int a = 0; a < 3; ++a)
-    if (box.lo[static_cast<std::size_t>(a)] > box.hi[static_cast<std::size_t>(a)])
+  for (int a = 0; a < 3; ++a) {
+    const auto i = static_cast<std::size_t>(a);
+    if (box.lo[i] > box.hi[i])
       throw std::invalid_argument(std::string("box bound ") + kNames[2 * a] + " above " + kNames[2 * a + 1]);
+    // The defaults (an open BOX) were checked against the grid of their time: SPECGRID may have shrunk it since.
+    if (box.lo[i] < 0 || box.hi[i] >= dims[i])
+      throw std::invalid_argument(std::string("box ") + kNames[2 * a] + ".." + kNames[2 * a + 1] + " = " +
+                                  std::to_string(box.lo[i] + 1) + ".." + std::to_string(box.hi[i] + 1) +
+                                  " outside 1.." + std::to_string(dims[i]) +
+                                  " (the grid's dimensions changed after BOX)");
+  }
   return box;
 }
 

@@ -352,6 +352,12 @@ struct Parser {
       if (static_cast<long long>(values.size()) != currentBox->cellCount())
         throw InputError(where(file, line) + ": " + name + " has " + std::to_string(values.size()) +
                          " values for a BOX of " + std::to_string(currentBox->cellCount()) + " cells");
+      // The BOX was checked against the grid of its time; a later SPECGRID/DIMENS may have shrunk it.
+      for (int a = 0; a < 3; ++a)
+        if (currentBox->lo[a] < 0 || currentBox->hi[a] >= deck.dims[a])
+          throw InputError(where(file, line) + ": " + name + ": the open BOX reaches beyond the grid's " +
+                           std::to_string(deck.dims[0]) + " x " + std::to_string(deck.dims[1]) + " x " +
+                           std::to_string(deck.dims[2]) + " cells (the grid's dimensions changed after BOX)");
       std::vector<double>& whole = deck.properties[name];
       whole.resize(static_cast<std::size_t>(deck.dims[0]) * deck.dims[1] * deck.dims[2], 0.0);
       std::size_t next = 0;
