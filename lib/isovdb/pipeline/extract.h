@@ -77,8 +77,9 @@ struct ExtractOptions {
 };
 
 /// The isovalue `options` contour `volume` at: options.iso, or when unset 0 on masks and distance
-/// fields and the middle of a scalar field's values, the background beyond the data included
-/// (scikit-image's rule, which meets a surface whenever the values are not all equal).
+/// fields and the middle of a scalar field's values (scikit-image's rule); the background counts
+/// where it stands for samples (inactive voxels inside the sampled box, or a grid without one).
+/// @throw InputError for a scalar field whose values are all equal (it has no middle).
 float isoFor(const volume::Volume& volume, const ExtractOptions& options);
 
 /// A scalar field whose inside lies below the isovalue becomes -field, and `iso` -iso: the
