@@ -92,7 +92,9 @@ std::pair<float, float> valueRange(const volume::Volume& volume) {
 
 /// An isovalue that cannot meet any surface is refused with the reason, instead of an empty
 /// mesh without a word (scikit-image's marching_cubes refuses the same).
-void checkIsoReachesSurface(const volume::Volume& volume, float iso, int halfWidth) {
+/// `range`: the field's valueRange (unused for a mask).
+void checkIsoReachesSurface(const volume::Volume& volume, float iso, int halfWidth,
+                            const std::optional<std::pair<float, float>>& range) {
   if (!std::isfinite(iso)) throw InputError("--iso: expected a finite number, got " + std::to_string(iso));
   const auto number = [](float v) {
     std::ostringstream text;
@@ -110,18 +112,19 @@ void checkIsoReachesSurface(const volume::Volume& volume, float iso, int halfWid
                        "from Python, an array of floats) or make the mask value > ISO (--threshold ISO)");
     return;
   }
-  const auto [lo, hi] = valueRange(volume);
+  const auto [lo, hi] = *range;
   if (iso < lo || iso > hi)
     throw InputError("'" + volume.name() + "': --iso " + number(iso) + " lies outside the values' range [" +
                      number(lo) + ", " + number(hi) + "]: no surface");
 }
 
-}  // namespace
-
-float isoFor(const volume::Volume& volume, const ExtractOptions& options) {
+/// isoFor with the field's valueRange already walked (`range`, needed only for a scalar
+/// field without options.iso).
+float isoFor(const volume::Volume& volume, const ExtractOptions& options,
+             const std::optional<std::pair<float, float>>& range) {
   if (options.iso) return *options.iso;
   if (volume.kind() != volume::VolumeKind::Scalar) return 0.0f;
-  const auto [lo, hi] = valueRange(volume);
+  const auto [lo, hi] = *range;
   if (!(lo < hi)) {
     std::ostringstream message;
     message << "'" << volume.name() << "': every value is " << lo
@@ -131,15 +134,25 @@ float isoFor(const volume::Volume& volume, const ExtractOptions& options) {
   return lo + 0.5f * (hi - lo);  // not (lo + hi) / 2: that overflows near the float range's ends
 }
 
+}  // namespace
+
+float isoFor(const volume::Volume& volume, const ExtractOptions& options) {
+  const bool needsRange = !options.iso && volume.kind() == volume::VolumeKind::Scalar;
+  return isoFor(volume, options, needsRange ? std::optional(valueRange(volume)) : std::nullopt);
+}
+
 void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::MeshSink& sink, Interrupter* interrupter,
                  Statistics* stats) {
   if (options.threads < 0)
     throw InputError("--threads: expected 0 (every core) or more, got " + std::to_string(options.threads));
   std::optional<tbb::global_control> threads;
   if (options.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, options.threads);
-  float iso = isoFor(volume, options);
+  // The field's range is walked once (a tree walk): the default iso and its check both read it.
+  std::optional<std::pair<float, float>> range;
+  if (volume.kind() != volume::VolumeKind::Mask) range = valueRange(volume);
+  float iso = isoFor(volume, options, range);
   const float givenIso = iso;  // before withInsideAboveIso negates it
-  checkIsoReachesSurface(volume, iso, options.distance.halfWidth);
+  checkIsoReachesSurface(volume, iso, options.distance.halfWidth, range);
   const float deadBand = volume::deadBandOf(volume);
   if (volume.kind() == volume::VolumeKind::Scalar && std::abs(iso) < deadBand) {
     std::ostringstream message;
