@@ -94,13 +94,16 @@ class LayoutReader {
   std::int64_t position_ = 0;
 };
 
-/// The grid's own records at gridPosition: its compression word (file version >= 222)
-/// and its metadata, which must end before its voxel buffers.
-void checkGridHead(LayoutReader& in, const VdbGridRecord& grid, std::uint32_t version) {
-  in.seek(grid.gridPosition, "grid data");
+/// The grid's own records from where its data starts: its compression word (file version
+/// >= 222), its metadata and, in files of version 219 on (before 216 the
+/// transform followed the topology), its transform's map type name, all before `dataEnd`, its voxel buffers.
+/// OpenVDB allocates the name's declared length before reading it: a damaged length made
+/// it build a 2 GB string (10.8 s, then "KeyError: Map UniformScaleMap").
+void checkGridHead(LayoutReader& in, const std::string& name, std::uint32_t version, std::int64_t dataEnd) {
   if (version >= openvdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION) in.number<std::uint32_t>("grid compression");
   in.metadata("grid metadata");
-  if (in.position() > grid.blockPosition) in.fail("grid '" + grid.name + "': its metadata runs into its voxel data");
+  if (version >= openvdb::OPENVDB_FILE_VERSION_NEW_TRANSFORM) in.text("grid transform");
+  if (in.position() > dataEnd) in.fail("grid '" + name + "': its metadata and transform run into its voxel data");
 }
 
 }  // namespace
@@ -147,7 +150,8 @@ VdbLayout checkVdbLayout(const std::filesystem::path& path) {
       in.fail("grid '" + grid.name + "': its data offsets " + std::to_string(grid.gridPosition) + ", " +
               std::to_string(grid.blockPosition) + ", " + std::to_string(grid.endPosition) +
               " are out of order or beyond the file's " + std::to_string(in.size()) + " bytes (truncated?)");
-    checkGridHead(in, grid, layout.fileVersion);
+    in.seek(grid.gridPosition, "grid data");
+    checkGridHead(in, grid.name, layout.fileVersion, grid.blockPosition);
     layout.grids.push_back(grid);
     in.seek(grid.endPosition, "the next grid descriptor");
   }
