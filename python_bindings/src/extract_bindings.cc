@@ -4,6 +4,8 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <sstream>
+
 #include "bindings.h"
 #include "isovdb/pipeline/extract.h"
 #include "isovdb/pipeline/extract_settings.h"
@@ -14,6 +16,28 @@
 namespace isovdb::python {
 
 namespace {
+
+/// scikit-image raises where no surface is found, so extract() does too (the CLI writes the
+/// empty mesh: batch runs over labels expect a file). Names what the volume holds.
+std::string noSurfaceMessage(const volume::Volume& volume, pipeline::Statistics& stats) {
+  const volume::GridStats grid = volume.stats();
+  std::ostringstream message;
+  message << "no surface: ";
+  switch (volume.kind()) {
+    case volume::VolumeKind::Mask:
+      message << (grid.activeVoxels == 0 ? "the mask has no voxel inside" : "the mask meets no surface");
+      break;
+    case volume::VolumeKind::DistanceField:
+      message << "the distance field has no sign change (values in [" << grid.minValue << ", " << grid.maxValue << "])";
+      break;
+    case volume::VolumeKind::Scalar:
+      message << "the field never crosses iso " << stats.json()["contour"].value("iso", 0.0) << " (values in ["
+              << grid.minValue << ", " << grid.maxValue << "])";
+      break;
+  }
+  message << ", so the mesh would be empty";
+  return message.str();
+}
 
 py::object extract(const PyVolume& volume, const py::dict& settings, const py::object& progress,
                    const std::optional<std::filesystem::path>& output, const py::object& level) {
@@ -33,6 +57,7 @@ py::object extract(const PyVolume& volume, const py::dict& settings, const py::o
   }
   PyMesh result;
   callback.run([&] { result.mesh = pipeline::extractMesh(volume.volume, options, &callback, &stats); });
+  if (result.mesh.triangles.empty()) throw py::value_error(noSurfaceMessage(volume.volume, stats));
   result.statistics = std::move(stats.json());
   return py::cast(std::move(result));
 }
@@ -54,7 +79,9 @@ void bindExtract(py::module_& m) {
                            "  `isovdb extract -o PATH` does (the octree methods stream a .ply meta-cell by meta-cell,\n"
                            "  never holding the mesh; same bytes as the CLI) and return the run's statistics dict.\n\n"
                            "The GIL is released while contouring. Mesh.statistics holds the run's figures.\n"
-                           "Raises ValueError for an invalid setting or a scalar iso inside a clipped dead band,\n"
+                           "Raises ValueError for an invalid setting, a scalar iso inside a clipped dead band or\n"
+                           "a volume without a surface (an empty mask: the mesh would be empty; with output=, the\n"
+                           "empty mesh is written, as the CLI does),\n"
                            "TypeError for a setting of the wrong type."},
                           {"level", "None", "level: scikit-image's name for iso (give one, not both)."}},
                          "Contours a volume into a closed triangle Mesh in world space (the `isovdb extract` job).\n\n"

@@ -183,12 +183,17 @@ def test_info_reports_the_grid(sphere_mask):
     assert info["leaf_nodes"] > 0 and info["grid_memory_bytes"] > 0
 
 
-def test_empty_volume_has_no_active_voxels_and_meshes_to_nothing():
+@pytest.mark.parametrize("method", ["regular", "adaptive", "vdb"])
+def test_empty_volume_has_no_active_voxels_and_no_surface(tmp_path, method):
     volume = isovdb.from_numpy(np.zeros((8, 8, 8), np.uint8))
     assert volume.info()["active_voxels"] == 0
     assert not volume.to_numpy().any()
-    mesh = isovdb.extract(volume, method="regular")
-    assert mesh.triangle_count == 0 and mesh.vertices.shape == (0, 3)
+    # scikit-image raises where it finds no surface; so does extract(), naming why.
+    with pytest.raises(ValueError, match="no surface: the mask has no voxel inside"):
+        isovdb.extract(volume, method=method)
+    # Written to a file, the empty mesh is the result, as the CLI writes it for batch runs.
+    stats = isovdb.extract(volume, method=method, output=tmp_path / "empty.ply")
+    assert stats["contour"]["triangles"] == 0 and isovdb.read_mesh(tmp_path / "empty.ply").triangle_count == 0
 
 
 # --- read_volume ------------------------------------------------------------------------
