@@ -76,11 +76,12 @@ std::string shapeText(const py::array& array) {
 PyVolume fromNumpy(const py::object& object, const py::object& threshold, py::object voxelSize,
                    const py::object& origin, const py::object& spacingKeyword, const py::object& kindKeyword) {
   const std::string kind = kindKeyword.is_none() ? "" : py::str(kindKeyword).cast<std::string>();
-  if (!kindKeyword.is_none() && (!py::isinstance<py::str>(kindKeyword) || (kind != "mask" && kind != "field")))
-    throw py::value_error("from_numpy: kind: expected None (by dtype), 'mask' or 'field', got " +
+  if (!kindKeyword.is_none() &&
+      (!py::isinstance<py::str>(kindKeyword) || (kind != "mask" && kind != "field" && kind != "distance")))
+    throw py::value_error("from_numpy: kind: expected None (by dtype), 'mask', 'field' or 'distance', got " +
                           py::repr(kindKeyword).cast<std::string>());
-  if (kind == "field" && !threshold.is_none())
-    throw py::value_error("from_numpy: kind='field' keeps the values; a threshold makes a mask (kind='mask')");
+  if ((kind == "field" || kind == "distance") && !threshold.is_none())
+    throw py::value_error("from_numpy: kind='" + kind + "' keeps the values; a threshold makes a mask (kind='mask')");
   if (!spacingKeyword.is_none()) {
     if (!(py::isinstance<py::float_>(voxelSize) && voxelSize.cast<double>() == 1.0))
       throw py::value_error("from_numpy: give voxel_size= or spacing= (the same keyword), not both");
@@ -115,13 +116,16 @@ PyVolume fromNumpy(const py::object& object, const py::object& threshold, py::ob
   PyVolume result;
   {
     py::gil_scoped_release release;
-    result.volume = scalar ? volume::ingestScalar(stream) : volume::ingestMask(stream, rule);
+    if (kind == "distance")
+      result.volume = volume::ingestSignedDistances(stream);
+    else
+      result.volume = scalar ? volume::ingestScalar(stream) : volume::ingestMask(stream, rule);
   }
   Json& input = result.input;
   input["format"] = "numpy";
   input["dims"] = std::array<std::int64_t, 3>{array.shape(0), array.shape(1), array.shape(2)};
   input["dtype"] = py::str(static_cast<py::handle>(array.dtype())).cast<std::string>();
-  if (!scalar) input["mask_rule"] = rule.describe();
+  if (!scalar && kind != "distance") input["mask_rule"] = rule.describe();
   return result;
 }
 
@@ -411,7 +415,9 @@ threshold: None: integer and bool arrays become a mask (inside = value > 0), flo
   a scalar field (contour it with extract(iso=...)). A number: a mask, inside = value > threshold.
 kind: None (by dtype and threshold, as above), 'mask' (inside = value > threshold, default 0,
   whatever the dtype) or 'field' (a scalar field whatever the dtype: an integer CT array
-  contoured at extract(iso=...) in its own units).
+  contoured at extract(iso=...) in its own units) or 'distance' (signed distances in world
+  units, negative inside as OpenVDB, scikit-fmm and most SDF tools write them: a distance
+  field, kept as a band of 3 voxels each side, contoured at 0; voxel_size must be one number).
 voxel_size: world units per voxel, one number or (sx, sy, sz); spacing= is the same keyword
   (read_volume's name), give one of them.
 origin: world position of voxel [0, 0, 0].

@@ -383,3 +383,38 @@ def test_kind_overrides_the_dtypes_guess():
         isovdb.from_numpy(ct, kind="sdf")
     with pytest.raises(ValueError, match="a threshold makes a mask"):
         isovdb.from_numpy(ct, kind="field", threshold=3.0)
+
+
+@pytest.mark.parametrize("method", ["adaptive", "regular", "vdb"])
+def test_kind_distance_reads_a_dense_signed_distance_array(method):
+    # scikit-fmm's and OpenVDB's convention: negative inside, in world units (voxel 0.5 here).
+    h, radius, center = 0.5, 9.0, np.array([12.2, 11.9, 12.4])
+    grid = np.indices((48, 48, 48)).transpose(1, 2, 3, 0) * h
+    sdf = np.linalg.norm(grid - center, axis=-1) - radius
+    volume = isovdb.from_numpy(sdf, kind="distance", voxel_size=h)
+    assert volume.kind == "distance field"
+    values = volume.to_numpy()
+    # Values in voxels, the band cut at 3 voxels each side.
+    assert values.min() >= -3.0 and values.max() <= 3.0
+    near = np.abs(sdf) < 1.0
+    assert np.allclose(values[near], sdf[near] / h, atol=1e-5)
+    mesh = isovdb.extract(volume, method=method)
+    check = mesh.check()
+    assert check["closed"] and check["manifold"] and check["components"] == 1
+    distance = np.linalg.norm(mesh.vertices - center, axis=1)
+    # Adaptive mode's coarse cells stay within its error bound, max_error=1 voxel.
+    assert np.abs(distance - radius).max() < (1.0 if method == "adaptive" else 0.1) * h
+    assert mesh.volume == pytest.approx(4 / 3 * np.pi * radius ** 3, rel=0.01)  # positive: outward
+
+
+def test_kind_distance_keeps_the_object_beyond_the_array_outside_and_checks_its_voxels():
+    # A ball cut by the array's end: capped where the data ends, as other fields are.
+    x, y, z = np.mgrid[0:24, 0:24, 0:24].astype(float)  # from_numpy's arrays are indexed [x, y, z]
+    sdf = np.sqrt((x - 4.0) ** 2 + (y - 12.0) ** 2 + (z - 12.0) ** 2) - 8.0
+    mesh = isovdb.extract(isovdb.from_numpy(sdf, kind="distance"))
+    assert mesh.check()["closed"] and mesh.volume > 0
+    assert mesh.bounds[0][0] == pytest.approx(0.0, abs=0.01) and mesh.bounds[1][0] == pytest.approx(12.0, abs=0.05)
+    with pytest.raises(ValueError, match="same voxel size"):
+        isovdb.from_numpy(sdf, kind="distance", voxel_size=(1, 1, 2))
+    with pytest.raises(ValueError, match="a threshold makes a mask"):
+        isovdb.from_numpy(sdf, kind="distance", threshold=0.0)

@@ -241,6 +241,33 @@ Volume ingestScalar(io::SliceStream& stream, const ScalarIngestOptions& options,
   return withSampledBox(Volume(VolumeKind::Scalar, grid, geometryOf(header), stream.source()), header);
 }
 
+Volume ingestSignedDistances(io::SliceStream& stream, int halfWidth, Interrupter* interrupter) {
+  const Geometry geometry = geometryOf(stream.header());
+  if (!geometry.isUniform())
+    throw InputError("'" + stream.source() + "': signed distances need the same voxel size on the three axes, got " +
+                     std::to_string(geometry.spacing[0]) + ", " + std::to_string(geometry.spacing[1]) + ", " +
+                     std::to_string(geometry.spacing[2]));
+  if (halfWidth < 1) throw InputError("half-width: expected at least 1 voxel, got " + std::to_string(halfWidth));
+  // A background no finite sample has keeps every sample active; the band is cut by value below.
+  const Volume samples = ingestScalar(stream, {.background = std::numeric_limits<float>::max()}, interrupter);
+  const FieldGrid::Ptr grid = fieldGridPtr(samples);
+  const float toVoxels = static_cast<float>(1.0 / geometry.spacing[0]);
+  const auto width = static_cast<float>(halfWidth);
+  for (auto it = grid->beginValueOn(); it; ++it) {  // serial: tiles' active bits live in shared nodes
+    const float d = *it * toVoxels;
+    if (std::abs(d) < width) {
+      it.setValue(d);
+    } else {
+      it.setValue(d < 0 ? -width : width);
+      it.setValueOff();
+    }
+  }
+  grid->tree().root().setBackground(width, /*updateChildNodes=*/true);  // beyond the samples: outside
+  openvdb::tools::pruneLevelSet(grid->tree());
+  grid->setGridClass(openvdb::GRID_LEVEL_SET);
+  return Volume(VolumeKind::DistanceField, grid, geometry, samples.name());
+}
+
 }  // namespace isovdb::volume
 
 namespace isovdb::volume {

@@ -44,6 +44,15 @@ struct ScalarIngestOptions {
 Volume ingestScalar(io::SliceStream& stream, const ScalarIngestOptions& options = {},
                     Interrupter* interrupter = nullptr);
 
+/// Signed distances (world units, negative inside: OpenVDB's, scikit-fmm's and most SDF
+/// tools' convention), e.g. a dense SDF array, as the engine's narrow-band distance field:
+/// values in voxels, samples with |distance| >= `halfWidth` voxels inactive at
+/// +-halfWidth, beyond the samples outside. The sampled box is recorded as ingestScalar
+/// records it, so surfaces that reach the data's end are capped.
+/// @throw InputError for non-uniform voxels (a distance has one unit), a half-width below
+///        1, or from the stream; Interrupted on cancellation.
+Volume ingestSignedDistances(io::SliceStream& stream, int halfWidth = 3, Interrupter* interrupter = nullptr);
+
 /// The dead band a Scalar volume was ingested with (0 when none).
 float deadBandOf(const Volume& volume);
 
