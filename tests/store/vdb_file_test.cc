@@ -4,11 +4,14 @@
 
 #include <gtest/gtest.h>
 
+#include <openvdb/io/Compression.h>
 #include <openvdb/io/File.h>
 #include <openvdb/tools/LevelSetSphere.h>
 
 #include <cmath>
 #include <cstring>
+#include <limits>
+#include <sstream>
 #include <random>
 
 #include "isovdb/errors.h"
@@ -187,6 +190,46 @@ TEST(VdbFile, LengthsAndOffsetsBeyondTheFileAreNamed) {
   const auto intoBuffers =
       static_cast<std::int64_t>(layout.grids[0].blockPosition) - static_cast<std::int64_t>(mapName) + 1;
   EXPECT_NE(patched(mapName - 4, intoBuffers, 4).find("run into its voxel data"), std::string::npos);
+  // OpenVDB sizes the delayed-load tables from their leaf count before reading them
+  // (fuzz_vdb: 2^31 leaves, 15 GB); the count follows the type name and the value's size.
+  const std::size_t delayed = bytes.find("__delayedload");
+  ASSERT_NE(delayed, std::string::npos);
+  EXPECT_NE(patched(delayed + 13 + 4, 0x59000004, 4).find("a delayed-load table of 1493172228 leaves"),
+            std::string::npos);
+}
+
+TEST(VdbFile, ChunkLengthsAreCheckedBeforeOpenVdbReadsThem) {
+  // OpenVDB 10 reads -length raw bytes into the buffer before comparing the sizes (a heap
+  // overflow), and allocates a positive length before decompressing; the linker routes
+  // both functions through lib/vdb_chunk_guard, which refuses such a length first. The
+  // buffer is large enough that OpenVDB's own function would not crash: the message says
+  // which ran.
+  const auto chunk = [](std::int64_t length) {
+    std::string bytes(sizeof(length), '\0');
+    std::memcpy(bytes.data(), &length, sizeof(length));
+    return bytes + std::string(64, 'x');
+  };
+  std::vector<char> buffer(256);
+  for (const bool zip : {false, true}) {
+    const auto read = [&](std::int64_t length, std::size_t numBytes) {
+      std::istringstream in(chunk(length));
+      try {
+        if (zip)
+          openvdb::io::unzipFromStream(in, buffer.data(), numBytes);
+        else
+          openvdb::io::bloscFromStream(in, buffer.data(), numBytes);
+      } catch (const openvdb::RuntimeError& e) {
+        return std::string(e.what());
+      }
+      return std::string("read");
+    };
+    EXPECT_NE(read(-64, 16).find("damaged compressed data: a raw chunk of 64 bytes for a 16-byte buffer"),
+              std::string::npos);
+    EXPECT_NE(read(std::int64_t{1} << 44, 16).find("chunk of 17592186044416 bytes"), std::string::npos);
+    EXPECT_NE(read(std::numeric_limits<std::int64_t>::min(), 16).find("raw chunk of 9223372036854775808"),
+              std::string::npos);
+    EXPECT_EQ(read(-64, 64), "read");  // a raw chunk of the buffer's size is read as before
+  }
 }
 
 TEST(VdbFile, FlippedHeaderBytesGiveAVolumeOrAnInputError) {
