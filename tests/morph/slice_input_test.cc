@@ -100,6 +100,37 @@ TEST(SliceImage, CorruptImageNamesTheFile) {
   }
 }
 
+// stb_image grows its buffers from what a PNG's data says (the fuzzer's damaged 8 x 8 PNG
+// asked for 2 GB); io::checkPngData walks the chunks and inflates the data first.
+TEST(SliceImage, PngDataIsBoundedByItsHeaderBeforeDecoding) {
+  TempDir dir;
+  writeSliceImage(dir / "ok.png", rectangle(40, 30, 5, 5, 20, 20));
+  const std::string png = isovdb::test::readFile(dir / "ok.png");
+  const auto message = [&](const std::string& bytes) {
+    writeFile(dir / "bad.png", bytes);
+    try {
+      readSliceImage(dir / "bad.png");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("read");
+  };
+  EXPECT_EQ(message(png), "read");
+  // IHDR (at byte 8) now declares 4 x 3 pixels: 3 rows of 1 + 4 bytes, where the data
+  // inflates to 30 rows of 41 (stb_image does not check the chunks' CRC, nor do we).
+  std::string small = png;
+  small[16 + 3] = 4;
+  small[20 + 3] = 3;
+  EXPECT_NE(message(small).find("inflates to more than the 15 bytes its header declares"), std::string::npos)
+      << message(small);
+  // The first chunk's length past the end of the file.
+  std::string longer = png;
+  longer[8] = '\x7f';
+  EXPECT_NE(message(longer).find("chunk 'IHDR' at byte 8 declares 2130706445 bytes, past the end of the file"),
+            std::string::npos)
+      << message(longer);
+}
+
 // A top-down BMP stores its height negated; stb_image's header probe reports it so, and
 // the size check passed 8 x -16,777,208 pixels as fewer than any limit (the fuzzer's
 // slice_image harness: 134 M pixels decoded, then labelled for > 10 s).

@@ -6,10 +6,12 @@
 
 #include <openvdb/io/Compression.h>
 #include <openvdb/io/File.h>
+#include <openvdb/io/Stream.h>
 #include <openvdb/tools/LevelSetSphere.h>
 
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <limits>
 #include <sstream>
 #include <random>
@@ -139,6 +141,39 @@ TEST(VdbFile, LayoutOfAWrittenFile) {
   EXPECT_EQ(layout.grids[0].type, "Tree_float_5_4_3");
   EXPECT_LT(layout.grids[0].gridPosition, layout.grids[0].blockPosition);
   EXPECT_EQ(layout.grids[0].endPosition, static_cast<std::int64_t>(std::filesystem::file_size(dir / "s.vdb")));
+}
+
+TEST(VdbFile, StreamWrittenFileWithoutOffsetsIsCheckedAndRead) {
+  // io::Stream writes no grid offsets; its first grid's head is checked where it lies, after
+  // the descriptor's unused offsets, and the file reads as one written with offsets.
+  test::TempDir dir;
+  openvdb::initialize();
+  FieldGrid::Ptr grid = openvdb::tools::createLevelSetSphere<FieldGrid>(6.f, openvdb::Vec3f(0.f), 1.f, 3.f);
+  grid->setName("ls");
+  {
+    std::ofstream out(dir / "stream.vdb", std::ios::binary);
+    openvdb::io::Stream(out).write(openvdb::GridCPtrVec{grid});
+  }
+  const VdbLayout layout = checkVdbLayout(dir / "stream.vdb");
+  EXPECT_FALSE(layout.hasGridOffsets);
+  ASSERT_EQ(layout.grids.size(), 1u);
+  EXPECT_EQ(layout.grids[0].name, "ls");
+  const Volume read = readVdb(dir / "stream.vdb");
+  EXPECT_EQ(read.kind(), VolumeKind::DistanceField);
+  EXPECT_EQ(read.stats().activeVoxels, static_cast<std::int64_t>(grid->activeVoxelCount()));
+  // A 4 GB delayed-load size in that head is refused as in a file with offsets.
+  std::string bytes = test::readFile(dir / "stream.vdb");
+  const std::size_t delayed = bytes.find("__delayedload");
+  ASSERT_NE(delayed, std::string::npos);
+  const std::uint32_t huge = 0xffff0000u;
+  std::memcpy(bytes.data() + delayed + 13 + 4 + 4, &huge, 4);  // the mask table's compressed size
+  test::writeFile(dir / "bad.vdb", bytes);
+  try {
+    readVdb(dir / "bad.vdb");
+    ADD_FAILURE() << "read a 4 GB delayed-load size";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("compressed into 4294901760"), std::string::npos) << e.what();
+  }
 }
 
 TEST(VdbFile, TruncatedFilesAreRefusedBeforeOpenVdbReadsThem) {

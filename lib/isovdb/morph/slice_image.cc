@@ -11,6 +11,7 @@
 #include <string>
 
 #include "isovdb/errors.h"
+#include "isovdb/io/png_check.h"
 #include "isovdb/io/png_file.h"
 #include "isovdb/io/atomic_file.h"
 #include "isovdb/io/path_util.h"
@@ -27,6 +28,7 @@ Mask2 readSliceImage(const std::filesystem::path& path, std::int64_t maxPixels) 
   std::ifstream in(path, std::ios::binary);
   if (!in) throw IoError("'" + path.string() + "': cannot open slice image (no such file or not readable)");
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  io::checkPngData(bytes, path.string());  // stb_image grows its buffers from what the data says
   int width = 0, height = 0, channels = 0;
   // The header's size first: decoding allocates it before reading a single pixel.
   // A top-down BMP declares a negative height, which stb_image's info reports as is

@@ -189,8 +189,14 @@ VdbLayout checkVdbLayout(const std::filesystem::path& path) {
     grid.type = in.text("a grid descriptor");
     if (layout.fileVersion >= openvdb::OPENVDB_FILE_VERSION_GRID_INSTANCING) in.text("a grid descriptor");
     if (!layout.hasGridOffsets) {
+      // A stream-written file: the descriptor's offsets are there but meaningless, the grid's
+      // data follows them, and the next descriptor follows that data, which only OpenVDB can
+      // walk; the first grid's head is checked (fuzz_vdb: the flag cleared in a file with
+      // offsets, and OpenVDB read a 4 GB delayed-load size from the grid's metadata).
+      in.skip(24, "a grid descriptor");
+      checkGridHead(in, grid.name, layout.fileVersion, in.size());
       layout.grids.push_back(grid);
-      break;  // without offsets the next descriptor follows the grid's data, which only OpenVDB can walk
+      break;
     }
     const std::int64_t descriptorEnd = in.position() + 24;
     grid.gridPosition = in.number<std::int64_t>("a grid descriptor");
