@@ -131,6 +131,21 @@ TEST(SliceImage, PngDataIsBoundedByItsHeaderBeforeDecoding) {
       << message(longer);
 }
 
+// stb_image decodes a BMP that declares width 0 (fuzz_slice_image: reading its border then
+// indexed an empty mask).
+TEST(SliceImage, ImageWithoutPixelsIsRefused) {
+  TempDir dir;
+  std::string bmp = monochromeBmp(rectangle(8, 8, 2, 2, 5, 5));
+  for (int i = 0; i < 4; ++i) bmp[18 + i] = 0;  // biWidth
+  writeFile(dir / "empty.bmp", bmp);
+  try {
+    readSliceImage(dir / "empty.bmp");
+    FAIL() << "an image of width 0 was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("empty.bmp': the image has no pixels (0 x 8)"), std::string::npos) << e.what();
+  }
+}
+
 // A top-down BMP stores its height negated; stb_image's header probe reports it so, and
 // the size check passed 8 x -16,777,208 pixels as fewer than any limit (the fuzzer's
 // slice_image harness: 134 M pixels decoded, then labelled for > 10 s).

@@ -45,6 +45,11 @@ Mask2 readSliceImage(const std::filesystem::path& path, std::int64_t maxPixels) 
                                           static_cast<int>(bytes.size()), &width, &height, &channels, 1);
   if (!pixels)
     throw InputError("'" + path.string() + "': not a readable PNG or BMP image (" + stbi_failure_reason() + ")");
+  if (width <= 0 || height <= 0) {  // stb_image decodes a BMP of width 0 (fuzz_slice_image)
+    stbi_image_free(pixels);
+    throw InputError("'" + path.string() + "': the image has no pixels (" + std::to_string(width) + " x " +
+                     std::to_string(height) + ")");
+  }
   Mask2 dark = Mask2::empty(width, height);
   for (std::size_t i = 0; i < dark.inside.size(); ++i) dark.inside[i] = pixels[i] < 128 ? 1 : 0;
   stbi_image_free(pixels);
