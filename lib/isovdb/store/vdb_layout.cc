@@ -145,16 +145,84 @@ class LayoutReader {
   std::int64_t position_ = 0;
 };
 
+/// Bytes OpenVDB's map of type `type` reads after its name (math/Maps.h: a Mat4d, or
+/// Vec3d scale, voxel size and three inverses, with a translation), -1 for a map of
+/// variable size (NonlinearFrustumMap) or an unknown name.
+std::int64_t mapBytes(const std::string& type) {
+  static constexpr std::array<std::pair<std::string_view, std::int64_t>, 7> kSizes{{
+      {"AffineMap", 128},
+      {"UnitaryMap", 128},
+      {"ScaleMap", 120},
+      {"UniformScaleMap", 120},
+      {"TranslationMap", 24},
+      {"ScaleTranslateMap", 144},
+      {"UniformScaleTranslateMap", 144},
+  }};
+  for (const auto& [name, size] : kSizes)
+    if (name == type) return size;
+  return -1;
+}
+
+/// Bytes of a value of the trees this project reads (a root tile's value), -1 for others.
+std::int64_t treeValueBytes(const std::string& type) {
+  if (type == "Tree_float_5_4_3") return 4;
+  if (type == "Tree_double_5_4_3") return 8;
+  if (type == "Tree_bool_5_4_3" || type == "Tree_mask_5_4_3") return 1;
+  return -1;
+}
+
+/// The root node's head of a grid's topology (tree/RootNode.h): a buffer count, the
+/// background, the tile and child counts, then each tile (origin, value, active flag).
+/// OpenVDB loops over the declared counts whatever the stream holds (a count of 2^32
+/// spun for 10 s over a 39 KB file) and loads the flag, and a bool tree's value, into a
+/// `bool` (a byte other than 0 or 1 is undefined behaviour).
+void checkRootTopology(LayoutReader& in, const VdbGridRecord& grid, std::int64_t valueBytes, std::int64_t dataEnd) {
+  in.number<std::int32_t>("grid topology");  // buffer count (OpenVDB warns when not 1)
+  in.skip(valueBytes, "grid topology");      // background
+  const auto tiles = static_cast<std::int64_t>(in.number<std::uint32_t>("grid topology"));
+  const auto children = static_cast<std::int64_t>(in.number<std::uint32_t>("grid topology"));
+  // A child of the root stores two 4096-byte masks at least; a tile its origin, value and flag.
+  const std::int64_t tileBytes = 12 + valueBytes + 1;
+  if (tiles * tileBytes + children * (12 + 8192) > dataEnd - in.position())
+    in.fail("grid '" + grid.name + "': its root declares " + std::to_string(tiles) + " tiles and " +
+            std::to_string(children) + " children, more than the " + std::to_string(dataEnd - in.position()) +
+            " bytes of its topology can hold");
+  const bool boolValues = grid.type == "Tree_bool_5_4_3";
+  for (std::int64_t t = 0; t < tiles; ++t) {
+    in.skip(12, "a root tile");
+    for (std::int64_t b = 0; b < valueBytes; ++b) {
+      const auto byte = in.number<std::uint8_t>("a root tile");
+      if (boolValues && byte > 1)
+        in.fail("grid '" + grid.name + "': root tile " + std::to_string(t) + " has the bool value " +
+                std::to_string(byte));
+    }
+    const auto active = in.number<std::uint8_t>("a root tile");
+    if (active > 1)
+      in.fail("grid '" + grid.name + "': root tile " + std::to_string(t) + " has the active flag " +
+              std::to_string(active) + " (0 or 1 expected)");
+  }
+}
+
 /// The grid's own records from where its data starts: its compression word (file version
-/// >= 222), its metadata and, in files of version 219 on (before 216 the
-/// transform followed the topology), its transform's map type name, all before `dataEnd`, its voxel buffers.
-/// OpenVDB allocates the name's declared length before reading it: a damaged length made
-/// it build a 2 GB string (10.8 s, then "KeyError: Map UniformScaleMap").
-void checkGridHead(LayoutReader& in, const std::string& name, std::uint32_t version, std::int64_t dataEnd) {
+/// >= 222), its metadata and, in files of version 219 on (before 216 the transform
+/// followed the topology), its transform, then the root of its topology, all before
+/// `dataEnd` (its voxel buffers, or the file's end). OpenVDB allocates the map type
+/// name's declared length before reading it: a damaged length made it build a 2 GB
+/// string (10.8 s, then "KeyError: Map UniformScaleMap"). The topology is checked for
+/// the trees and maps whose sizes are known, in grids that are not instances.
+void checkGridHead(LayoutReader& in, const VdbGridRecord& grid, std::uint32_t version, std::int64_t dataEnd) {
   if (version >= openvdb::OPENVDB_FILE_VERSION_NODE_MASK_COMPRESSION) in.number<std::uint32_t>("grid compression");
   in.metadata("grid metadata");
-  if (version >= openvdb::OPENVDB_FILE_VERSION_NEW_TRANSFORM) in.text("grid transform");
-  if (in.position() > dataEnd) in.fail("grid '" + name + "': its metadata and transform run into its voxel data");
+  if (version >= openvdb::OPENVDB_FILE_VERSION_NEW_TRANSFORM) {
+    const std::int64_t map = mapBytes(in.text("grid transform"));
+    const std::int64_t valueBytes = treeValueBytes(grid.type);
+    if (map >= 0 && valueBytes >= 0 && grid.instanceParent.empty()) {
+      in.skip(map, "grid transform");
+      checkRootTopology(in, grid, valueBytes, dataEnd);
+    }
+  }
+  if (in.position() > dataEnd)
+    in.fail("grid '" + grid.name + "': its metadata, transform and topology run into its voxel data");
 }
 
 }  // namespace
@@ -187,14 +255,15 @@ VdbLayout checkVdbLayout(const std::filesystem::path& path) {
     VdbGridRecord grid;
     grid.name = in.text("a grid descriptor");
     grid.type = in.text("a grid descriptor");
-    if (layout.fileVersion >= openvdb::OPENVDB_FILE_VERSION_GRID_INSTANCING) in.text("a grid descriptor");
+    if (layout.fileVersion >= openvdb::OPENVDB_FILE_VERSION_GRID_INSTANCING)
+      grid.instanceParent = in.text("a grid descriptor");
     if (!layout.hasGridOffsets) {
       // A stream-written file: the descriptor's offsets are there but meaningless, the grid's
       // data follows them, and the next descriptor follows that data, which only OpenVDB can
       // walk; the first grid's head is checked (fuzz_vdb: the flag cleared in a file with
       // offsets, and OpenVDB read a 4 GB delayed-load size from the grid's metadata).
       in.skip(24, "a grid descriptor");
-      checkGridHead(in, grid.name, layout.fileVersion, in.size());
+      checkGridHead(in, grid, layout.fileVersion, in.size());
       layout.grids.push_back(grid);
       break;
     }
@@ -208,7 +277,7 @@ VdbLayout checkVdbLayout(const std::filesystem::path& path) {
               std::to_string(grid.blockPosition) + ", " + std::to_string(grid.endPosition) +
               " are out of order or beyond the file's " + std::to_string(in.size()) + " bytes (truncated?)");
     in.seek(grid.gridPosition, "grid data");
-    checkGridHead(in, grid.name, layout.fileVersion, grid.blockPosition);
+    checkGridHead(in, grid, layout.fileVersion, grid.blockPosition);
     layout.grids.push_back(grid);
     in.seek(grid.endPosition, "the next grid descriptor");
   }

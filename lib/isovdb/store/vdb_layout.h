@@ -6,7 +6,7 @@
 /// OpenVDB's reader trusts the lengths and offsets it reads: a flipped byte in a
 /// string length makes it allocate gigabytes, a truncated file can make it spin.
 /// This walk reads the same records (header, file metadata, grid descriptors,
-/// each grid's compression word, metadata and transform type) and checks every length and offset
+/// each grid's compression word, metadata, transform and root tiles) and checks every length and offset
 /// against the file's size, so that what OpenVDB then allocates for them is
 /// bounded by the bytes actually present. It reads no voxel data; corruption
 /// inside a grid's topology or buffers is left to OpenVDB's own checks, whose
@@ -24,6 +24,7 @@ namespace isovdb::store {
 struct VdbGridRecord {
   std::string name;                ///< unique name, as stored
   std::string type;                ///< e.g. "Tree_float_5_4_3"
+  std::string instanceParent;      ///< the grid whose tree this one shares; empty if none
   std::int64_t gridPosition = 0;   ///< metadata, transform and topology start here
   std::int64_t blockPosition = 0;  ///< voxel buffers start here
   std::int64_t endPosition = 0;    ///< the next descriptor starts here
