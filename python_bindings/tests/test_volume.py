@@ -1,6 +1,9 @@
 # SPDX-License-Identifier: MPL-2.0
 # Copyright Contributors to the isovdb project.
 """Volume: from_numpy, read_volume, to_numpy, info, write, distance_field."""
+import pathlib
+import re
+
 import numpy as np
 import pytest
 
@@ -418,3 +421,19 @@ def test_kind_distance_keeps_the_object_beyond_the_array_outside_and_checks_its_
         isovdb.from_numpy(sdf, kind="distance", voxel_size=(1, 1, 2))
     with pytest.raises(ValueError, match="a threshold makes a mask"):
         isovdb.from_numpy(sdf, kind="distance", threshold=0.0)
+
+
+@pytest.mark.parametrize("finding, message", [
+    ("finding_raw_chunk_overflow_topology.vdb", "damaged compressed data: a raw chunk of 70368744177664000 bytes"),
+    ("finding_truncated_chunk_length.vdb", "damaged compressed data: the data ends before a chunk's length"),
+    ("finding_delayed_load_count.vdb", "a delayed-load table of 1493172228 leaves"),
+])
+def test_damaged_vdb_files_are_refused_inside_the_module_too(finding, message):
+    # The chunk guard (lib/vdb_chunk_guard) replaces OpenVDB's reading functions for calls
+    # made from this shared module and from the OpenVDB library it loads: without it the
+    # first file overflows the heap (fuzz_vdb findings, fuzz/README.md).
+    path = pathlib.Path(__file__).resolve().parents[2] / "fuzz" / "corpus" / "vdb" / finding
+    if not path.exists():
+        pytest.skip(f"{path} is not in this tree")
+    with pytest.raises(ValueError, match=re.escape(message)):
+        isovdb.read_volume(path)
