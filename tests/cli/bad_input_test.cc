@@ -7,6 +7,8 @@
 
 #include <openvdb/openvdb.h>
 
+#include <cstdlib>
+
 #include <zlib.h>
 
 #include <cmath>
@@ -95,7 +97,11 @@ TEST_F(CliBadInput, NrrdContradictoryFields) {
 TEST_F(CliBadInput, VdbDeclaringAHugeCompressedBufferFailsCleanly) {
   // A fuzzing finding (data/corrupt/PROVENANCE.md): OpenVDB allocated the 2^44 bytes a Blosc
   // chunk declares; lib/vdb_chunk_guard now refuses the length before any allocation, so
-  // the sanitizer build runs this too.
+  // the sanitizer build runs this too. There OpenVDB's RootNode::readTopology leaks the
+  // child it was reading when the guard throws (its exception safety, fuzz/README.md):
+  // LeakSanitizer is told so for the CLI this test runs, as the fuzz harnesses tell it.
+  writeFile(in / "lsan.supp", "leak:openvdb::*::tree::RootNode<*>::readTopology\n");
+  ::setenv("LSAN_OPTIONS", ("print_suppressions=0:suppressions=" + (in / "lsan.supp").string()).c_str(), 1);
   const std::string vdb = (dataDir() / "corrupt" / "blosc_chunk_16tib.vdb").string();
   expectCleanFailure(runCli("extract " + vdb + " -o " + outPly()),
                      {"blosc_chunk_16tib.vdb", "damaged compressed data: a blosc chunk of 17592186044416 bytes"}, out);
