@@ -60,7 +60,6 @@ class InflateCounter {
   }
 
   void setLimit(std::uint64_t limit) { limit_ = limit; }
-  std::uint64_t produced() const { return produced_; }
   bool overLimit() const { return produced_ > limit_; }
 
  private:

@@ -7,10 +7,9 @@
 #include <array>
 #include <bit>
 #include <fstream>
-#include <string_view>
-#include <utility>
 
 #include "isovdb/errors.h"
+#include "isovdb/named_values.h"
 
 namespace isovdb::store {
 
@@ -23,14 +22,12 @@ constexpr std::int64_t kVdbMagic = 0x56444220;  // "VDB " (OpenVDB's OPENVDB_MAG
 /// "vec3i" of 12 bytes turned into a "vec4i" read 16, and the next item's length came
 /// from the wrong bytes (a 1.7 GB name under ASan).
 std::int64_t fixedMetadataSize(const std::string& type) {
-  static constexpr std::array<std::pair<std::string_view, std::int64_t>, 19> kSizes{{
-      {"bool", 1},   {"int32", 4},  {"uint32", 4}, {"int64", 8},  {"float", 4},   {"double", 8}, {"vec2i", 8},
-      {"vec2s", 8},  {"vec2d", 16}, {"vec3i", 12}, {"vec3s", 12}, {"vec3d", 24},  {"vec4i", 16}, {"vec4s", 16},
-      {"vec4d", 32}, {"mat3s", 36}, {"mat3d", 72}, {"mat4s", 64}, {"mat4d", 128},
+  static constexpr NameTable<std::int64_t, 19> kSizes{{
+      {1, "bool"},   {4, "int32"},  {4, "uint32"}, {8, "int64"},  {4, "float"},   {8, "double"}, {8, "vec2i"},
+      {8, "vec2s"},  {16, "vec2d"}, {12, "vec3i"}, {12, "vec3s"}, {24, "vec3d"},  {16, "vec4i"}, {16, "vec4s"},
+      {32, "vec4d"}, {36, "mat3s"}, {72, "mat3d"}, {64, "mat4s"}, {128, "mat4d"},
   }};
-  for (const auto& [name, size] : kSizes)
-    if (name == type) return size;
-  return -1;
+  return valueNamed(kSizes, type).value_or(-1);
 }
 
 /// Bounded little-endian reads of one file; every failure names the file and the record.
@@ -149,18 +146,16 @@ class LayoutReader {
 /// Vec3d scale, voxel size and three inverses, with a translation), -1 for a map of
 /// variable size (NonlinearFrustumMap) or an unknown name.
 std::int64_t mapBytes(const std::string& type) {
-  static constexpr std::array<std::pair<std::string_view, std::int64_t>, 7> kSizes{{
-      {"AffineMap", 128},
-      {"UnitaryMap", 128},
-      {"ScaleMap", 120},
-      {"UniformScaleMap", 120},
-      {"TranslationMap", 24},
-      {"ScaleTranslateMap", 144},
-      {"UniformScaleTranslateMap", 144},
+  static constexpr NameTable<std::int64_t, 7> kSizes{{
+      {128, "AffineMap"},
+      {128, "UnitaryMap"},
+      {120, "ScaleMap"},
+      {120, "UniformScaleMap"},
+      {24, "TranslationMap"},
+      {144, "ScaleTranslateMap"},
+      {144, "UniformScaleTranslateMap"},
   }};
-  for (const auto& [name, size] : kSizes)
-    if (name == type) return size;
-  return -1;
+  return valueNamed(kSizes, type).value_or(-1);
 }
 
 /// Bytes of a value of the trees this project reads (a root tile's value), -1 for others.
