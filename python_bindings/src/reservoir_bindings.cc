@@ -19,7 +19,8 @@ namespace isovdb::python {
 namespace {
 
 PyMesh extractReservoir(const std::variant<std::filesystem::path, std::vector<std::filesystem::path>>& grid,
-                        const std::string& property, double iso, int tessellate, const py::object& progress) {
+                        const std::string& property, double iso, int tessellate, long long maxValues,
+                        const py::object& progress) {
   pipeline::ReservoirOptions options;
   if (const auto* one = std::get_if<std::filesystem::path>(&grid))
     options.inputs = {*one};
@@ -28,6 +29,8 @@ PyMesh extractReservoir(const std::variant<std::filesystem::path, std::vector<st
   options.property = property;
   options.iso = iso;
   options.maxTessellation = tessellate;
+  if (maxValues < 1) throw py::value_error("max_values must be at least 1, got " + std::to_string(maxValues));
+  options.limits.maxValues = maxValues;
   pipeline::Statistics stats;
   PyMesh result;
   CallbackProgress callback(progress);
@@ -41,7 +44,8 @@ PyMesh extractReservoir(const std::variant<std::filesystem::path, std::vector<st
 void bindReservoir(py::module_& m) {
   const pipeline::ReservoirOptions defaults;
   m.def("extract_reservoir", &extractReservoir, py::arg("grid"), py::kw_only(), py::arg("property"), py::arg("iso"),
-        py::arg("tessellate") = defaults.maxTessellation, py::arg("progress") = py::none(), R"doc(
+        py::arg("tessellate") = defaults.maxTessellation, py::arg("max_values") = defaults.limits.maxValues,
+        py::arg("progress") = py::none(), R"doc(
 Isosurface of a cell property of an Eclipse corner-point grid (the `isovdb reservoir` job,
 paper 003): GRDECL deck -> corner-point grid -> cell values averaged to the cell corners
 over the active cells -> Marching Cubes on each hexahedron (asymptotic decider on faces),
@@ -52,6 +56,8 @@ grid: the .grdecl file, or a list: the grid file first, then files with more pro
 property: the cell property keyword (PORO, PERMX, FACIES, SOIL, ...). iso: its isovalue.
 tessellate: 0 keeps the flat triangles; K > 0 refines them as PN triangles (cubic geometry,
   envelope normals) with per-edge factors up to K, crack-free.
+max_values: most values one keyword may hold, n*value repeats counted (a guard against
+  hostile decks; once the grid's size is known, arrays are also bounded by it).
 progress: callable(stage: str, percent: int) per stage (read grdecl, corner-point grid,
   marching cubes, pn triangles); if it raises, the work stops and its exception propagates
   (Ctrl-C too).

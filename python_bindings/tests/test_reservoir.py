@@ -42,6 +42,15 @@ def test_bad_decks(tmp_path):
         isovdb.extract_reservoir(bad, property="PORO", iso=0.5)
 
 
+def test_max_values_bounds_every_keyword(data_dir, tmp_path):
+    deck = data_dir / "reservoir" / "spe9" / "SPE9_CP.DATA"  # 24 x 25 x 15: ZCORN has 72,000 values
+    with pytest.raises(ValueError, match="would hold more than 1000 values"):
+        isovdb.extract_reservoir(deck, property="PORO", iso=0.1, max_values=1000)
+    assert isovdb.extract_reservoir(deck, property="PORO", iso=0.1, max_values=72000).triangle_count > 0
+    with pytest.raises(ValueError, match="max_values"):
+        isovdb.extract_reservoir(deck, property="PORO", iso=0.1, max_values=0)
+
+
 def test_progress_reports_each_stage_and_raising_cancels(data_dir):
     deck = data_dir / "reservoir" / "spe9" / "SPE9_CP.DATA"
     seen = []

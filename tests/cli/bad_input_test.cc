@@ -221,9 +221,22 @@ TEST_F(CliHostileInput, GrdeclRepeatTotalsAndDeviceIncludes) {
   writeFile(in / "r.grdecl", "SPECGRID\n1 1 1 1 F /\nPORO\n100000000*1 100000000*1 100000000*1 /\n");
   expectCleanFailure(runCli("reservoir " + (in / "r.grdecl").string() + " --property PORO --iso 0.5 -o " + outPly()),
                      {"r.grdecl", "PORO would hold more than", "1 x 1 x 1 grid"}, out);
-  writeFile(in / "u.grdecl", "JUNK\n100000000*1 100000000*1 /\n");
+  // Before the grid's size is known only --max-values bounds a keyword: the default refuses
+  // 2.5 x 10^8 + 1 values before allocating any, a smaller limit is the user's to set.
+  writeFile(in / "u.grdecl", "JUNK\n250000001*1 /\n");
   expectCleanFailure(runCli("reservoir " + (in / "u.grdecl").string() + " --property PORO --iso 0.5 -o " + outPly()),
-                     {"u.grdecl", "JUNK would hold more than 100000000"}, out);
+                     {"u.grdecl", "JUNK would hold more than 250000000", "--max-values"}, out);
+  writeFile(in / "u.grdecl", "JUNK\n600*1 600*1 /\n");
+  expectCleanFailure(
+      runCli("reservoir " + (in / "u.grdecl").string() + " --property PORO --iso 0.5 --max-values 1000 -o " + outPly()),
+      {"u.grdecl", "JUNK would hold more than 1000 values at '600*1'", "--max-values"}, out);
+  // A grid declared huge does not lift the limit: its ZCORN would be 8 x 10^18 values.
+  writeFile(in / "h.grdecl", "SPECGRID\n1000000 1000000 1000000 1 F /\nZCORN\n300000000*0 /\n");
+  expectCleanFailure(runCli("reservoir " + (in / "h.grdecl").string() + " --property PORO --iso 0.5 -o " + outPly()),
+                     {"h.grdecl", "ZCORN would hold more than 250000000", "--max-values"}, out);
+  expectCleanFailure(
+      runCli("reservoir " + (in / "h.grdecl").string() + " --property PORO --iso 0.5 --max-values 0 -o " + outPly()),
+      {"--max-values", "at least 1"}, out);
   writeFile(in / "z.grdecl", "INCLUDE\n'/dev/zero' /\n");
   expectCleanFailure(runCli("reservoir " + (in / "z.grdecl").string() + " --property PORO --iso 0.5 -o " + outPly()),
                      {"/dev/zero", "not a regular file"}, out);

@@ -54,6 +54,8 @@ def main():
             "check": [reference],
             "compare": [reference, reference],
         }
+        # Required numeric options, given a valid value while another option is walked.
+        required = {"reservoir": ["--iso", "0.5"]}
         failures = []
         runs = 0
         walked = set()  # help lines: the input flags every command shares are walked once
@@ -67,7 +69,9 @@ def main():
                 for value in VALUES:
                     os.makedirs(os.path.join(tmp, "out"), exist_ok=True)
                     given = ",".join([value] * count)
-                    argv = [isovdb, "-q", command] + arguments + [option, given]
+                    extra = required.get(command, [])
+                    extra = [] if option in extra else extra
+                    argv = [isovdb, "-q", command] + arguments + extra + [option, given]
                     runs += 1
                     try:
                         run = subprocess.run(argv, capture_output=True, text=True, timeout=TIME_LIMIT_S)

@@ -20,7 +20,7 @@ mesh::Mesh extractReservoir(const ReservoirOptions& options, Statistics& stats, 
     Statistics::StageTimer timer(&stats, "read");
     const ProgressStage progress(interrupter, "read grdecl");
     progress.update(0, 1);
-    deck = reservoir::readGrdecl(options.inputs);
+    deck = reservoir::readGrdecl(options.inputs, options.limits);
     progress.update(1, 1);
   }
   {

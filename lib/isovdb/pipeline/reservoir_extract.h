@@ -11,6 +11,7 @@
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/progress.h"
 #include "isovdb/pipeline/statistics.h"
+#include "isovdb/reservoir/grdecl_reader.h"
 
 namespace isovdb::pipeline {
 
@@ -18,7 +19,8 @@ struct ReservoirOptions {
   std::vector<std::filesystem::path> inputs;  ///< grid file first, then extra property files
   std::string property;                       ///< cell property keyword (PORO, FACIES, ...)
   double iso = 0.0;
-  int maxTessellation = 0;  ///< 0: flat MC triangles; K: PN triangles, factors up to K
+  int maxTessellation = 0;         ///< 0: flat MC triangles; K: PN triangles, factors up to K
+  reservoir::GrdeclLimits limits;  ///< guards against hostile sizes in the deck
 };
 
 /// Runs the reservoir stages; figures (cells, triangles, warnings, timings) go to `stats`.

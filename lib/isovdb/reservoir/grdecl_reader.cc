@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -66,6 +67,7 @@ using RecordItems = std::vector<std::optional<std::string>>;
 
 struct Parser {
   GrdeclDeck& deck;
+  GrdeclLimits limits;
   int depth = 0;
   bool stopped = false;
   std::optional<CellBox> currentBox{};  ///< BOX ... ENDBOX
@@ -147,17 +149,19 @@ struct Parser {
   }
 
   // Numeric values of the record from `i`; `/` index in `end`. Throws on a non-number.
-  /// Most values one keyword may hold: every array of a grid of N cells has at most
-  /// 8 N (ZCORN) or 6 (NX+1)(NY+1) (COORD) values; before the grid's size is known, 10^8.
-  double valueLimit() const {
-    if (deck.dims[0] <= 0) return 1e8;
+  /// Most values one keyword may hold: limits.maxValues, and once the grid's size is known,
+  /// what its largest array holds: 8 N (ZCORN) or 6 (NX+1)(NY+1) (COORD) values.
+  double gridValueLimit() const {
+    if (deck.dims[0] <= 0) return std::numeric_limits<double>::infinity();
     const double nx = deck.dims[0], ny = deck.dims[1], nz = deck.dims[2];
     return std::max(8.0 * nx * ny * nz, 6.0 * (nx + 1) * (ny + 1)) + 64;  // + 64: MAPAXES-sized records
   }
+  double valueLimit() const { return std::min(gridValueLimit(), static_cast<double>(limits.maxValues)); }
   std::string valueLimitReason() const {
-    if (deck.dims[0] <= 0) return "(the limit before SPECGRID or DIMENS gives the grid's size)";
-    return "(more than any array of the " + std::to_string(deck.dims[0]) + " x " + std::to_string(deck.dims[1]) +
-           " x " + std::to_string(deck.dims[2]) + " grid holds)";
+    if (gridValueLimit() <= static_cast<double>(limits.maxValues))
+      return "(more than any array of the " + std::to_string(deck.dims[0]) + " x " + std::to_string(deck.dims[1]) +
+             " x " + std::to_string(deck.dims[2]) + " grid holds)";
+    return "(the --max-values limit; raise it for a larger grid)";
   }
 
   std::vector<double> numbers(const std::vector<GrdeclToken>& t, std::size_t i, std::size_t& end,
@@ -390,20 +394,20 @@ struct Parser {
 
 }  // namespace
 
-GrdeclDeck readGrdecl(const std::filesystem::path& path) {
+GrdeclDeck readGrdecl(const std::filesystem::path& path, const GrdeclLimits& limits) {
   GrdeclDeck deck;
   deck.path = path;
-  Parser parser{deck};
+  Parser parser{deck, limits};
   parser.readFile(path);
   return deck;
 }
 
-GrdeclDeck readGrdecl(const std::vector<std::filesystem::path>& paths) {
+GrdeclDeck readGrdecl(const std::vector<std::filesystem::path>& paths, const GrdeclLimits& limits) {
   if (paths.empty()) throw InputError("no GRDECL file given");
   GrdeclDeck deck;
   deck.path = paths.front();
   for (const auto& path : paths) {
-    Parser parser{deck};
+    Parser parser{deck, limits};
     parser.readFile(path);
   }
   return deck;

@@ -46,10 +46,19 @@ struct GrdeclDeck {
   int editsApplied = 0;                                   ///< EQUALS/COPY/MULTIPLY/ADD/MINVALUE/MAXVALUE records
 };
 
+/// Guards against hostile sizes, so that a few bytes (`1000000000*0`) cannot ask for gigabytes.
+struct GrdeclLimits {
+  /// Most values one keyword may hold, `n*value` repeats counted: 2.5 x 10^8 doubles are 2 GB,
+  /// ZCORN of a 31-million-cell grid. Once SPECGRID/DIMENS is read, arrays are also bounded by
+  /// the grid: 8 N (ZCORN) or 6 (NX+1)(NY+1) (COORD) values.
+  long long maxValues = 250'000'000;
+};
+
 /// Reads `path` and its INCLUDEs. @throw InputError naming the file and line
-/// (missing `/`, a malformed number, an unreadable INCLUDE); @throw IoError when `path` cannot be read.
-GrdeclDeck readGrdecl(const std::filesystem::path& path);
+/// (missing `/`, a malformed number, an unreadable INCLUDE, a keyword beyond `limits`);
+/// @throw IoError when `path` cannot be read.
+GrdeclDeck readGrdecl(const std::filesystem::path& path, const GrdeclLimits& limits = {});
 /// Reads several files into one deck, in order (e.g. a grid file and a property file).
-GrdeclDeck readGrdecl(const std::vector<std::filesystem::path>& paths);
+GrdeclDeck readGrdecl(const std::vector<std::filesystem::path>& paths, const GrdeclLimits& limits = {});
 
 }  // namespace isovdb::reservoir
