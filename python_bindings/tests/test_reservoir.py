@@ -42,11 +42,13 @@ def test_bad_decks(tmp_path):
         isovdb.extract_reservoir(bad, property="PORO", iso=0.5)
 
 
-def test_max_values_bounds_every_keyword(data_dir, tmp_path):
+def test_max_values_bounds_the_deck(data_dir):
     deck = data_dir / "reservoir" / "spe9" / "SPE9_CP.DATA"  # 24 x 25 x 15: ZCORN has 72,000 values
-    with pytest.raises(ValueError, match="would hold more than 1000 values"):
+    with pytest.raises(ValueError, match=r"ZCORN \(72000 values\) would exceed max_values 1000"):
         isovdb.extract_reservoir(deck, property="PORO", iso=0.1, max_values=1000)
-    assert isovdb.extract_reservoir(deck, property="PORO", iso=0.1, max_values=72000).triangle_count > 0
+    with pytest.raises(ValueError, match="max_values 80000"):  # COORD, ZCORN and the properties together
+        isovdb.extract_reservoir(deck, property="PORO", iso=0.1, max_values=80000)
+    assert isovdb.extract_reservoir(deck, property="PORO", iso=0.1, max_values=10**6).triangle_count > 0
     with pytest.raises(ValueError, match="max_values"):
         isovdb.extract_reservoir(deck, property="PORO", iso=0.1, max_values=0)
 

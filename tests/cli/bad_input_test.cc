@@ -220,20 +220,22 @@ TEST_F(CliHostileInput, GrdeclRepeatTotalsAndDeviceIncludes) {
   // Each n*value is within the old per-token limit; together they are 3 x 10^8 values.
   writeFile(in / "r.grdecl", "SPECGRID\n1 1 1 1 F /\nPORO\n100000000*1 100000000*1 100000000*1 /\n");
   expectCleanFailure(runCli("reservoir " + (in / "r.grdecl").string() + " --property PORO --iso 0.5 -o " + outPly()),
-                     {"r.grdecl", "PORO would hold more than", "1 x 1 x 1 grid"}, out);
-  // Before the grid's size is known only --max-values bounds a keyword: the default refuses
-  // 2.5 x 10^8 + 1 values before allocating any, a smaller limit is the user's to set.
+                     {"r.grdecl", "PORO at '100000000*1'", "1 x 1 x 1 grid"}, out);
+  // Before the grid's size is known only --max-values bounds the deck: the default refuses
+  // 2.5 x 10^8 + 1 values before allocating any.
   writeFile(in / "u.grdecl", "JUNK\n250000001*1 /\n");
   expectCleanFailure(runCli("reservoir " + (in / "u.grdecl").string() + " --property PORO --iso 0.5 -o " + outPly()),
-                     {"u.grdecl", "JUNK would hold more than 250000000", "--max-values"}, out);
-  writeFile(in / "u.grdecl", "JUNK\n600*1 600*1 /\n");
+                     {"u.grdecl", "JUNK at '250000001*1'", "--max-values 250000000"}, out);
+  // The limit holds for the keywords together, not for each (ten unused keywords of 10^8
+  // values each were 8 GB).
+  writeFile(in / "u.grdecl", "JUNK\n600*1 /\nMORE\n300*1 300*1 /\n");
   expectCleanFailure(
       runCli("reservoir " + (in / "u.grdecl").string() + " --property PORO --iso 0.5 --max-values 1000 -o " + outPly()),
-      {"u.grdecl", "JUNK would hold more than 1000 values at '600*1'", "--max-values"}, out);
+      {"u.grdecl:4", "MORE at '300*1'", "--max-values 1000"}, out);
   // A grid declared huge does not lift the limit: its ZCORN would be 8 x 10^18 values.
   writeFile(in / "h.grdecl", "SPECGRID\n1000000 1000000 1000000 1 F /\nZCORN\n300000000*0 /\n");
   expectCleanFailure(runCli("reservoir " + (in / "h.grdecl").string() + " --property PORO --iso 0.5 -o " + outPly()),
-                     {"h.grdecl", "ZCORN would hold more than 250000000", "--max-values"}, out);
+                     {"h.grdecl:1", "SPECGRID 1000000 x 1000000 x 1000000", "--max-values 250000000"}, out);
   expectCleanFailure(
       runCli("reservoir " + (in / "h.grdecl").string() + " --property PORO --iso 0.5 --max-values 0 -o " + outPly()),
       {"--max-values", "at least 1"}, out);

@@ -149,25 +149,35 @@ struct Parser {
   }
 
   // Numeric values of the record from `i`; `/` index in `end`. Throws on a non-number.
-  /// Most values one keyword may hold: limits.maxValues, and once the grid's size is known,
-  /// what its largest array holds: 8 N (ZCORN) or 6 (NX+1)(NY+1) (COORD) values.
+  /// Most values one keyword may hold once the grid's size is known: what its largest
+  /// array holds, 8 N (ZCORN) or 6 (NX+1)(NY+1) (COORD) values.
   double gridValueLimit() const {
     if (deck.dims[0] <= 0) return std::numeric_limits<double>::infinity();
     const double nx = deck.dims[0], ny = deck.dims[1], nz = deck.dims[2];
     return std::max(8.0 * nx * ny * nz, 6.0 * (nx + 1) * (ny + 1)) + 64;  // + 64: MAPAXES-sized records
   }
-  double valueLimit() const { return std::min(gridValueLimit(), static_cast<double>(limits.maxValues)); }
-  std::string valueLimitReason() const {
-    if (gridValueLimit() <= static_cast<double>(limits.maxValues))
-      return "(more than any array of the " + std::to_string(deck.dims[0]) + " x " + std::to_string(deck.dims[1]) +
-             " x " + std::to_string(deck.dims[2]) + " grid holds)";
-    return "(the --max-values limit; raise it for a larger grid)";
+  /// Values the deck holds so far, every keyword together.
+  double valuesHeld() const {
+    double held = static_cast<double>(deck.coord.size() + deck.zcorn.size() + deck.actnum.size() + deck.mapaxes.size());
+    for (const auto& [name, values] : deck.properties) held += static_cast<double>(values.size());
+    return held;
+  }
+  std::string beyondGrid() const {
+    return "more than any array of the " + std::to_string(deck.dims[0]) + " x " + std::to_string(deck.dims[1]) + " x " +
+           std::to_string(deck.dims[2]) + " grid holds";
+  }
+  std::string beyondMaxValues() const {
+    return "the deck's keywords together would hold more than --max-values " + std::to_string(limits.maxValues) +
+           " values (raise it for a larger grid)";
   }
 
   std::vector<double> numbers(const std::vector<GrdeclToken>& t, std::size_t i, std::size_t& end,
                               const std::filesystem::path& file, const GrdeclToken& keyword,
                               std::size_t limit = static_cast<std::size_t>(-1)) const {
     std::vector<double> values;
+    // The whole deck is bounded, not each n*value: three 10^8 repeats made 4.5 GB.
+    const double gridLimit = gridValueLimit();
+    const double deckRoom = static_cast<double>(limits.maxValues) - valuesHeld();
     for (end = i; end < t.size() && end < limit && !t[end].isSlash(); ++end) {
       const std::string_view s = t[end].text;
       const std::size_t star = s.find('*');
@@ -189,11 +199,11 @@ struct Parser {
         throw InputError(where(file, t[end].line) + ": keyword " + std::string(keyword.text) + ": '" + std::string(s) +
                          "' is not a number (expected a value or n*value)");
       }
-      // The whole keyword is bounded, not each n*value: three 10^8 repeats made 4.5 GB.
-      if (static_cast<double>(values.size()) + static_cast<double>(repeat) > valueLimit())
-        throw InputError(where(file, t[end].line) + ": keyword " + std::string(keyword.text) +
-                         " would hold more than " + std::to_string(static_cast<long long>(valueLimit())) +
-                         " values at '" + std::string(s) + "' " + valueLimitReason());
+      const double count = static_cast<double>(values.size()) + static_cast<double>(repeat);
+      if (count > gridLimit || count > deckRoom)
+        throw InputError(where(file, t[end].line) + ": keyword " + std::string(keyword.text) + " at '" +
+                         std::string(s) +
+                         "': " + (count > gridLimit ? "would hold " + beyondGrid() : beyondMaxValues()));
       values.insert(values.end(), static_cast<std::size_t>(repeat), value);
     }
     if (end == t.size() && end < limit)
@@ -378,6 +388,13 @@ struct Parser {
                            " must be a positive integer");
         deck.dims[a] = static_cast<int>(values[a]);
       }
+      // Every array of the grid is then allowed its size: ZCORN's 8 N values must fit.
+      const double zcornValues = 8.0 * deck.dims[0] * deck.dims[1] * deck.dims[2];
+      if (zcornValues > static_cast<double>(limits.maxValues))
+        throw InputError(where(file, line) + ": " + name + " " + std::to_string(deck.dims[0]) + " x " +
+                         std::to_string(deck.dims[1]) + " x " + std::to_string(deck.dims[2]) + ": its ZCORN (" +
+                         std::to_string(static_cast<long long>(zcornValues)) + " values) would exceed --max-values " +
+                         std::to_string(limits.maxValues) + " (raise it for a larger grid)");
     } else if (name == "COORD") {
       deck.coord = std::move(values);
     } else if (name == "ZCORN") {

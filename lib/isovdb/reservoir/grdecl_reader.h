@@ -48,9 +48,10 @@ struct GrdeclDeck {
 
 /// Guards against hostile sizes, so that a few bytes (`1000000000*0`) cannot ask for gigabytes.
 struct GrdeclLimits {
-  /// Most values one keyword may hold, `n*value` repeats counted: 2.5 x 10^8 doubles are 2 GB,
-  /// ZCORN of a 31-million-cell grid. Once SPECGRID/DIMENS is read, arrays are also bounded by
-  /// the grid: 8 N (ZCORN) or 6 (NX+1)(NY+1) (COORD) values.
+  /// Most values the deck's keywords may hold together, `n*value` repeats counted: 2.5 x 10^8
+  /// doubles are 2 GB, a grid of 25 million cells with ZCORN, ACTNUM and a property. A
+  /// SPECGRID/DIMENS whose ZCORN (8 N) would not fit is refused, and each array is bounded
+  /// by the grid too: 8 N (ZCORN) or 6 (NX+1)(NY+1) (COORD) values.
   long long maxValues = 250'000'000;
 };
 
