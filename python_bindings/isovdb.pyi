@@ -93,7 +93,8 @@ def euler_characteristic(volume: Volume, adjacency: Literal[26, 6] = 26, progres
 # these two signatures against it.
 def distance_field(volume: Volume | npt.NDArray[Any], *, distance: Literal["interface", "tracker"] = "interface", half_width: int = 3,
                    sdf_chunk: int = 64, closing: int = 0, progress: Progress = None,
-                   output: PathLike | None = None, grid_name: str = "sdf") -> Volume | dict[str, Any]: ...
+                   output: PathLike | None = None, grid_name: str = "sdf", spacing: Vec3 | None = None, origin: Sequence[float] | None = None,
+                   kind: Literal["mask", "field", "distance"] | None = None, threshold: float | None = None) -> Volume | dict[str, Any]: ...
 def extract(volume: Volume | npt.NDArray[Any], *, method: Literal["adaptive", "regular", "vdb"] = "adaptive", iso: float | None = None,
             inside: Literal["above", "below"] = "above", adaptivity: float = 0, distance: Literal["interface", "tracker"] = "interface", half_width: int = 3,
             sdf_chunk: int = 64, closing: int = 0, meta_cell: int = 128, threads: int | None = 0,
@@ -101,5 +102,6 @@ def extract(volume: Volume | npt.NDArray[Any], *, method: Literal["adaptive", "r
             qef_tolerance: float = 0.15, max_error: float = 1, intersection_free: bool = True,
             sharp_features: bool = False, boundary: Literal["cap", "open"] = "cap", topology: Literal["auto", "voxels", "mdmc"] = "auto",
             progress: Progress = None, output: PathLike | None = None,
-            level: float | None = None) -> Mesh | dict[str, Any]: ...
+            level: float | None = None, spacing: Vec3 | None = None, origin: Sequence[float] | None = None,
+            kind: Literal["mask", "field", "distance"] | None = None, threshold: float | None = None) -> Mesh | dict[str, Any]: ...
 def read_mesh(path: PathLike) -> Mesh: ...

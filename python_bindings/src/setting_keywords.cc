@@ -137,10 +137,16 @@ void defineSettingsFunction(py::module_& m, const std::string& name, const std::
     forwarded += ", " + extra.name + "=" + extra.name;
     doc += extra.help + "\n";
   }
-  // A numpy array stands for from_numpy(array), as in scikit-image and PyVista, and a
-  // pyopenvdb grid for from_openvdb(grid) (_as_volume, volume_bindings.cc).
-  const std::string source = "def " + name + "(" + parameters +
-                             "):\n    volume = _as_volume(volume)\n"
+  // A numpy array stands for from_numpy(array, <the array keywords>), as in scikit-image and
+  // PyVista, and a pyopenvdb grid for from_openvdb(grid) (_as_volume, volume_bindings.cc).
+  parameters += ", spacing=None, origin=None, kind=None, threshold=None";
+  doc +=
+      "spacing, origin, kind, threshold: for a numpy array, as from_numpy() takes them (spacing: one\n"
+      "  voxel size or three, world units; origin: the world position of element [0, 0, 0]; kind: None\n"
+      "  (by dtype), 'mask', 'field' or 'distance'; threshold: a mask of the values above it). A Volume\n"
+      "  keeps its own: giving them with one raises ValueError.\n";
+  const std::string source = "def " + name + "(" + parameters + "):\n    volume = _as_volume(volume, '" + name +
+                             "', spacing=spacing, origin=origin, kind=kind, threshold=threshold)\n"
                              "    return " +
                              implementation + "(volume, {" + values + "}" + forwarded + ")\n";
   py::exec(source, m.attr("__dict__"));

@@ -499,12 +499,18 @@ Raises ValueError for a scalar field or another adjacency.)doc");
                              str(error).replace("'" + path + "'", "the grid")) from None
 
 
-def _as_volume(volume):
+def _as_volume(volume, caller, **array_keywords):
+    given = {name: value for name, value in array_keywords.items() if value is not None}
+    is_grid = hasattr(volume, "gridClass") and hasattr(volume, "copyToArray")
+    if given and (isinstance(volume, Volume) or is_grid):
+        raise ValueError(caller + ": " + ", ".join(given) + (" apply" if len(given) > 1 else " applies") +
+                         " to a numpy array; a " + ("Volume" if isinstance(volume, Volume) else "grid") +
+                         " keeps its own (make it with from_numpy(array, ...) to set them)")
     if isinstance(volume, Volume):
         return volume
-    if hasattr(volume, "gridClass") and hasattr(volume, "copyToArray"):
+    if is_grid:
         return from_openvdb(volume)
-    return from_numpy(volume)
+    return from_numpy(volume, **given)
 )py",
            m.attr("__dict__"));
   m.attr("from_openvdb").attr("__module__") = m.attr("__name__");

@@ -347,3 +347,36 @@ def test_max_error_bounds_how_far_adaptive_vertices_stray_from_a_smooth_surface(
     assert counts[0] < counts[1] < counts[2]
     with pytest.raises(TypeError):
         isovdb.extract(field, method="adaptive", iso=0.5, max_error="tight")
+
+
+def test_array_keywords_are_from_numpys():
+    mask = ball((20, 18, 16), (9, 8, 7), 5)
+    placed = isovdb.extract(mask, spacing=(0.5, 0.5, 2.0), origin=(100.0, 0.0, -3.0))
+    reference = isovdb.extract(isovdb.from_numpy(mask, spacing=(0.5, 0.5, 2.0), origin=(100.0, 0.0, -3.0)))
+    assert np.array_equal(placed.vertices, reference.vertices)
+    assert np.array_equal(placed.triangles, reference.triangles)
+    plain = isovdb.extract(mask)
+    assert np.allclose(placed.vertices, plain.vertices * [0.5, 0.5, 2.0] + [100.0, 0.0, -3.0], atol=1e-4)
+
+    x, y, z = np.indices((24, 24, 24), dtype=np.float32)
+    sdf = np.sqrt((x - 11.5) ** 2 + (y - 11.5) ** 2 + (z - 11.5) ** 2) - 7.0
+    as_distance = isovdb.extract(sdf, kind="distance")
+    assert np.array_equal(as_distance.vertices, isovdb.extract(isovdb.from_numpy(sdf, kind="distance")).vertices)
+    # The same floats read by dtype are a scalar field, meshed at the middle of their range.
+    assert not np.array_equal(as_distance.vertices, isovdb.extract(sdf).vertices)
+
+    grey = (mask * 200).astype(np.uint8)
+    thresholded = isovdb.extract(grey, threshold=100)
+    assert np.array_equal(thresholded.vertices, isovdb.extract(isovdb.from_numpy(grey, threshold=100)).vertices)
+    volume = isovdb.distance_field(mask, spacing=2.0)
+    assert volume.kind == "distance field" and volume.spacing == (2.0, 2.0, 2.0)
+
+
+def test_array_keywords_with_a_volume_are_refused():
+    volume = isovdb.from_numpy(ball((12, 12, 12), (6, 6, 6), 4))
+    with pytest.raises(ValueError, match=r"extract: spacing, origin apply to a numpy array; a Volume keeps its own"):
+        isovdb.extract(volume, spacing=2.0, origin=(1, 2, 3))
+    with pytest.raises(ValueError, match=r"distance_field: kind applies to a numpy array"):
+        isovdb.distance_field(volume, kind="mask")
+    with pytest.raises(ValueError, match="kind"):
+        isovdb.extract(np.zeros((4, 4, 4), np.float32), kind="surface")

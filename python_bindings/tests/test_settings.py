@@ -14,7 +14,8 @@ import pytest
 import isovdb
 from conftest import ROOT, ball
 
-NOT_SETTINGS = {"volume", "progress", "output", "grid_name", "level"}
+# The array keywords (spacing, origin, kind, threshold) are from_numpy's, for a numpy input.
+NOT_SETTINGS = {"volume", "progress", "output", "grid_name", "level", "spacing", "origin", "kind", "threshold"}
 
 
 def settings_of(function):
