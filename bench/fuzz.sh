@@ -16,7 +16,7 @@ out="${2:-fuzz-out}"
 shift $(( $# > 2 ? 2 : $# ))
 build="${ISOVDB_BUILD_DIR:-build-fuzz}"
 harnesses=("$@")
-[ ${#harnesses[@]} -gt 0 ] || harnesses=(raw nrrd metaimage segy vdb grdecl ply obj stl glb slice_image extract)
+[ ${#harnesses[@]} -gt 0 ] || harnesses=(raw nrrd metaimage segy vdb grdecl ply obj stl glb gltf slice_image extract)
 command -v clang++-14 >/dev/null || { echo "fuzz.sh: needs clang++-14 (apt-get install clang-14 libfuzzer-14-dev)" >&2; exit 2; }
 if [ ! -f "$build/CMakeCache.txt" ]; then
   cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++-14 \

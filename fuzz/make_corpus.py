@@ -11,6 +11,7 @@ committed, so nothing runs this in CI.
     /usr/bin/python3 fuzz/make_corpus.py [--cli build/isovdb]
 """
 import argparse
+import base64
 import gzip
 import os
 import struct
@@ -139,6 +140,20 @@ def main():
     put("stl", "binary.stl", b"tetra".ljust(80, b" ") + struct.pack("<I", len(corners)) + b"".join(
         struct.pack("<3f", 0, 0, 0) + b"".join(struct.pack("<3f", *p) for p in c) + b"\0\0" for c in corners))
     put("glb", "tetra.glb", glb(tetra, faces))
+    # glTF text: the tetrahedron's buffer in a data: URI, placed by a parent's TRS and a child's matrix.
+    buffer = b"".join(struct.pack("<3f", *p) for p in tetra) + b"".join(struct.pack("<3H", *f) for f in faces)
+    put("gltf", "tetra_nodes.gltf", (
+        '{"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],'
+        '"nodes":[{"translation":[1,2,3],"rotation":[0,0,0.6,0.8],"scale":[1,2,-1],"children":[1]},'
+        '{"mesh":0,"matrix":[2,0,0,0,0,2,0,0,0,0,2,0,0,0,1,1]}],'
+        '"meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}],'
+        '"accessors":[{"bufferView":0,"componentType":5126,"count":%d,"type":"VEC3"},'
+        '{"bufferView":1,"componentType":5123,"count":%d,"type":"SCALAR"}],'
+        '"bufferViews":[{"buffer":0,"byteLength":%d},{"buffer":0,"byteOffset":%d,"byteLength":%d}],'
+        '"buffers":[{"byteLength":%d,"uri":"data:application/octet-stream;base64,%s"}]}'
+        % (len(tetra), 3 * len(faces), 12 * len(tetra), 12 * len(tetra), 6 * len(faces), len(buffer),
+           base64.b64encode(buffer).decode())).encode())
+    copy("gltf", "data/meshes/Box-embedded.gltf")
 
     disc = [[255 if (x - 3.5) ** 2 + (y - 3.5) ** 2 < 9 else 0 for x in range(8)] for y in range(8)]
     put("slice_image", "disc.png", png(8, 8, disc))

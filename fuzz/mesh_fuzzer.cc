@@ -2,7 +2,7 @@
 // Copyright Contributors to the isovdb project.
 // libFuzzer harness of one mesh reader, through readMesh as `isovdb check` and `compare`
 // call it, then the mesh checks `check` runs on what it read: the input is written as a
-// file with the extension ISOVDB_FUZZ_EXTENSION (.ply, .obj, .stl or .glb;
+// file with the extension ISOVDB_FUZZ_EXTENSION (.ply, .obj, .stl, .glb or .gltf;
 // fuzz/CMakeLists.txt builds one harness per extension).
 #include <cstddef>
 #include <cstdint>

@@ -275,7 +275,8 @@ del _mesh_to_vtk, _mesh_to_pyvista, _mesh_to_trimesh
 
   m.def("read_mesh", &readMesh, py::arg("path"),
         "Reads a .ply, .obj (polygons as fans), .stl (binary or ASCII; corners welded by exact "
-        "position) or .glb (binary glTF 2.0; every triangle primitive) mesh. Raises OSError "
+        "position), .glb or .gltf (glTF 2.0; every triangle primitive of the default scene, placed by "
+        "its nodes' transforms) mesh. Raises OSError "
         "for a missing file, ValueError for a malformed one or another extension.");
 }
 

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import isovdb
-from conftest import ball
+from conftest import ROOT, ball
 
 TETRAHEDRON = (np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], np.float32),
                np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]], np.uint32))
@@ -175,7 +175,8 @@ def test_write_and_read_back(tmp_path, mesh, suffix):
 def test_write_and_read_errors(tmp_path, mesh):
     with pytest.raises(ValueError, match="gltf"):
         mesh.write(tmp_path / "m.gltf")
-    with pytest.raises(ValueError, match="gltf"):
+    (tmp_path / "m.gltf").write_text("solid tetra\n")  # .gltf is read, glTF JSON only
+    with pytest.raises(ValueError, match="m.gltf.*neither glTF JSON text nor binary glTF"):
         isovdb.read_mesh(tmp_path / "m.gltf")
     with pytest.raises(OSError):
         mesh.write(tmp_path / "missing" / "m.ply")
@@ -220,3 +221,14 @@ def test_faces_area_volume_and_bounds_of_a_tetrahedron():
 def test_a_ball_mesh_encloses_about_the_masks_voxels(mesh):
     voxels = np.count_nonzero(ball((24, 24, 24), (12, 12, 12), 8))
     assert mesh.volume == pytest.approx(voxels, rel=0.1)
+
+
+def test_read_mesh_places_gltf_nodes(data_dir):
+    # The fuzz seed's tetrahedron under a parent scaled (1, 2, -1) (a mirror) and a child
+    # scaled 2: the volume grows by |det| = 16 and stays positive (the winding turned back).
+    plain = isovdb.read_mesh(ROOT / "fuzz" / "corpus" / "glb" / "tetra.glb")
+    placed = isovdb.read_mesh(ROOT / "fuzz" / "corpus" / "gltf" / "tetra_nodes.gltf")
+    assert placed.triangle_count == plain.triangle_count
+    assert placed.volume == pytest.approx(16 * plain.volume)
+    box = isovdb.read_mesh(data_dir / "meshes" / "Box-embedded.gltf")  # glTF-Sample-Models' Box
+    assert box.triangle_count == 12 and box.volume == pytest.approx(1.0)

@@ -27,17 +27,6 @@ namespace isovdb::io {
 /// @throw IoError when the file cannot be created or written
 void writeGlb(const std::filesystem::path& path, const mesh::Mesh& mesh);
 
-/// @brief Reads the triangles of every mesh primitive of a binary glTF 2.0 file
-///        into one indexed mesh (primitives appended in order).
-///
-/// Reads float32 POSITION, float32 NORMAL when every primitive has it, and
-/// indices of any unsigned type (or none: consecutive corners); node transforms
-/// are not applied (positions are the mesh's own). Primitives that are not
-/// triangle lists (points, lines, strips, fans) are refused.
-/// @throw IoError when the file cannot be opened or read
-/// @throw InputError naming the file and the problem: not GLB (magic, version),
-///        a chunk or accessor outside the file, an unsupported accessor type,
-///        an index beyond the vertices, a non-finite coordinate
-mesh::Mesh readGlb(const std::filesystem::path& path);
+/// Reading: io/gltf_reader.h (.glb and .gltf, node transforms applied).
 
 }  // namespace isovdb::io

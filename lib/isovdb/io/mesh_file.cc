@@ -6,6 +6,7 @@
 
 #include "isovdb/errors.h"
 #include "isovdb/io/glb.h"
+#include "isovdb/io/gltf_reader.h"
 #include "isovdb/io/obj.h"
 #include "isovdb/io/path_util.h"
 #include "isovdb/io/ply.h"
@@ -38,8 +39,9 @@ mesh::Mesh readMesh(const std::filesystem::path& path) {
   if (ext == ".ply") return readPly(path);
   if (ext == ".obj") return readObj(path);
   if (ext == ".stl") return readStl(path);
-  if (ext == ".glb") return readGlb(path);
-  throw InputError(unknownFormat(path, ext));
+  if (ext == ".glb" || ext == ".gltf") return readGltf(path);
+  throw InputError("'" + path.string() + "': unknown mesh format '" + ext +
+                   "', expected .ply, .obj, .stl, .glb or .gltf");
 }
 
 }  // namespace isovdb::io

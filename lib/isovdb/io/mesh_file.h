@@ -19,7 +19,8 @@ void checkMeshPath(const std::filesystem::path& path);
 /// @throw InputError for another extension; IoError when not writable.
 void writeMesh(const std::filesystem::path& path, const mesh::Mesh& mesh);
 
-/// Reads a PLY, OBJ, STL (binary or ASCII) or GLB file by extension. @throw IoError / InputError (names the file).
+/// Reads a PLY, OBJ, STL (binary or ASCII), GLB or .gltf file by extension (glTF: the
+/// default scene, node transforms applied; io/gltf_reader.h). @throw IoError / InputError (names the file).
 mesh::Mesh readMesh(const std::filesystem::path& path);
 
 }  // namespace isovdb::io
