@@ -28,6 +28,38 @@ TEST(CliReservoir, Spe9PoroWithTessellationAndStatistics) {
   EXPECT_TRUE(std::filesystem::exists(dir / "s.ply"));
 }
 
+TEST(CliReservoir, MapAxesAreStatedInEveryMeshHeader) {
+  // Two cells, PORO 0 and 1; MAPAXES as Reek's. The mesh stays in grid coordinates (float
+  // positions near 6e6 would round to 0.5 m); the axes go into the file's header.
+  TempDir dir;
+  std::string deck = "MAPAXES\n456510.625 5938935.5 456510.625 5926880.172 467216.753 5926880.172 /\n";
+  deck += "SPECGRID\n2 1 1 1 F /\nCOORD\n";
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 3; ++i)
+      deck +=
+          std::to_string(i) + " " + std::to_string(j) + " 0 " + std::to_string(i) + " " + std::to_string(j) + " 1\n";
+  deck += "/\nZCORN\n8*0 8*1 /\nPORO\n0 1 /\n";
+  writeFile(dir / "two.grdecl", deck);
+  const std::string axes = "mapaxes 456510.625 5938935.5 456510.625 5926880.172 467216.753 5926880.172 (Eclipse";
+  for (const std::string name : {"m.ply", "m.obj", "m.glb"}) {
+    std::string output;
+    ASSERT_EQ(runCommand(cliPath().string() + " -q reservoir " + (dir / "two.grdecl").string() +
+                             " --property PORO --iso 0.3 -o " + (dir / name).string(),
+                         &output),
+              0)
+        << output;
+    const std::string file = readFile(dir / name);
+    const std::string head = file.substr(0, file.find(name == "m.obj" ? "\nv " : "end_header"));
+    EXPECT_NE(head.find(axes), std::string::npos) << name << ": " << head.substr(0, 400);
+    EXPECT_NE(head.find("PORO = 0.3 of two.grdecl"), std::string::npos) << name;
+  }
+  // The PLY stays readable: its comment lines are skipped by readers (ours too). The
+  // surface ends where the two cells do, so check's verdict is "not closed" (exit 1).
+  std::string output;
+  EXPECT_EQ(runCommand(cliPath().string() + " check " + (dir / "m.ply").string(), &output), 1) << output;
+  EXPECT_NE(output.find("mesh: NOT closed, manifold"), std::string::npos) << output;
+}
+
 TEST(CliReservoir, BadDeckFailsNamingTheFile) {
   TempDir dir;
   writeFile(dir / "bad.grdecl", "SPECGRID\n 1 1 1 1 F /\nCOORD\n 24*0 /\nZCORN\n 7*0 /\nPORO\n 1 /\n");

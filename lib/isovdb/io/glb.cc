@@ -34,6 +34,7 @@ using gltf::kUnsignedInt;
 /// lie back to back in the BIN chunk (positions, normals, indices).
 json describe(const mesh::Mesh& mesh, std::uint64_t binBytes) {
   json gltf = {{"asset", {{"version", "2.0"}, {"generator", "isovdb"}}}, {"scene", 0}};
+  if (!mesh.comments.empty()) gltf["asset"]["extras"] = {{"comments", mesh.comments}};
   if (mesh.triangles.empty()) {
     gltf["scenes"] = json::array({json::object()});
     return gltf;

@@ -33,6 +33,12 @@ void HeaderFields::checkHeaderLength(std::int64_t position, const std::string& m
     throw InputError(where_ + "header longer than " + std::to_string(kMaxHeaderBytes) + " bytes " + missingEnd);
 }
 
+std::string oneLine(std::string text) {
+  std::replace_if(
+      text.begin(), text.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+  return text;
+}
+
 std::string trim(std::string_view text) {
   const auto isSpace = [](unsigned char c) { return std::isspace(c) != 0; };
   while (!text.empty() && isSpace(text.front())) text.remove_prefix(1);

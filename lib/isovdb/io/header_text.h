@@ -38,6 +38,8 @@ class HeaderFields {
 
 /// `text` without leading and trailing white space.
 std::string trim(std::string_view text);
+/// `text` on one line: line breaks become spaces (a comment in a file header).
+std::string oneLine(std::string text);
 /// `text` with ASCII letters in lower case.
 std::string lower(std::string text);
 /// The white-space separated words of `text` (none for blank text).

@@ -17,6 +17,7 @@
 
 #include "isovdb/errors.h"
 #include "isovdb/io/atomic_file.h"
+#include "isovdb/io/header_text.h"
 #include "isovdb/io/whole_file.h"
 #include "isovdb/mesh/mesh_checks.h"
 
@@ -184,6 +185,7 @@ void writeObj(const std::filesystem::path& path, const Mesh& mesh) {
   AtomicFile file(path);
   file.write("# written by isovdb: " + std::to_string(mesh.positions.size()) + " vertices, " +
              std::to_string(mesh.triangles.size()) + " triangles\n");
+  for (const std::string& line : mesh.comments) file.write("# " + detail::oneLine(line) + "\n");
 
   auto vectors = [](const std::vector<mesh::Vec3f>& values, std::string_view prefix) {
     return [&values, prefix](std::size_t begin, std::size_t end, std::string& out) {

@@ -16,6 +16,7 @@
 #include "isovdb/errors.h"
 #include "isovdb/io/atomic_file.h"
 #include "isovdb/io/block_writer.h"
+#include "isovdb/io/header_text.h"
 #include "isovdb/io/little_endian.h"
 #include "isovdb/mesh/mesh_checks.h"
 #include "isovdb/io/sample_type.h"
@@ -453,10 +454,12 @@ class BodyReader {
 
 namespace detail {
 
-std::string binaryPlyHeader(std::uint64_t vertices, std::uint64_t triangles, bool normals) {
+std::string binaryPlyHeader(std::uint64_t vertices, std::uint64_t triangles, bool normals,
+                            const std::vector<std::string>& comments) {
   constexpr std::size_t kCountRoom = 2 * 20;  // the largest counts: 20 digits each
   const std::size_t digits = std::to_string(vertices).size() + std::to_string(triangles).size();
   std::string header = "ply\nformat binary_little_endian 1.0\ncomment written by isovdb\n";
+  for (const std::string& line : comments) header += "comment " + oneLine(line) + "\n";
   header += "comment " + std::string(kCountRoom + 2 - digits, ' ') + "\n";
   header += "element vertex " + std::to_string(vertices) + "\n";
   header += "property float x\nproperty float y\nproperty float z\n";
@@ -471,7 +474,8 @@ std::string binaryPlyHeader(std::uint64_t vertices, std::uint64_t triangles, boo
 void writePly(const std::filesystem::path& path, const Mesh& mesh) {
   checkMesh(path, mesh);
   const bool normals = !mesh.normals.empty();
-  const std::string header = detail::binaryPlyHeader(mesh.positions.size(), mesh.triangles.size(), normals);
+  const std::string header =
+      detail::binaryPlyHeader(mesh.positions.size(), mesh.triangles.size(), normals, mesh.comments);
 
   AtomicFile file(path);
   BlockWriter out(file);

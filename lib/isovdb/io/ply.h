@@ -58,7 +58,8 @@ namespace detail {
 ///        spaces that keeps room for the largest counts: its size does not depend
 ///        on the counts, so the streamed writer rewrites them in place, and a mesh
 ///        written whole or streamed is the same bytes.
-std::string binaryPlyHeader(std::uint64_t vertices, std::uint64_t triangles, bool normals);
+std::string binaryPlyHeader(std::uint64_t vertices, std::uint64_t triangles, bool normals,
+                            const std::vector<std::string>& comments = {});
 
 }  // namespace detail
 

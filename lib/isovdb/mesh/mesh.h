@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "isovdb/vec3.h"
@@ -24,6 +25,9 @@ struct Mesh {
   std::vector<Vec3f> positions;
   std::vector<Triangle> triangles;
   std::vector<Vec3f> normals;  ///< empty, or one per position
+  /// Lines the mesh file's header carries (PLY `comment`, OBJ `#`, glTF asset.extras;
+  /// STL has no room): what a reader needs to place the mesh, e.g. a reservoir's MAPAXES.
+  std::vector<std::string> comments;
 
   std::size_t vertexCount() const { return positions.size(); }
   std::size_t triangleCount() const { return triangles.size(); }

@@ -8,9 +8,35 @@
 #include "isovdb/reservoir/pn_tessellation.h"
 
 #include <algorithm>
+#include <iomanip>
+#include <sstream>
+#include <string>
+#include <vector>
 #include <set>
 
 namespace isovdb::pipeline {
+
+namespace {
+
+/// The header lines of a reservoir mesh: what was contoured, and the deck's MAPAXES (the
+/// map frame a reader needs to place the grid coordinates).
+std::vector<std::string> meshComments(const reservoir::GrdeclDeck& deck, const ReservoirOptions& options) {
+  std::ostringstream what;
+  what << std::setprecision(12) << "isovdb reservoir: " << options.property << " = " << options.iso << " of "
+       << deck.path.filename().string();
+  std::vector<std::string> comments{what.str()};
+  if (deck.mapaxes.size() == 6) {
+    std::ostringstream axes;
+    axes << std::setprecision(12) << "mapaxes";
+    for (const double v : deck.mapaxes) axes << ' ' << v;
+    axes << " (Eclipse MAPAXES, not applied: x and y are the deck's grid coordinates; map point = P2 + x * "
+            "unit(P3 - P2) + y * unit(P1 - P2) with P1, P2, P3 the three points above)";
+    comments.push_back(axes.str());
+  }
+  return comments;
+}
+
+}  // namespace
 
 mesh::Mesh extractReservoir(const ReservoirOptions& options, Statistics& stats, Interrupter* interrupter) {
   reservoir::GrdeclDeck deck;
@@ -55,12 +81,18 @@ mesh::Mesh extractReservoir(const ReservoirOptions& options, Statistics& stats, 
   section["fault_records"] = deck.faults.size();
   section["faults"] = faultNames.size();
   section["property_edits_applied"] = deck.editsApplied;
-  // MAPAXES is not applied: the mesh is in the deck's grid coordinates; the axes are stated.
+  // MAPAXES is not applied: the mesh is in the deck's grid coordinates, as float32; map
+  // coordinates (UTM northings near 6e6) would round x and y to 0.5 m and fold thin
+  // parts. The axes are stated in the statistics and in the mesh file's header instead.
   if (!deck.mapaxes.empty()) section["mapaxes_not_applied"] = deck.mapaxes;
   auto warnings = grid.warnings;
   warnings.insert(warnings.end(), field.warnings.begin(), field.warnings.end());
   section["warnings"] = warnings;
-  if (options.maxTessellation <= 0) return std::move(contour.mesh);
+  const std::vector<std::string> comments = meshComments(deck, options);
+  if (options.maxTessellation <= 0) {
+    contour.mesh.comments = comments;
+    return std::move(contour.mesh);
+  }
   Statistics::StageTimer timer(&stats, "pn_tessellation");
   const ProgressStage progress(interrupter, "pn triangles");
   progress.update(0, 1);
@@ -69,6 +101,7 @@ mesh::Mesh extractReservoir(const ReservoirOptions& options, Statistics& stats, 
   section["tessellation_mean_edge_factor"] = pn.meanFactor;
   section["pn_triangles"] = pn.mesh.triangleCount();
   section["pn_vertices"] = pn.mesh.vertexCount();
+  pn.mesh.comments = comments;
   return std::move(pn.mesh);
 }
 
