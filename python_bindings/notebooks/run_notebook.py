@@ -7,7 +7,9 @@ Usage: run_notebook.py NOTEBOOK.ipynb [OUT_DIR]
 
 The notebook must be committed without outputs. It is executed by nbclient with the
 "python3" kernel (python3-ipykernel: /usr/bin/python3), in its own folder, with this
-process's environment (PYTHONPATH=build/python, ISOVDB_DATA_DIR, ISOVDB_BUILD_DIR).
+process's environment: the installed module and tools (ctest installs them into a staging
+prefix and sets PYTHONPATH and PATH there), ISOVDB_DATA_DIR. A notebook must not reach into
+a build tree (no `build/` path, no sys.path edit): users run it against what they installed.
 Then every code cell tagged "figure" must have produced an image and every cell tagged
 "table" an HTML table; no cell may have failed, and the run must take less than
 ISOVDB_NOTEBOOK_SECONDS (60). The executed copy goes to OUT_DIR when given.
@@ -22,6 +24,7 @@ import nbformat
 from nbclient import NotebookClient
 
 EXPECTED = {"figure": "image/png", "table": "text/html"}
+BUILD_TREE_WORDS = ("sys.path", "build/", "BUILD", "ISOVDB_BUILD_DIR")
 
 
 def cell_seconds(cell):
@@ -42,6 +45,11 @@ def main():
     stale = [i for i, c in enumerate(code_cells) if c.outputs or c.execution_count is not None]
     if stale:
         sys.exit(f"{path.name}: code cells {stale} carry outputs; commit notebooks without outputs")
+
+    for index, cell in enumerate(code_cells):
+        for word in BUILD_TREE_WORDS:
+            if word in cell.source:
+                sys.exit(f"{path.name}: code cell {index} uses '{word}': notebooks use the installed module")
 
     os.environ.setdefault("PYDEVD_DISABLE_FILE_VALIDATION", "1")  # quiet ipykernel's debugger warning
     client = NotebookClient(notebook, timeout=120, kernel_name="python3",
