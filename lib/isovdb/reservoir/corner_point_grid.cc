@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "isovdb/errors.h"
+#include "isovdb/huge_pages.h"
 
 namespace isovdb::reservoir {
 namespace {
@@ -60,8 +61,8 @@ CornerPointGrid buildCornerPointGrid(const GrdeclDeck& deck, const GridOptions& 
   CornerPointGrid grid;
   grid.dims = deck.dims;
   grid.warnings = deck.warnings;
-  grid.corners.resize(cells);
-  grid.active.resize(cells);
+  resizeHuge(grid.corners, cells);
+  resizeHuge(grid.active, cells);
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i) {
@@ -89,7 +90,7 @@ CornerPointGrid buildCornerPointGrid(const GrdeclDeck& deck, const GridOptions& 
   const double tolerance = std::max(1e-12, options.relativeTolerance * (hi - lo).norm());
 
   // Points: the corners around each grid node, grouped by position (node order: deterministic ids).
-  grid.pointIds.resize(cells);
+  resizeHuge(grid.pointIds, cells);
   for (int K = 0; K <= nz; ++K)
     for (int J = 0; J <= ny; ++J)
       for (int I = 0; I <= nx; ++I) {
@@ -117,7 +118,9 @@ CornerPointGrid buildCornerPointGrid(const GrdeclDeck& deck, const GridOptions& 
       }
 
   // Orientation and inverted cells.
-  std::vector<double> minDet(cells), maxDet(cells);
+  std::vector<double> minDet, maxDet;
+  resizeHuge(minDet, cells);
+  resizeHuge(maxDet, cells);
   double sum = 0;
   for (std::size_t cell = 0; cell < cells; ++cell) {
     if (!grid.active[cell]) continue;
@@ -159,7 +162,7 @@ CornerField averageToCorners(const CornerPointGrid& grid, const std::vector<doub
     throw InputError(what + " has " + std::to_string(cellValues.size()) + " values, expected " +
                      std::to_string(grid.cellCount()) + " (one per cell, active or not)");
   CornerField field;
-  field.usable.resize(grid.cellCount());
+  resizeHuge(field.usable, grid.cellCount());
   std::size_t nanCells = 0;
   for (std::size_t cell = 0; cell < grid.cellCount(); ++cell) {
     const bool finite = std::isfinite(cellValues[cell]);
@@ -169,6 +172,7 @@ CornerField averageToCorners(const CornerPointGrid& grid, const std::vector<doub
   if (nanCells > 0)
     field.warnings.push_back(what + ": " + std::to_string(nanCells) +
                              " active cells have a NaN or infinite value; treated as inactive");
+  reserveHuge(field.pointValues, grid.points.size());
   field.pointValues.assign(grid.points.size(), std::numeric_limits<double>::quiet_NaN());
   for (std::size_t id = 0; id < grid.points.size(); ++id) {
     double sum = 0;

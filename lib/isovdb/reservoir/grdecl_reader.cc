@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "isovdb/errors.h"
+#include "isovdb/huge_pages.h"
 #include "isovdb/reservoir/grdecl_edits.h"
 #include "isovdb/reservoir/grdecl_tokens.h"
 
@@ -178,6 +179,10 @@ struct Parser {
     // The whole deck is bounded, not each n*value: three 10^8 repeats made 4.5 GB.
     const double gridLimit = gridValueLimit();
     const double deckRoom = static_cast<double>(limits.maxValues) - valuesHeld();
+    // One value per token at least (n*value repeats add more): no regrowth for plain arrays.
+    std::size_t tokens = 0;
+    while (i + tokens < t.size() && i + tokens < limit && !t[i + tokens].isSlash()) ++tokens;
+    reserveHuge(values, std::min(tokens, static_cast<std::size_t>(std::max(0.0, deckRoom))));
     for (end = i; end < t.size() && end < limit && !t[end].isSlash(); ++end) {
       const std::string_view s = t[end].text;
       const std::size_t star = s.find('*');
@@ -229,7 +234,11 @@ struct Parser {
     std::ifstream in(file, std::ios::binary);
     if (!in) throw IoError(file.string() + ": cannot open GRDECL file");
     // The whole text, read at once: the tokens view it while this file is parsed.
-    std::string text(static_cast<std::size_t>(std::filesystem::file_size(file)), '\0');
+    std::string text;
+    const auto bytes = static_cast<std::size_t>(std::filesystem::file_size(file));
+    text.reserve(bytes);
+    adviseHugePages(text.data(), bytes);
+    text.resize(bytes);
     if (!in.read(text.data(), static_cast<std::streamsize>(text.size())))
       throw IoError(file.string() + ": cannot read GRDECL file");
     const std::vector<GrdeclToken> t = tokenizeGrdecl(text);

@@ -4,11 +4,13 @@
 
 #include <cctype>
 
+#include "isovdb/huge_pages.h"
+
 namespace isovdb::reservoir {
 
 std::vector<GrdeclToken> tokenizeGrdecl(std::string_view text) {
   std::vector<GrdeclToken> tokens;
-  tokens.reserve(text.size() / 8);  // numbers of a few digits and a space
+  reserveHuge(tokens, text.size() / 8);  // numbers of a few digits and a space
   int line = 1;
   std::size_t i = 0;
   const std::size_t n = text.size();

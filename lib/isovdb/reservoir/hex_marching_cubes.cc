@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MPL-2.0
 // Copyright Contributors to the isovdb project.
+#include "isovdb/huge_pages.h"
 #include "isovdb/reservoir/hex_marching_cubes.h"
 
 #include <tbb/blocked_range.h>
@@ -275,6 +276,9 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
 
   HexContourResult result;
   std::vector<std::uint64_t> keys;
+  std::size_t cellVertices = 0;
+  for (const BlockOutput& out : outputs) cellVertices += out.vertices.size();
+  reserveHuge(keys, cellVertices);  // the mesh's arrays are fresh memory: huge pages (huge_pages.h)
   for (const BlockOutput& out : outputs) {
     result.cutCells += out.cutCells;
     result.ambiguousFaces += out.ambiguousFaces;
@@ -283,8 +287,10 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
   tbb::parallel_sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
   mesh::Mesh& m = result.mesh;
-  m.positions.resize(keys.size());
-  std::vector<Vec3d> gradients(keys.size(), Vec3d::Zero());
+  resizeHuge(m.positions, keys.size());
+  std::vector<Vec3d> gradients;
+  reserveHuge(gradients, keys.size());
+  gradients.assign(keys.size(), Vec3d::Zero());
   // Each block's vertices found among the keys in parallel; the sums below stay in block
   // order, so the normals do not depend on the thread count.
   std::vector<std::vector<std::uint32_t>> indices(outputs.size());
@@ -299,7 +305,7 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
   });
   std::size_t triangles = 0;
   for (const BlockOutput& out : outputs) triangles += out.triangles.size();
-  m.triangles.reserve(triangles);
+  reserveHuge(m.triangles, triangles);
   for (std::size_t block = 0; block < outputs.size(); ++block) {
     const BlockOutput& out = outputs[block];
     const std::vector<std::uint32_t>& index = indices[block];
@@ -316,7 +322,9 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
   }
   if (options.normals) {
     // Fallback for vertices without a usable gradient (collapsed cells): area-weighted face normals.
-    std::vector<Vec3d> faceNormals(keys.size(), Vec3d::Zero());
+    std::vector<Vec3d> faceNormals;
+    reserveHuge(faceNormals, keys.size());
+    faceNormals.assign(keys.size(), Vec3d::Zero());
     for (const auto& t : m.triangles) {
       const Vec3d a(m.positions[t[0]][0], m.positions[t[0]][1], m.positions[t[0]][2]);
       const Vec3d b(m.positions[t[1]][0], m.positions[t[1]][1], m.positions[t[1]][2]);
@@ -324,7 +332,7 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
       const Vec3d n = (b - a).cross(c - a);
       for (int k = 0; k < 3; ++k) faceNormals[t[k]] += n;
     }
-    m.normals.resize(keys.size());
+    resizeHuge(m.normals, keys.size());
     for (std::size_t n = 0; n < keys.size(); ++n) {
       Vec3d normal = -gradients[n];
       if (!(normal.norm() > 0) || !normal.allFinite()) normal = faceNormals[n];

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
+/// @file huge_pages.h
+/// @brief Large arrays backed by transparent huge pages (Linux), for the stages that
+///        build whole-grid arrays at once (the reservoir reader and grid).
+///
+/// The first touch of fresh memory costs a page fault per 4 KiB page, and on a virtual
+/// machine each fault is expensive: on a 1.5 M-cell deck (119 MB of text, 288 MB of
+/// corners) reading took 3.0 s and the grid 2.2 s, mostly in faults; with 2 MiB pages
+/// 1.0 s and 1.1 s. Debian's default THP mode is "madvise": a region must ask. The
+/// request is advice only: nothing changes where the kernel or the build has no THP.
+/// (Asked for the grid's per-point arrays too, the grid took 0.5 s but the Marching Cubes
+/// stage after it slowed by a third, the kernel compacting memory beside it: left out.)
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+namespace isovdb {
+
+/// Advises huge pages for the 2 MiB-aligned part of [data, data + bytes), before it is
+/// first touched (arrays of a few MiB and more: glibc maps those fresh from the kernel).
+inline void adviseHugePages(const void* data, std::size_t bytes) noexcept {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  constexpr std::uintptr_t kHuge = std::uintptr_t{2} << 20;
+  const auto begin = (reinterpret_cast<std::uintptr_t>(data) + kHuge - 1) & ~(kHuge - 1);
+  const auto end = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(kHuge - 1);
+  if (data != nullptr && end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+#else
+  (void)data;
+  (void)bytes;
+#endif
+}
+
+/// `values.reserve(count)` with the new storage advised huge pages.
+template <class T>
+void reserveHuge(std::vector<T>& values, std::size_t count) {
+  if (count <= values.capacity()) return;
+  values.reserve(count);
+  adviseHugePages(values.data(), count * sizeof(T));
+}
+
+/// `values.resize(count)` (value-initialised) into storage advised huge pages first.
+template <class T>
+void resizeHuge(std::vector<T>& values, std::size_t count) {
+  reserveHuge(values, count);
+  values.resize(count);
+}
+
+}  // namespace isovdb
