@@ -15,7 +15,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <vector>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -37,19 +36,27 @@ inline void adviseHugePages(const void* data, std::size_t bytes) noexcept {
 #endif
 }
 
-/// `values.reserve(count)` with the new storage advised huge pages.
-template <class T>
-void reserveHuge(std::vector<T>& values, std::size_t count) {
+/// `values.reserve(count)` with the new storage advised huge pages (a std::vector or a
+/// std::string).
+template <class Container>
+void reserveHuge(Container& values, std::size_t count) {
   if (count <= values.capacity()) return;
   values.reserve(count);
-  adviseHugePages(values.data(), count * sizeof(T));
+  adviseHugePages(values.data(), count * sizeof(typename Container::value_type));
 }
 
 /// `values.resize(count)` (value-initialised) into storage advised huge pages first.
-template <class T>
-void resizeHuge(std::vector<T>& values, std::size_t count) {
+template <class Container>
+void resizeHuge(Container& values, std::size_t count) {
   reserveHuge(values, count);
   values.resize(count);
+}
+
+/// `values.assign(count, fill)` into storage advised huge pages first.
+template <class Container>
+void assignHuge(Container& values, std::size_t count, const typename Container::value_type& fill) {
+  reserveHuge(values, count);
+  values.assign(count, fill);
 }
 
 }  // namespace isovdb

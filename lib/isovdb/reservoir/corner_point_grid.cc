@@ -172,8 +172,7 @@ CornerField averageToCorners(const CornerPointGrid& grid, const std::vector<doub
   if (nanCells > 0)
     field.warnings.push_back(what + ": " + std::to_string(nanCells) +
                              " active cells have a NaN or infinite value; treated as inactive");
-  reserveHuge(field.pointValues, grid.points.size());
-  field.pointValues.assign(grid.points.size(), std::numeric_limits<double>::quiet_NaN());
+  assignHuge(field.pointValues, grid.points.size(), std::numeric_limits<double>::quiet_NaN());
   for (std::size_t id = 0; id < grid.points.size(); ++id) {
     double sum = 0;
     int count = 0;

@@ -235,10 +235,7 @@ struct Parser {
     if (!in) throw IoError(file.string() + ": cannot open GRDECL file");
     // The whole text, read at once: the tokens view it while this file is parsed.
     std::string text;
-    const auto bytes = static_cast<std::size_t>(std::filesystem::file_size(file));
-    text.reserve(bytes);
-    adviseHugePages(text.data(), bytes);
-    text.resize(bytes);
+    resizeHuge(text, static_cast<std::size_t>(std::filesystem::file_size(file)));
     if (!in.read(text.data(), static_cast<std::streamsize>(text.size())))
       throw IoError(file.string() + ": cannot read GRDECL file");
     const std::vector<GrdeclToken> t = tokenizeGrdecl(text);

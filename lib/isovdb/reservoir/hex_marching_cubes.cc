@@ -1,6 +1,5 @@
 // SPDX-License-Identifier: MPL-2.0
 // Copyright Contributors to the isovdb project.
-#include "isovdb/huge_pages.h"
 #include "isovdb/reservoir/hex_marching_cubes.h"
 
 #include <tbb/blocked_range.h>
@@ -13,6 +12,7 @@
 #include <limits>
 #include <cmath>
 
+#include "isovdb/huge_pages.h"
 #include "isovdb/reservoir/jacobian_normals.h"
 
 namespace isovdb::reservoir {
@@ -289,8 +289,7 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
   mesh::Mesh& m = result.mesh;
   resizeHuge(m.positions, keys.size());
   std::vector<Vec3d> gradients;
-  reserveHuge(gradients, keys.size());
-  gradients.assign(keys.size(), Vec3d::Zero());
+  assignHuge(gradients, keys.size(), Vec3d::Zero());
   // Each block's vertices found among the keys in parallel; the sums below stay in block
   // order, so the normals do not depend on the thread count.
   std::vector<std::vector<std::uint32_t>> indices(outputs.size());
@@ -323,8 +322,7 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
   if (options.normals) {
     // Fallback for vertices without a usable gradient (collapsed cells): area-weighted face normals.
     std::vector<Vec3d> faceNormals;
-    reserveHuge(faceNormals, keys.size());
-    faceNormals.assign(keys.size(), Vec3d::Zero());
+    assignHuge(faceNormals, keys.size(), Vec3d::Zero());
     for (const auto& t : m.triangles) {
       const Vec3d a(m.positions[t[0]][0], m.positions[t[0]][1], m.positions[t[0]][2]);
       const Vec3d b(m.positions[t[1]][0], m.positions[t[1]][1], m.positions[t[1]][2]);
