@@ -33,7 +33,8 @@ void addReservoirCommand(CLI::App& app, Context& context) {
   command->add_option("--stats", state->statsPath, "Also write the figures as JSON");
   command
       ->add_option("--max-values", state->options.limits.maxValues,
-                   "Most values one keyword may hold (n*value repeats counted); a guard against hostile decks")
+                   "Most values the deck's keywords may hold together (n*value repeats counted); a guard "
+                   "against hostile decks")
       ->capture_default_str();
   command->callback([state, &context] {
     for (const auto& input : state->inputs) state->options.inputs.emplace_back(input);
@@ -49,8 +50,6 @@ void addReservoirCommand(CLI::App& app, Context& context) {
       if (state->options.maxTessellation < 1 || state->options.maxTessellation > 64)
         throw InputError("--tessellate: K must be between 1 and 64");
     }
-    if (state->options.limits.maxValues < 1)
-      throw InputError("--max-values must be at least 1, got " + std::to_string(state->options.limits.maxValues));
     std::vector<NamedFile> inputs;
     for (const auto& input : state->inputs) inputs.push_back({"the input", input});
     io::checkMeshPath(state->output);

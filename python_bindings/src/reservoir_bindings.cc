@@ -29,7 +29,6 @@ PyMesh extractReservoir(const std::variant<std::filesystem::path, std::vector<st
   options.property = property;
   options.iso = iso;
   options.maxTessellation = tessellate;
-  if (maxValues < 1) throw py::value_error("max_values must be at least 1, got " + std::to_string(maxValues));
   options.limits.maxValues = maxValues;
   pipeline::Statistics stats;
   PyMesh result;
@@ -56,8 +55,8 @@ grid: the .grdecl file, or a list: the grid file first, then files with more pro
 property: the cell property keyword (PORO, PERMX, FACIES, SOIL, ...). iso: its isovalue.
 tessellate: 0 keeps the flat triangles; K > 0 refines them as PN triangles (cubic geometry,
   envelope normals) with per-edge factors up to K, crack-free.
-max_values: most values one keyword may hold, n*value repeats counted (a guard against
-  hostile decks; once the grid's size is known, arrays are also bounded by it).
+max_values: most values the deck's keywords may hold together, n*value repeats counted (a
+  guard against hostile decks; each array is also bounded by the grid's size).
 progress: callable(stage: str, percent: int) per stage (read grdecl, corner-point grid,
   marching cubes, pn triangles); if it raises, the work stops and its exception propagates
   (Ctrl-C too).

@@ -418,15 +418,13 @@ struct Parser {
 }  // namespace
 
 GrdeclDeck readGrdecl(const std::filesystem::path& path, const GrdeclLimits& limits) {
-  GrdeclDeck deck;
-  deck.path = path;
-  Parser parser{deck, limits};
-  parser.readFile(path);
-  return deck;
+  return readGrdecl(std::vector<std::filesystem::path>{path}, limits);
 }
 
 GrdeclDeck readGrdecl(const std::vector<std::filesystem::path>& paths, const GrdeclLimits& limits) {
   if (paths.empty()) throw InputError("no GRDECL file given");
+  if (limits.maxValues < 1)
+    throw InputError("--max-values must be at least 1, got " + std::to_string(limits.maxValues));
   GrdeclDeck deck;
   deck.path = paths.front();
   for (const auto& path : paths) {
