@@ -160,10 +160,13 @@ std::int64_t mapBytes(const std::string& type) {
 
 /// Bytes of a value of the trees this project reads (a root tile's value), -1 for others.
 std::int64_t treeValueBytes(const std::string& type) {
-  if (type == "Tree_float_5_4_3") return 4;
-  if (type == "Tree_double_5_4_3") return 8;
-  if (type == "Tree_bool_5_4_3" || type == "Tree_mask_5_4_3") return 1;
-  return -1;
+  static constexpr NameTable<std::int64_t, 4> kSizes{{
+      {4, "Tree_float_5_4_3"},
+      {8, "Tree_double_5_4_3"},
+      {1, "Tree_bool_5_4_3"},
+      {1, "Tree_mask_5_4_3"},
+  }};
+  return valueNamed(kSizes, type).value_or(-1);
 }
 
 /// The root node's head of a grid's topology (tree/RootNode.h): a buffer count, the
