@@ -301,12 +301,15 @@ class SceneReader {
       for (std::size_t mi = 0; mi < file_.count("meshes"); ++mi) addMesh(mi, Eigen::Matrix4d::Identity());
     } else {
       parent_.assign(nodeCount, -1);
-      for (std::size_t n = 0; n < nodeCount; ++n)
-        for (const std::uint64_t child : children(n)) {
+      children_.resize(nodeCount);
+      for (std::size_t n = 0; n < nodeCount; ++n) {
+        children_[n] = children(n);
+        for (const std::uint64_t child : children_[n]) {
           if (parent_[child] >= 0)
             file_.fail("nodes[" + std::to_string(child) + "] has two parents (a glTF node graph is a forest)");
           parent_[child] = static_cast<std::int64_t>(n);
         }
+      }
       for (const std::uint64_t root : roots(gltf, nodeCount)) {
         if (parent_[root] >= 0) file_.fail("the scene's nodes[" + std::to_string(root) + "] is not a root node");
         addNode(root, Eigen::Matrix4d::Identity(), 0);
@@ -388,7 +391,7 @@ class SceneReader {
     const json& node = file_.element("nodes", index);
     const Eigen::Matrix4d transform = parent * localTransform(node, what);
     if (node.contains("mesh")) addMesh(file_.number(node, "mesh", what), transform);
-    for (const std::uint64_t child : children(index)) addNode(child, transform, depth + 1);
+    for (const std::uint64_t child : children_[index]) addNode(child, transform, depth + 1);
   }
 
   void addMesh(std::uint64_t meshIndex, const Eigen::Matrix4d& transform) {
@@ -466,7 +469,8 @@ class SceneReader {
   }
 
   const GltfFile& file_;
-  std::vector<std::int64_t> parent_;
+  std::vector<std::int64_t> parent_;                  ///< each node's parent, -1 for a root
+  std::vector<std::vector<std::uint64_t>> children_;  ///< each node's children, read once
   mesh::Mesh mesh_;
   bool normals_ = true;
   std::vector<mesh::Vec3f> normalValues_;
