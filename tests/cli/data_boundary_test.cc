@@ -10,21 +10,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "support/checked_extract.h"
 #include "support/test_support.h"
 
 namespace isovdb::test {
 namespace {
 
 nlohmann::json checkedAdaptive(const std::string& arguments) {
-  const TempDir dir;
-  const auto stats = dir / "stats.json";
-  std::string output;
-  EXPECT_EQ(runCommand(cliPath().string() + " -q extract " + arguments + " --method adaptive --check -o " +
-                           (dir / "m.ply").string() + " --stats " + stats.string(),
-                       &output),
-            0)
-      << arguments << ": " << output;
-  return nlohmann::json::parse(readFile(stats));
+  return checkedExtract(arguments + " --method adaptive");
 }
 
 TEST(CliDataBoundary, AdaptiveCapsAreClosedAndFreeOfSelfIntersections) {

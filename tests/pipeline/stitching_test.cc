@@ -197,6 +197,7 @@ TEST(StitchedOutput, AMaskContouredLayerByLayerIsTheWholeFieldsMesh) {
       for (const int threads : {1, 2}) {
         ExtractOptions options;
         options.contour.method = method;
+        options.regularTopology = cell::RegularTopology::Voxels;  // the mask's reading for its field too
         options.metaCellSize = 16;
         options.threads = threads;
         Statistics stats;

@@ -68,8 +68,9 @@ struct ContourSettings {
   /// Wenger's fix on doubled ambiguous faces (regular voxels: split doubled faces);
   /// off only in tests that show it matters.
   bool manifoldFix = true;
-  /// Adaptive: Ju–Udeshi fans where the plain triangulation would leave its
-  /// envelope; off = plain dual contouring, for comparison.
+  /// Adaptive, and regular in Wenger's reading: Ju–Udeshi fans where the plain
+  /// triangulation would leave its envelope; off = plain dual contouring (regular:
+  /// manifold DMC's quads), for comparison.
   bool intersectionFree = true;
   /// Regular: the reading of ambiguous cells.
   RegularTopology topology = RegularTopology::Voxels;
@@ -79,9 +80,22 @@ struct ContourSettings {
   /// far outside (pipeline/octree_contour.cc), leaves across a face are refined to one
   /// voxel (octree/build.cc) and their vertices kept within 2 * kInteriorMargin of it
   /// (contour/adaptive_contour.cc), so Ju–Udeshi's test sees the cap's final positions.
-  /// Regular mode gets it only where the background lies inside the surface (beyond the
-  /// box it reads far outside; its caps are flattened onto the box afterwards).
+  /// Regular mode in Wenger's reading does the same (contoursByMinimalEdges); in the
+  /// voxel reading it gets it only where the background lies inside the surface (beyond
+  /// the box it reads far outside; its caps are flattened onto the box afterwards).
   std::optional<DataBox> dataBox{};
+
+  /// Contoured by minimal edges with Ju–Udeshi fans (contour/adaptive_contour.h): adaptive
+  /// mode, and regular mode in Wenger's reading (fields) unless intersectionFree is off.
+  /// There regular mode's tree (every surface cell at the finest depth) is contoured like an
+  /// adaptive one: its quads between dual vertices near their cells' faces crossed each
+  /// other (a level-set sphere: 234 self-intersecting pairs), the fans keep them apart.
+  /// The voxel reading (masks) keeps its own polygons: tubes and split faces
+  /// (contour/regular_contour.h).
+  constexpr bool contoursByMinimalEdges() const noexcept {
+    return method == ContourMethod::Adaptive ||
+           (method == ContourMethod::Regular && topology == RegularTopology::Mdmc && intersectionFree);
+  }
 };
 
 }  // namespace isovdb::cell

@@ -48,7 +48,8 @@ Vec3d besideDataBox(Vec3d p, const octree::OctreeLeaf& leaf, const std::array<in
 }  // namespace
 
 MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
-                                     const cell::ContourSettings& options, AdaptiveContourStats* stats) {
+                                     const cell::ContourSettings& options, AdaptiveContourStats* stats,
+                                     const UnitEdgeCrossings* crossings) {
   if (tree.metaCellSize() != samples.size)
     throw InputError("contourAdaptive: octree meta-cell size " + std::to_string(tree.metaCellSize()) +
                      " differs from the samples' size " + std::to_string(samples.size));
@@ -63,7 +64,7 @@ MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const
   for (std::size_t i = 0; i < leafCount; ++i) configs[i] = tree.leaf(i).cornerSigns;
   const LeafGroups groups = groupLeaves(samples, tree, std::move(configs), options.iso, options.manifoldFix);
   const std::vector<mesh::Vec3f> positions =
-      placeGroupVertices(samples, tree, groups, cell::dualVertexOptions(options));
+      placeGroupVertices(samples, tree, groups, cell::dualVertexOptions(options), crossings);
   std::vector<Vec3d> cellPoints(positions.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leafCount, 256), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i)
@@ -79,21 +80,37 @@ MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const
     std::array<int, 3> start = leaf.origin;
     for (int a = 0; a < 3; ++a) start[a] += ((c0 >> a) & 1) * leaf.size;
     cell::EdgeIntersection ix;
-    if (!cell::intersectEdge(samples, start, axis, leaf.size, options.iso, ix, options.sharpFeatures))
-      return std::numeric_limits<double>::quiet_NaN();
-    return static_cast<double>(ix.point[axis] - static_cast<float>(start[axis]));
+    const cell::EdgeIntersection* hit = &ix;
+    if (crossings != nullptr && leaf.size == 1)
+      hit = crossings->find(start, axis);
+    else if (!cell::intersectEdge(samples, start, axis, leaf.size, options.iso, ix, options.sharpFeatures))
+      hit = nullptr;
+    if (hit == nullptr) return std::numeric_limits<double>::quiet_NaN();
+    return static_cast<double>(hit->point[axis] - static_cast<float>(start[axis]));
   };
+  // Constant-time lookups of the leaves around each edge where the index's bit rows (S^2
+  // words per 64 cells along x) take no more memory than a few words per leaf, as in
+  // regular contouring: a binary search in Z order missed the cache on every neighbour.
+  const std::size_t indexWords = static_cast<std::size_t>(metaSize) * static_cast<std::size_t>(metaSize) *
+                                 static_cast<std::size_t>((metaSize + 63) / 64);
+  std::optional<octree::UnitLeafIndex> unitLeaves;
+  if (indexWords <= 8 * leafCount + 4096) unitLeaves.emplace(tree);
   const AdaptiveTree source{.tree = &tree,
                             .origin = samples.origin,
                             .firstVertex = &groups.firstVertex,
                             .cellPoints = &cellPoints,
                             .alternative = &groups.alternative,
                             .crossing = crossing,
-                            .inRegion = {}};
-  std::vector<LeafEdges> perLeaf(leafCount);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leafCount, 64), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t i = r.begin(); i != r.end(); ++i)
-      if (tree.leaf(i).bipolarEdges() != 0) collectMinimalEdges(source, i, options.intersectionFree, perLeaf[i]);
+                            .inRegion = {},
+                            .unitLeaves = unitLeaves ? &*unitLeaves : nullptr};
+  // Records in fixed chunks of leaves, in leaf order (the mesh does not depend on the
+  // threads): one vector per leaf cost an allocation or two for each surface leaf.
+  constexpr std::size_t kChunkLeaves = 256;
+  std::vector<LeafEdges> perLeaf((leafCount + kChunkLeaves - 1) / kChunkLeaves);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, perLeaf.size()), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t c = r.begin(); c != r.end(); ++c)
+      for (std::size_t i = c * kChunkLeaves; i < std::min(leafCount, (c + 1) * kChunkLeaves); ++i)
+        if (tree.leaf(i).bipolarEdges() != 0) collectMinimalEdges(source, i, options.intersectionFree, perLeaf[c]);
   });
 
   // Seam cells: leaves with a sign change that touch the meta-cell boundary; they keep their vertices.

@@ -52,6 +52,7 @@
 #include <cstdint>
 
 #include "isovdb/contour/seam_cell.h"
+#include "isovdb/contour/unit_edge_crossings.h"
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/octree/linear_octree.h"
 #include "isovdb/cell/contour_settings.h"
@@ -106,7 +107,10 @@ mesh::Mesh contourAdaptive(const cell::MetaCellSamples& samples, const octree::L
 /// @brief contourAdaptive plus the seam (seam_cell.h): leaves with a sign change
 ///        that touch the meta-cell boundary, and the face points made into
 ///        vertices on faces that touch it.
+/// @param crossings optional: the samples' unit-edge crossings (found once each), read by
+///        the 1-voxel leaves instead of finding them again; the mesh is the same.
 MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
-                                     const cell::ContourSettings& settings, AdaptiveContourStats* stats = nullptr);
+                                     const cell::ContourSettings& settings, AdaptiveContourStats* stats = nullptr,
+                                     const UnitEdgeCrossings* crossings = nullptr);
 
 }  // namespace isovdb::contour

@@ -52,7 +52,8 @@ void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool
     std::array<int, 3> start = leaf.origin;
     for (int a = 0; a < 3; ++a) start[a] += ((c0 >> a) & 1) * s;
     if (source.inRegion && !source.inRegion(start, axis)) continue;
-    const std::array<std::int64_t, 4> around = tree.leavesAroundEdge(start, axis);
+    const std::array<std::int64_t, 4> around =
+        source.unitLeaves ? source.unitLeaves->leavesAroundEdge(start, axis) : tree.leavesAroundEdge(start, axis);
     // This leaf's quadrant: on the min side of the edge where the edge is on its max side.
     const int own = (1 - ((c0 >> uv[0]) & 1)) | ((1 - ((c0 >> uv[1]) & 1)) << 1);
     // Minimal: no leaf around is smaller. Owner: the first quadrant holding a leaf of this size.

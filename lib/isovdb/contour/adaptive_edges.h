@@ -23,6 +23,7 @@
 #include "isovdb/contour/seam_cell.h"
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/octree/linear_octree.h"
+#include "isovdb/octree/unit_leaf_index.h"
 
 namespace isovdb::contour {
 
@@ -51,6 +52,8 @@ struct AdaptiveTree {
   /// The tree holds only a seam's kept cells (stitch/): a place without a leaf is a finer
   /// leaf without a sign change, so an edge next to it is not minimal.
   bool partial = false;
+  /// Constant-time lookups of `tree`'s 1-voxel leaves (optional: the tree's own search otherwise).
+  const octree::UnitLeafIndex* unitLeaves = nullptr;
 };
 
 /// One sign-changing minimal edge, ready to be triangulated.

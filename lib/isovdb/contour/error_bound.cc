@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <optional>
 
 #include "isovdb/cell/dmc_table.h"
 #include "isovdb/cell/dual_vertex.h"
 #include "isovdb/cell/trilinear.h"
+#include "isovdb/contour/unit_edge_crossings.h"
 #include "isovdb/mesh/triangle_grid.h"
 #include "isovdb/octree/sample_phases.h"
 
@@ -56,18 +58,20 @@ void addLeavesOfFarMeshPoints(const cell::MetaCellSamples& samples, const octree
 /// (dmc_table.h), a QEF vertex for a single group and mass points for several, as
 /// contour/leaf_groups.cc places them at 1 voxel.
 bool unitCellVerticesWithin(const cell::MetaCellSamples& samples, const octree::SamplePhases& phases,
-                            const octree::OctreeLeaf& leaf, cell::DualVertexOptions options,
-                            const mesh::TriangleGrid& grid, float maxError) {
+                            const UnitEdgeCrossings& crossings, const octree::OctreeLeaf& leaf,
+                            cell::DualVertexOptions options, const mesh::TriangleGrid& grid, float maxError) {
   bool within = true;
+  std::uint32_t hint = std::numeric_limits<std::uint32_t>::max();  // the last triangle close enough
   octree::forEachCrossedUnitCell(
       phases, leaf.origin, leaf.size, [&](const std::array<int, 3>& origin, std::uint8_t config) {
         if (!within) return;
         const cell::DmcEntry& entry = cell::dmcEntry(config);
         options.massPointOnly = entry.vertexCount > 1;
         for (int g = 0; g < entry.vertexCount && within; ++g) {
-          const cell::DualVertex v =
-              cell::computeDualVertex(samples, origin, 1, entry.groups[static_cast<std::size_t>(g)], options);
-          within = !v.valid() || grid.within(v.position, maxError);
+          const cell::DualVertex v = cell::dualVertexOfCrossings(
+              samples, origin, 1, entry.groups[static_cast<std::size_t>(g)], options,
+              [&](const std::array<int, 3>& start, int axis) { return crossings.find(start, axis); });
+          within = !v.valid() || grid.within(v.position, maxError, &hint);
         }
       });
   return within;
@@ -81,9 +85,13 @@ bool unitCellVerticesWithin(const cell::MetaCellSamples& samples, const octree::
 /// would cover their points, are made later by stitching.
 void addLeavesMissingFullResolutionVertices(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
                                             const mesh::Mesh& mesh, const cell::DualVertexOptions& options,
-                                            float maxError, int finestSize, std::vector<octree::MortonKey>& keys) {
-  if (!std::isfinite(maxError)) return;        // nothing lies farther than that
-  std::optional<octree::SamplePhases> phases;  // the grid and the phases only where a leaf needs them
+                                            float maxError, int finestSize, const UnitEdgeCrossings* given,
+                                            std::vector<octree::MortonKey>& keys) {
+  if (!std::isfinite(maxError)) return;  // nothing lies farther than that
+  // The phases, the crossings and the grid only where a leaf needs them. Each unit edge's
+  // crossing is found once (a unit edge is shared by four unit cells).
+  std::optional<octree::SamplePhases> phases;
+  std::optional<UnitEdgeCrossings> crossings;
   std::optional<mesh::TriangleGrid> grid;
   for (std::size_t i = 0; i < tree.leafCount(); ++i) {
     const octree::OctreeLeaf& leaf = tree.leaf(i);
@@ -94,9 +102,11 @@ void addLeavesMissingFullResolutionVertices(const cell::MetaCellSamples& samples
     if (onBoundary) continue;
     if (!grid) {
       phases.emplace(samples, options.iso);
+      if (!given) crossings.emplace(samples, options.iso, options.sharpFeatures);
       grid.emplace(mesh, std::max(kBinVoxels, 2.0 * maxError));
     }
-    if (!unitCellVerticesWithin(samples, *phases, leaf, options, *grid, maxError)) keys.push_back(leaf.key);
+    if (!unitCellVerticesWithin(samples, *phases, given ? *given : *crossings, leaf, options, *grid, maxError))
+      keys.push_back(leaf.key);
   }
 }
 
@@ -105,11 +115,12 @@ void addLeavesMissingFullResolutionVertices(const cell::MetaCellSamples& samples
 std::vector<octree::MortonKey> leavesBeyondErrorBound(const cell::MetaCellSamples& samples,
                                                       const octree::LinearOctree& tree, const mesh::Mesh& mesh,
                                                       const cell::DualVertexOptions& options, float maxError,
-                                                      int finestSize) {
+                                                      int finestSize, const UnitEdgeCrossings* crossings) {
   std::vector<octree::MortonKey> keys;
   addLeavesOfFarMeshPoints(samples, tree, mesh, options.iso, maxError, finestSize, keys);
   // The costlier side once the mesh's own points hold: the pass would be built again anyway.
-  if (keys.empty()) addLeavesMissingFullResolutionVertices(samples, tree, mesh, options, maxError, finestSize, keys);
+  if (keys.empty())
+    addLeavesMissingFullResolutionVertices(samples, tree, mesh, options, maxError, finestSize, crossings, keys);
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
   return keys;

@@ -28,6 +28,7 @@
 
 #include "isovdb/cell/dual_vertex.h"
 #include "isovdb/cell/meta_cell_samples.h"
+#include "isovdb/contour/unit_edge_crossings.h"
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/octree/linear_octree.h"
 
@@ -40,9 +41,10 @@ namespace isovdb::contour {
 ///        which hold a full-resolution vertex farther than `maxError` from `mesh`
 ///        (leaves on the meta-cell's boundary excepted: their seam is stitched
 ///        later): sorted, unique. `options` place the vertices as contouring does.
+/// `crossings` (optional) are the samples' unit-edge crossings; found here when not given.
 std::vector<octree::MortonKey> leavesBeyondErrorBound(const cell::MetaCellSamples& samples,
                                                       const octree::LinearOctree& tree, const mesh::Mesh& mesh,
                                                       const cell::DualVertexOptions& options, float maxError,
-                                                      int finestSize = 1);
+                                                      int finestSize = 1, const UnitEdgeCrossings* crossings = nullptr);
 
 }  // namespace isovdb::contour

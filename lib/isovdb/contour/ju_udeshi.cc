@@ -22,19 +22,41 @@ struct Plane {
   double eval(const Point& x) const { return n.dot(x) + d; }
 };
 
+/// The plane through p0, p1, p2 before it is oriented, with the scale its tests use.
+struct PlaneThrough {
+  Plane plane;
+  double scale = 0.0;      ///< the longer of p0p1 and p0p2
+  bool degenerate = true;  ///< the three points are (nearly) collinear
+};
+
+PlaneThrough planeThrough(const Point& p0, const Point& p1, const Point& p2) {
+  PlaneThrough out;
+  Point n = (p1 - p0).cross(p2 - p0);
+  const double len = n.norm();
+  // sqrt is monotonic and correctly rounded: the larger norm is the root of the larger square.
+  out.scale = std::max(std::sqrt(std::max((p0 - p1).squaredNorm(), (p0 - p2).squaredNorm())), 1e-30);
+  if (len <= 1e-14 * out.scale * out.scale) return out;
+  n *= 1.0 / len;
+  out.plane = Plane{n, -n.dot(p0)};
+  out.degenerate = false;
+  return out;
+}
+
+/// `through` oriented so that `reference` is on the positive side.
+/// @return false if degenerate or `reference` lies (nearly) on it.
+bool orientTowards(const PlaneThrough& through, const Point& reference, Plane& out) {
+  if (through.degenerate) return false;
+  out = through.plane;
+  const double s = out.eval(reference);
+  if (std::abs(s) <= 1e-12 * through.scale) return false;
+  if (s < 0) out = Plane{-out.n, -out.d};
+  return true;
+}
+
 /// Plane through p0, p1, p2 oriented so that `reference` is on the positive side.
 /// @return false if degenerate or `reference` lies (nearly) on it.
 bool orientedPlane(const Point& p0, const Point& p1, const Point& p2, const Point& reference, Plane& out) {
-  Point n = (p1 - p0).cross(p2 - p0);
-  const double len = n.norm();
-  const double scaleRef = std::max({(p0 - p1).norm(), (p0 - p2).norm(), 1e-30});
-  if (len <= 1e-14 * scaleRef * scaleRef) return false;
-  n *= 1.0 / len;
-  out = Plane{n, -n.dot(p0)};
-  const double s = out.eval(reference);
-  if (std::abs(s) <= 1e-12 * scaleRef) return false;
-  if (s < 0) out = Plane{-n, -out.d};
-  return true;
+  return orientTowards(planeThrough(p0, p1, p2), reference, out);
 }
 
 /// A convex polygon of at most 8 vertices: a triangle clipped by two planes has at most 5.
@@ -76,13 +98,15 @@ struct Sector {
   bool valid = false;  ///< false if degenerate: no triangle is inside it
 };
 
-Sector makeSector(const Point& e0, const Point& e1, const Point& P, const Point& Q) {
+/// The sector of (e0, e1, P, Q) from the planes through the edge line and P and Q.
+Sector makeSector(const Point& e0, const Point& e1, const Point& P, const Point& Q, const PlaneThrough& edgeP,
+                  const PlaneThrough& edgeQ) {
   Sector sector;
   sector.P = P;
   sector.Q = Q;
   // Sector: the side of plane (e, P) containing Q and the side of plane (e, Q) containing P.
   // Outer faces shared with neighbouring edges' tetrahedra: (e0, P, Q) and (e1, P, Q).
-  sector.valid = orientedPlane(e0, e1, P, Q, sector.sectorP) && orientedPlane(e0, e1, Q, P, sector.sectorQ) &&
+  sector.valid = orientTowards(edgeP, Q, sector.sectorP) && orientTowards(edgeQ, P, sector.sectorQ) &&
                  orientedPlane(e0, P, Q, e1, sector.outer0) && orientedPlane(e1, P, Q, e0, sector.outer1);
   return sector;
 }
@@ -97,12 +121,23 @@ struct EnvelopeSectors {
   explicit EnvelopeSectors(const EdgeEnvelope& envelope) {
     const int k = envelope.cellCount;
     const Point e0 = toPoint(envelope.edgeStart), e1 = toPoint(envelope.edgeEnd);
+    // Each plane through the edge line serves two sectors: a cell point's between the face
+    // points on either side of it, a face point's between the cell points on either side.
+    std::array<Point, 4> cells, faces;
+    std::array<PlaneThrough, 4> cellPlanes, facePlanes;
     for (int i = 0; i < k; ++i) {
-      const Point face = toPoint(envelope.facePoints[static_cast<std::size_t>(i)]);
-      const Point before = toPoint(envelope.cellPoints[static_cast<std::size_t>(i)]);
-      const Point after = toPoint(envelope.cellPoints[static_cast<std::size_t>((i + 1) % k)]);
-      sectors[static_cast<std::size_t>(count++)] = makeSector(e0, e1, before, face);
-      sectors[static_cast<std::size_t>(count++)] = makeSector(e0, e1, after, face);
+      const auto u = static_cast<std::size_t>(i);
+      cells[u] = toPoint(envelope.cellPoints[u]);
+      faces[u] = toPoint(envelope.facePoints[u]);
+      cellPlanes[u] = planeThrough(e0, e1, cells[u]);
+      facePlanes[u] = planeThrough(e0, e1, faces[u]);
+    }
+    for (int i = 0; i < k; ++i) {
+      const auto before = static_cast<std::size_t>(i), after = static_cast<std::size_t>((i + 1) % k);
+      sectors[static_cast<std::size_t>(count++)] =
+          makeSector(e0, e1, cells[before], faces[before], cellPlanes[before], facePlanes[before]);
+      sectors[static_cast<std::size_t>(count++)] =
+          makeSector(e0, e1, cells[after], faces[before], cellPlanes[after], facePlanes[before]);
     }
     touch = 1e-9 * std::max(1.0, (e0 - e1).norm());
   }

@@ -118,13 +118,19 @@ bool TriangleGrid::anyTriangleNear(const Vec3d& lo, const Vec3d& hi, double reac
   return false;
 }
 
-bool TriangleGrid::within(const Vec3f& p, double distance) const {
+bool TriangleGrid::within(const Vec3f& p, double distance, std::uint32_t* hint) const {
   const Vec3d q = toDouble(p);
   const double limit = distance * distance;
-  return anyTriangleNear(q, q, distance, [&](const Triangle& t) {
+  const auto close = [&](const Triangle& t) {
     const Vec3d d = sub(q, closestPointOnTriangle(q, toDouble(mesh_.positions[t[0]]), toDouble(mesh_.positions[t[1]]),
                                                   toDouble(mesh_.positions[t[2]])));
     return dot(d, d) <= limit;
+  };
+  if (hint != nullptr && *hint < mesh_.triangles.size() && close(mesh_.triangles[*hint])) return true;
+  return anyTriangleNear(q, q, distance, [&](const Triangle& t) {
+    if (!close(t)) return false;
+    if (hint != nullptr) *hint = static_cast<std::uint32_t>(&t - mesh_.triangles.data());
+    return true;
   });
 }
 

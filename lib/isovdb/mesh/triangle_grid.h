@@ -31,8 +31,10 @@ class TriangleGrid {
   ///        ones where that would take more than 64 bins along an axis.
   TriangleGrid(const Mesh& mesh, double binSize);
 
-  /// True if some triangle of the mesh lies within `distance` of `p`.
-  bool within(const Vec3f& p, double distance) const;
+  /// True if some triangle of the mesh lies within `distance` of `p`. `hint` (optional,
+  /// in and out) is a triangle to try first and receives the one found: queries that
+  /// walk along the surface mostly find the previous answer close enough again.
+  bool within(const Vec3f& p, double distance, std::uint32_t* hint = nullptr) const;
 
  private:
   const Mesh& mesh_;

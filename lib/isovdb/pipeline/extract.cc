@@ -179,12 +179,16 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
   // Caps are flattened piece by piece (the mesh still streams); dropping them
   // (Open) needs the whole mesh, so it is collected first.
   const bool open = box && options.boundary == BoundaryMode::Open;
-  // Beyond the box the octree methods read far outside: always in adaptive mode, and in regular
-  // mode where the background lies inside the surface (a numpy field 40 - r at iso 0: else the
-  // background beyond the array made a box around it). Their caps then lie on the box (within
+  // Beyond the box the octree methods read far outside: always where they contour by minimal
+  // edges (adaptive mode, regular mode in Wenger's reading), and in the voxel reading where the
+  // background lies inside the surface (a numpy field 40 - r at iso 0: else the background
+  // beyond the array made a box around it). Their caps then lie on the box (within
   // rounding: the crossings sit next to the last samples) and are not flattened; the vdb
   // method's and regular mode's others are flattened here.
-  const bool capsMade = box && (method == ContourMethod::Adaptive || (method == ContourMethod::Regular && !byLayers &&
+  cell::ContourSettings settings = options.contour;
+  settings.iso = iso;
+  settings.topology = regularTopologyFor(options.regularTopology, kind);
+  const bool capsMade = box && (settings.contoursByMinimalEdges() || (method == ContourMethod::Regular && !byLayers &&
                                                                       volume::backgroundInside(field, iso)));
   mesh::MeshCollector whole;
   CappingSink capped(open ? static_cast<mesh::MeshSink&>(whole) : sink, capsMade ? std::nullopt : box);
@@ -203,9 +207,6 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
     capped.addVertices(mesh.positions);
     capped.addTriangles(mesh.triangles);
   } else {
-    cell::ContourSettings settings = options.contour;
-    settings.iso = iso;
-    settings.topology = regularTopologyFor(options.regularTopology, kind);
     octree::OctreeOptions tree = options.octree;
     if (capsMade) settings.dataBox = {{box->min, box->max}};
     if (byLayers)

@@ -19,6 +19,7 @@
 #include "isovdb/contour/adaptive_contour.h"
 #include "isovdb/contour/error_bound.h"
 #include "isovdb/contour/regular_contour.h"
+#include "isovdb/contour/unit_edge_crossings.h"
 #include "isovdb/errors.h"
 #include "isovdb/pipeline/load_volume.h"
 #include "isovdb/octree/surface_cells.h"
@@ -94,6 +95,16 @@ contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const E
   octree::OctreeOptions options = engine.tree;
   const bool bounded = settings.method == cell::ContourMethod::Adaptive && options.maxError > 0.0f;
   const int finest = bounded ? octree::finestLeafSize(options, samples.size) : 1;
+  // Every bipolar unit edge's crossing, found once for the whole block (each is shared by
+  // four 1-voxel cells): regular mode's tree has only 1-voxel surface leaves, and the error
+  // bound places a vertex in every unit cell of the coarse leaves, pass after pass.
+  std::optional<contour::UnitEdgeCrossings> crossings;
+  if (settings.contoursByMinimalEdges() && (settings.method == cell::ContourMethod::Regular || bounded)) {
+    const auto t0 = std::chrono::steady_clock::now();
+    crossings.emplace(samples, iso, settings.sharpFeatures);
+    totals.contourSeconds += secondsSince(t0);
+  }
+  const contour::UnitEdgeCrossings* unitCrossings = crossings ? &*crossings : nullptr;
   for (;;) {
     auto t0 = std::chrono::steady_clock::now();
     octree::OctreeBuildStats buildStats;
@@ -103,16 +114,16 @@ contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const E
     contour::MetaCellMesh result;
     contour::RegularContourStats regularStats;
     contour::AdaptiveContourStats adaptiveStats;
-    if (settings.method == cell::ContourMethod::Regular)
-      result = contour::contourRegularMetaCell(samples, tree, settings, &regularStats);
+    if (settings.contoursByMinimalEdges())
+      result = contour::contourAdaptiveMetaCell(samples, tree, settings, &adaptiveStats, unitCrossings);
     else
-      result = contour::contourAdaptiveMetaCell(samples, tree, settings, &adaptiveStats);
+      result = contour::contourRegularMetaCell(samples, tree, settings, &regularStats);
     // The error bound's second look: leaves whose mesh strays beyond it are split and
     // the block built again (each pass only deepens the tree, so this ends).
     std::vector<octree::MortonKey> beyond;
     if (bounded)
       beyond = contour::leavesBeyondErrorBound(samples, tree, result.mesh, cell::dualVertexOptions(settings),
-                                               options.maxError, finest);
+                                               options.maxError, finest, unitCrossings);
     totals.contourSeconds += secondsSince(t0);
     std::vector<octree::MortonKey> forced;
     std::set_union(options.forcedSplits.begin(), options.forcedSplits.end(), beyond.begin(), beyond.end(),
@@ -183,18 +194,25 @@ float engineIso(volume::VolumeKind kind, float iso, const Engine& engine, cell::
 }
 
 void recordTotals(const MetaCellTotals& totals, const cell::ContourSettings& options, Statistics::Json& section) {
-  const bool regular = options.method == cell::ContourMethod::Regular;
+  const bool byEdges = options.contoursByMinimalEdges();
   const contour::RegularContourStats& r = totals.regular;
   const contour::AdaptiveContourStats& a = totals.adaptive;
   section["leaves"] = totals.leaves;
   section["complex_cells"] = totals.build.complexCells;
   section["unresolved_complex_leaves"] = totals.build.unresolvedComplexLeaves;
-  section["boundary_cells_kept"] = regular ? r.seamCells : a.seamCells;
-  section["edges_left_to_stitching"] = regular ? r.boundaryEdges : a.boundaryEdges;
-  section["manifold_fixes"] = regular ? r.manifoldFixes : a.manifoldFixes;
-  if (regular) {
+  section["boundary_cells_kept"] = byEdges ? a.seamCells : r.seamCells;
+  section["edges_left_to_stitching"] = byEdges ? a.boundaryEdges : r.boundaryEdges;
+  section["manifold_fixes"] = byEdges ? a.manifoldFixes : r.manifoldFixes;
+  if (byEdges) {
+    section["intersection_free"] = options.intersectionFree;
+    section["multi_vertex_cells"] = a.multiVertexCells;
+    section["minimal_edges"] = a.minimalEdges;
+    section["fanned_edges"] = a.fannedEdges;
+    section["triangles_added_by_fans"] = a.trianglesAddedByFans;
+  }
+  if (options.method == cell::ContourMethod::Regular) {
     section["topology"] = std::string(cell::regularTopologyName(options.topology));
-    section["manifold_fixes_beyond_apron"] = r.fixesBeyondApron;
+    if (!byEdges) section["manifold_fixes_beyond_apron"] = r.fixesBeyondApron;
     if (options.topology == cell::RegularTopology::Voxels) section["tube_cells"] = r.tubeCells;
   } else {
     section["geometric_splits"] = totals.build.geometricSplits;
@@ -204,12 +222,7 @@ void recordTotals(const MetaCellTotals& totals, const cell::ContourSettings& opt
     section["multi_sheet_splits"] = totals.build.multiSheetSplits;
     section["data_box_splits"] = totals.build.dataBoxSplits;
     section["hidden_component_splits"] = totals.build.hiddenComponentSplits;
-    section["multi_vertex_cells"] = a.multiVertexCells;
-    section["intersection_free"] = options.intersectionFree;
     section["sharp_features"] = options.sharpFeatures;
-    section["minimal_edges"] = a.minimalEdges;
-    section["fanned_edges"] = a.fannedEdges;
-    section["triangles_added_by_fans"] = a.trianglesAddedByFans;
   }
   section["cpu_seconds_read"] = totals.readSeconds;
   section["cpu_seconds_octree"] = totals.octreeSeconds;
@@ -380,7 +393,7 @@ class MetaCellRun {
     st["meta_edges"] = stitchStats.metaEdges;
     st["seam_cells"] = stitchStats.seamCells;
     st["edges"] = stitchStats.edges;
-    if (options.method == cell::ContourMethod::Adaptive) st["fanned_edges"] = stitchStats.fannedEdges;
+    if (options.contoursByMinimalEdges()) st["fanned_edges"] = stitchStats.fannedEdges;
     st["missing_cells"] = stitchStats.missingCells;
     (*stats)["stitch"] = st;
   }

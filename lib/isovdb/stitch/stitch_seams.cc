@@ -163,7 +163,7 @@ void stitchSeams(SeamStore& store, const cell::ContourSettings& options, int met
       around.push_back(&m->cells);
     }
     const EdgeOctree edgeTree = buildEdgeOctree(seam, around, s);
-    if (options.method == cell::ContourMethod::Regular)
+    if (!options.contoursByMinimalEdges())
       stitchRegular(seam, edgeTree, s, options.topology == cell::RegularTopology::Voxels, out, local);
     else
       stitchAdaptive(seam, edgeTree, s, options.intersectionFree, addVertex, faceVertices, out, local);
