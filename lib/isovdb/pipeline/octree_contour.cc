@@ -164,14 +164,22 @@ void farOutsideBeyondDataBox(cell::MetaCellSamples& samples, float iso, float bo
   float reach = 1e4f * (bound + std::abs(iso) + 1.0f);
   if (!(reach < 1e18f)) reach = 1e18f;
   const float far = std::max(iso + reach, std::nextafter(iso, std::numeric_limits<float>::infinity()));
+  // Sample offsets [first, last] along axis a that lie inside the box.
+  const auto insideRange = [&](int a) {
+    return std::array<int, 2>{std::max(lo, (*box)[0][a] - samples.origin[a]),
+                              std::min(hi, (*box)[1][a] - samples.origin[a])};
+  };
+  const std::array<int, 2> x = insideRange(0), y = insideRange(1), z = insideRange(2);
   for (int k = lo; k <= hi; ++k)
-    for (int j = lo; j <= hi; ++j)
-      for (int i = lo; i <= hi; ++i) {
-        const std::array<int, 3> g{samples.origin[0] + i, samples.origin[1] + j, samples.origin[2] + k};
-        bool outside = false;
-        for (int a = 0; a < 3; ++a) outside = outside || g[a] < (*box)[0][a] || g[a] > (*box)[1][a];
-        if (outside) samples.values[samples.indexOf(i, j, k)] = far;
+    for (int j = lo; j <= hi; ++j) {
+      float* row = &samples.values[samples.indexOf(lo, j, k)];
+      if (k < z[0] || k > z[1] || j < y[0] || j > y[1] || x[0] > x[1]) {
+        std::fill(row, row + (hi - lo + 1), far);  // the whole row lies beyond the box
+        continue;
       }
+      std::fill(row, row + (x[0] - lo), far);                      // before the box along x
+      std::fill(row + (x[1] - lo + 1), row + (hi - lo + 1), far);  // after it
+    }
 }
 
 /// The box beyond which the contouring reads far outside (set by extract for adaptive mode,
