@@ -66,7 +66,8 @@ std::vector<Setting> extractSettings(ExtractChoices& c) {
       {"method",
        "Contouring method: adaptive (adaptive octree + dual contouring with Ju-Udeshi fans: closed, "
        "manifold, far fewer triangles, within --max-error of the full-resolution surface), regular (octree + "
-       "manifold DMC: closed, manifold, the mask's topology), vdb (OpenVDB's volumeToMesh, the reference)",
+       "manifold DMC: closed, manifold, the mask's topology; on fields free of self-intersections), vdb (OpenVDB's "
+       "volumeToMesh, the reference)",
        &c.method},
       {"iso",
        "Isovalue: voxels on distance fields (0 = the mask boundary, > 0 grows the surface), field units on "
@@ -106,8 +107,8 @@ std::vector<Setting> extractSettings(ExtractChoices& c) {
            "on smooth bodies; <= 0 off",
            &o.octree.maxError},
           {"intersection-free",
-           "adaptive: Ju-Udeshi fans where plain dual contouring would self-intersect (off: plain "
-           "DC, for comparison)",
+           "adaptive, and regular on fields (--topology mdmc): Ju-Udeshi fans where plain dual contouring would "
+           "self-intersect (off: plain DC, regular: manifold DMC's quads, for comparison)",
            &o.contour.intersectionFree, /*negatable=*/true},
           {"sharp-features",
            "adaptive: keep the sharp edges and corners of an exact distance field (e.g. a CAD level set .vdb). Off by "
