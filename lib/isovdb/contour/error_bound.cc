@@ -58,7 +58,7 @@ void addLeavesOfFarMeshPoints(const cell::MetaCellSamples& samples, const octree
 /// (dmc_table.h), a QEF vertex for a single group and mass points for several, as
 /// contour/leaf_groups.cc places them at 1 voxel.
 bool unitCellVerticesWithin(const cell::MetaCellSamples& samples, const octree::SamplePhases& phases,
-                            const UnitEdgeCrossings& crossings, const octree::OctreeLeaf& leaf,
+                            const UnitEdgeCrossings* crossings, const octree::OctreeLeaf& leaf,
                             cell::DualVertexOptions options, const mesh::TriangleGrid& grid, float maxError) {
   bool within = true;
   std::uint32_t hint = std::numeric_limits<std::uint32_t>::max();  // the last triangle close enough
@@ -68,9 +68,13 @@ bool unitCellVerticesWithin(const cell::MetaCellSamples& samples, const octree::
         const cell::DmcEntry& entry = cell::dmcEntry(config);
         options.massPointOnly = entry.vertexCount > 1;
         for (int g = 0; g < entry.vertexCount && within; ++g) {
-          const cell::DualVertex v = cell::dualVertexOfCrossings(
-              samples, origin, 1, entry.groups[static_cast<std::size_t>(g)], options,
-              [&](const std::array<int, 3>& start, int axis) { return crossings.find(start, axis); });
+          const std::uint16_t edges = entry.groups[static_cast<std::size_t>(g)];
+          const cell::DualVertex v = crossings != nullptr
+                                         ? cell::dualVertexOfCrossings(samples, origin, 1, edges, options,
+                                                                       [&](const std::array<int, 3>& start, int axis) {
+                                                                         return crossings->find(start, axis);
+                                                                       })
+                                         : cell::computeDualVertex(samples, origin, 1, edges, options);
           within = !v.valid() || grid.within(v.position, maxError, &hint);
         }
       });
@@ -85,13 +89,10 @@ bool unitCellVerticesWithin(const cell::MetaCellSamples& samples, const octree::
 /// would cover their points, are made later by stitching.
 void addLeavesMissingFullResolutionVertices(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
                                             const mesh::Mesh& mesh, const cell::DualVertexOptions& options,
-                                            float maxError, int finestSize, const UnitEdgeCrossings* given,
+                                            float maxError, int finestSize, const UnitEdgeCrossings* crossings,
                                             std::vector<octree::MortonKey>& keys) {
-  if (!std::isfinite(maxError)) return;  // nothing lies farther than that
-  // The phases, the crossings and the grid only where a leaf needs them. Each unit edge's
-  // crossing is found once (a unit edge is shared by four unit cells).
-  std::optional<octree::SamplePhases> phases;
-  std::optional<UnitEdgeCrossings> crossings;
+  if (!std::isfinite(maxError)) return;        // nothing lies farther than that
+  std::optional<octree::SamplePhases> phases;  // the grid and the phases only where a leaf needs them
   std::optional<mesh::TriangleGrid> grid;
   for (std::size_t i = 0; i < tree.leafCount(); ++i) {
     const octree::OctreeLeaf& leaf = tree.leaf(i);
@@ -102,11 +103,9 @@ void addLeavesMissingFullResolutionVertices(const cell::MetaCellSamples& samples
     if (onBoundary) continue;
     if (!grid) {
       phases.emplace(samples, options.iso);
-      if (!given) crossings.emplace(samples, options.iso, options.sharpFeatures);
       grid.emplace(mesh, std::max(kBinVoxels, 2.0 * maxError));
     }
-    if (!unitCellVerticesWithin(samples, *phases, given ? *given : *crossings, leaf, options, *grid, maxError))
-      keys.push_back(leaf.key);
+    if (!unitCellVerticesWithin(samples, *phases, crossings, leaf, options, *grid, maxError)) keys.push_back(leaf.key);
   }
 }
 

@@ -41,7 +41,8 @@ namespace isovdb::contour {
 ///        which hold a full-resolution vertex farther than `maxError` from `mesh`
 ///        (leaves on the meta-cell's boundary excepted: their seam is stitched
 ///        later): sorted, unique. `options` place the vertices as contouring does.
-/// `crossings` (optional) are the samples' unit-edge crossings; found here when not given.
+/// `crossings` (optional) are the samples' unit-edge crossings, each found once (a unit edge
+/// is shared by four unit cells); without them each cell finds its own.
 std::vector<octree::MortonKey> leavesBeyondErrorBound(const cell::MetaCellSamples& samples,
                                                       const octree::LinearOctree& tree, const mesh::Mesh& mesh,
                                                       const cell::DualVertexOptions& options, float maxError,

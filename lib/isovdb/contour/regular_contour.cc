@@ -124,17 +124,12 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
   MetaCellMesh result;
   mesh::Mesh& out = result.mesh;
   // 1-voxel leaves (every leaf with a vertex at the default depths) read their crossings
-  // from a table that finds each once, not once per cell around the edge. Its bit rows
-  // take 3 (S+1)^2 words per 64 samples along x (12 bytes each): built where that stays
-  // within a few hundred bytes per leaf, as on every meta-cell the surface really
-  // crosses, not for one large block around a small surface (--meta-cell 0).
+  // from a table that finds each once, not once per cell around the edge, where the
+  // table pays for its memory (UnitEdgeCrossings::pays).
   const auto unitLeafCount = static_cast<std::size_t>(
       std::count_if(leaves.begin(), leaves.end(), [](const OctreeLeaf& l) { return l.size == 1; }));
-  const std::size_t tableWords = 3 * static_cast<std::size_t>(metaSize + 1) * static_cast<std::size_t>(metaSize + 1) *
-                                 static_cast<std::size_t>((metaSize + 64) / 64);
   std::optional<UnitEdgeCrossings> crossings;
-  if (unitLeafCount > 0 && tableWords <= 24 * unitLeafCount + 65536)
-    crossings.emplace(samples, options.iso, options.sharpFeatures);
+  if (UnitEdgeCrossings::pays(metaSize, unitLeafCount)) crossings.emplace(samples, options.iso, options.sharpFeatures);
   out.positions = placeGroupVertices(samples, regularTree, groups, cell::dualVertexOptions(options),
                                      crossings ? &*crossings : nullptr);
 

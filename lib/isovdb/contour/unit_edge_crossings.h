@@ -34,6 +34,15 @@ class UnitEdgeCrossings {
   /// @pre the edge lies in [0, S]^3.
   const cell::EdgeIntersection* find(const std::array<int, 3>& start, int axis) const noexcept;
 
+  /// @brief True where the table pays for its memory: its bit rows (3 (S+1)^2 words per
+  ///        64 samples along x, 12 bytes each) stay within a few hundred bytes per cell the
+  ///        surface crosses, as on every meta-cell the surface really crosses; not for one
+  ///        large block around a small surface (--meta-cell 0).
+  static bool pays(int size, std::size_t surfaceCells) noexcept {
+    const auto s = static_cast<std::size_t>(size);
+    return surfaceCells > 0 && 3 * (s + 1) * (s + 1) * ((s + 64) / 64) <= 24 * surfaceCells + 65536;
+  }
+
   /// Bipolar unit edges found.
   std::size_t size() const noexcept { return crossings_[0].size() + crossings_[1].size() + crossings_[2].size(); }
 

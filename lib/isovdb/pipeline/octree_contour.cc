@@ -97,20 +97,26 @@ contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const E
   const int finest = bounded ? octree::finestLeafSize(options, samples.size) : 1;
   // Every bipolar unit edge's crossing, found once for the whole block (each is shared by
   // four 1-voxel cells): regular mode's tree has only 1-voxel surface leaves, and the error
-  // bound places a vertex in every unit cell of the coarse leaves, pass after pass.
+  // bound places a vertex in every unit cell of the coarse leaves, pass after pass. Built
+  // after the first tree, which tells whether the table pays for its memory.
+  const bool wantsCrossings =
+      settings.contoursByMinimalEdges() && (settings.method == cell::ContourMethod::Regular || bounded);
   std::optional<contour::UnitEdgeCrossings> crossings;
-  if (settings.contoursByMinimalEdges() && (settings.method == cell::ContourMethod::Regular || bounded)) {
-    const auto t0 = std::chrono::steady_clock::now();
-    crossings.emplace(samples, iso, settings.sharpFeatures);
-    totals.contourSeconds += secondsSince(t0);
-  }
-  const contour::UnitEdgeCrossings* unitCrossings = crossings ? &*crossings : nullptr;
+  bool crossingsDecided = false;
   for (;;) {
     auto t0 = std::chrono::steady_clock::now();
     octree::OctreeBuildStats buildStats;
     const octree::LinearOctree tree = octree::buildContourTree(samples, settings, options, &buildStats, interrupter);
     totals.octreeSeconds += secondsSince(t0);
     t0 = std::chrono::steady_clock::now();
+    if (wantsCrossings && !crossingsDecided) {
+      crossingsDecided = true;
+      const auto surfaceLeaves = static_cast<std::size_t>(std::count_if(
+          tree.leaves().begin(), tree.leaves().end(), [](const octree::OctreeLeaf& l) { return l.surface; }));
+      if (contour::UnitEdgeCrossings::pays(samples.size, surfaceLeaves))
+        crossings.emplace(samples, iso, settings.sharpFeatures);
+    }
+    const contour::UnitEdgeCrossings* unitCrossings = crossings ? &*crossings : nullptr;
     contour::MetaCellMesh result;
     contour::RegularContourStats regularStats;
     contour::AdaptiveContourStats adaptiveStats;
