@@ -88,13 +88,11 @@ MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const
     if (hit == nullptr) return std::numeric_limits<double>::quiet_NaN();
     return static_cast<double>(hit->point[axis] - static_cast<float>(start[axis]));
   };
-  // Constant-time lookups of the leaves around each edge where the index's bit rows (S^2
-  // words per 64 cells along x) take no more memory than a few words per leaf, as in
-  // regular contouring: a binary search in Z order missed the cache on every neighbour.
-  const std::size_t indexWords = static_cast<std::size_t>(metaSize) * static_cast<std::size_t>(metaSize) *
-                                 static_cast<std::size_t>((metaSize + 63) / 64);
+  // Constant-time lookups of the leaves around each edge where the index pays for its
+  // memory, as in regular contouring: a binary search in Z order missed the cache on every
+  // neighbour.
   std::optional<octree::UnitLeafIndex> unitLeaves;
-  if (indexWords <= 8 * leafCount + 4096) unitLeaves.emplace(tree);
+  if (octree::UnitLeafIndex::pays(metaSize, leafCount)) unitLeaves.emplace(tree);
   const AdaptiveTree source{.tree = &tree,
                             .origin = samples.origin,
                             .firstVertex = &groups.firstVertex,

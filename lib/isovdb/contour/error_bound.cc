@@ -68,13 +68,8 @@ bool unitCellVerticesWithin(const cell::MetaCellSamples& samples, const octree::
         const cell::DmcEntry& entry = cell::dmcEntry(config);
         options.massPointOnly = entry.vertexCount > 1;
         for (int g = 0; g < entry.vertexCount && within; ++g) {
-          const std::uint16_t edges = entry.groups[static_cast<std::size_t>(g)];
-          const cell::DualVertex v = crossings != nullptr
-                                         ? cell::dualVertexOfCrossings(samples, origin, 1, edges, options,
-                                                                       [&](const std::array<int, 3>& start, int axis) {
-                                                                         return crossings->find(start, axis);
-                                                                       })
-                                         : cell::computeDualVertex(samples, origin, 1, edges, options);
+          const cell::DualVertex v =
+              cellDualVertex(samples, origin, 1, entry.groups[static_cast<std::size_t>(g)], options, crossings);
           within = !v.valid() || grid.within(v.position, maxError, &hint);
         }
       });

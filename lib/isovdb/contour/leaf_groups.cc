@@ -122,12 +122,7 @@ std::vector<mesh::Vec3f> placeGroupVertices(const cell::MetaCellSamples& samples
             cell::DualVertexOptions vertexOptions = groupOptions;
             vertexOptions.massPointOnly = groupOptions.massPointOnly || k >= groupVertices;  // a tube has 2 groups
             const std::uint16_t edges = vertexEdges[static_cast<std::size_t>(k)];
-            const cell::DualVertex v =
-                crossings != nullptr && leaf.size == 1
-                    ? cell::dualVertexOfCrossings(
-                          samples, leaf.origin, 1, edges, vertexOptions,
-                          [&](const std::array<int, 3>& start, int axis) { return crossings->find(start, axis); })
-                    : cell::computeDualVertex(samples, leaf.origin, leaf.size, edges, vertexOptions);
+            const cell::DualVertex v = cellDualVertex(samples, leaf.origin, leaf.size, edges, vertexOptions, crossings);
             mesh::Vec3f p = v.position;
             if (!v.valid())  // cannot happen for bipolar edges; keep the cell centre rather than garbage
               for (std::size_t a = 0; a < 3; ++a)

@@ -140,13 +140,9 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
   std::vector<std::vector<mesh::Triangle>> chunkTriangles(chunks);
   std::vector<std::int64_t> chunkEdges(chunks, 0);
   std::vector<std::int32_t> leafBoundaryEdges(n, 0);
-  // Constant-time lookups of the cells around an edge, where the index's bit rows
-  // (S^2 words per 64 cells along x) take no more memory than a few words per leaf:
-  // always for meta-cells, not for one large block around a thin surface.
-  const std::size_t indexWords = static_cast<std::size_t>(metaSize) * static_cast<std::size_t>(metaSize) *
-                                 static_cast<std::size_t>((metaSize + 63) / 64);
+  // Constant-time lookups of the cells around an edge, where the index pays for its memory.
   std::optional<octree::UnitLeafIndex> unitLeaves;
-  if (indexWords <= 8 * n + 4096) unitLeaves.emplace(regularTree);
+  if (octree::UnitLeafIndex::pays(metaSize, n)) unitLeaves.emplace(regularTree);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t c = r.begin(); c != r.end(); ++c) {
       std::vector<mesh::Triangle>& triangles = chunkTriangles[c];

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "isovdb/cell/dual_vertex.h"
 #include "isovdb/cell/edge_intersection.h"
 #include "isovdb/cell/meta_cell_samples.h"
 
@@ -55,5 +56,17 @@ class UnitEdgeCrossings {
   std::array<std::vector<std::uint32_t>, 3> before_;
   std::array<std::vector<cell::EdgeIntersection>, 3> crossings_;
 };
+
+/// @brief cell::computeDualVertex of the cell of `size` at `origin` (meta-cell offsets)
+///        with these bipolar `edges`, its crossings read from `crossings` where there is a
+///        table and the cell is 1 voxel: the same vertex, bit for bit.
+inline cell::DualVertex cellDualVertex(const cell::MetaCellSamples& samples, const std::array<int, 3>& origin, int size,
+                                       std::uint16_t edges, const cell::DualVertexOptions& options,
+                                       const UnitEdgeCrossings* crossings) {
+  if (crossings == nullptr || size != 1) return cell::computeDualVertex(samples, origin, size, edges, options);
+  return cell::dualVertexOfCrossings(
+      samples, origin, 1, edges, options,
+      [&](const std::array<int, 3>& start, int axis) { return crossings->find(start, axis); });
+}
 
 }  // namespace isovdb::contour

@@ -26,6 +26,14 @@ class UnitLeafIndex {
   /// @brief Indexes the 1-voxel leaves of `tree` (kept by reference for the other leaves).
   explicit UnitLeafIndex(const LinearOctree& tree);
 
+  /// @brief True where the index pays for its memory: its bit rows (S^2 words per 64 cells
+  ///        along x) take no more than a few words per leaf of the tree, as on every
+  ///        meta-cell; not for one large block around a thin surface (--meta-cell 0).
+  static bool pays(int size, std::size_t leaves) noexcept {
+    const auto s = static_cast<std::size_t>(size);
+    return s * s * ((s + 63) / 64) <= 8 * leaves + 4096;
+  }
+
   /// @brief tree.findLeafContainingVoxel(voxel), in constant time where a 1-voxel leaf lies.
   std::int64_t findLeafContainingVoxel(const std::array<int, 3>& voxel) const noexcept;
 
