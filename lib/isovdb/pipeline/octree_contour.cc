@@ -59,7 +59,7 @@ float valueBound(const volume::Volume& field) {
 
 /// Figures summed over meta-cells (CPU seconds, counts).
 struct MetaCellTotals {
-  double readSeconds = 0, octreeSeconds = 0, contourSeconds = 0;
+  double readSeconds = 0, octreeSeconds = 0, contourSeconds = 0, errorBoundSeconds = 0;
   std::int64_t leaves = 0;
   std::int64_t errorBoundPasses = 0;       // blocks built again because their mesh broke the error bound
   std::int64_t errorBoundLeavesSplit = 0;  // leaves those passes split
@@ -71,6 +71,7 @@ struct MetaCellTotals {
     readSeconds += o.readSeconds;
     octreeSeconds += o.octreeSeconds;
     contourSeconds += o.contourSeconds;
+    errorBoundSeconds += o.errorBoundSeconds;
     leaves += o.leaves;
     errorBoundPasses += o.errorBoundPasses;
     errorBoundLeavesSplit += o.errorBoundLeavesSplit;
@@ -126,11 +127,13 @@ contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const E
       result = contour::contourRegularMetaCell(samples, tree, settings, &regularStats);
     // The error bound's second look: leaves whose mesh strays beyond it are split and
     // the block built again (each pass only deepens the tree, so this ends).
+    totals.contourSeconds += secondsSince(t0);
+    t0 = std::chrono::steady_clock::now();
     std::vector<octree::MortonKey> beyond;
     if (bounded)
       beyond = contour::leavesBeyondErrorBound(samples, tree, result.mesh, cell::dualVertexOptions(settings),
                                                options.maxError, finest, unitCrossings);
-    totals.contourSeconds += secondsSince(t0);
+    totals.errorBoundSeconds += secondsSince(t0);
     std::vector<octree::MortonKey> forced;
     std::set_union(options.forcedSplits.begin(), options.forcedSplits.end(), beyond.begin(), beyond.end(),
                    std::back_inserter(forced));
@@ -242,6 +245,7 @@ void recordTotals(const MetaCellTotals& totals, const cell::ContourSettings& opt
   section["cpu_seconds_read"] = totals.readSeconds;
   section["cpu_seconds_octree"] = totals.octreeSeconds;
   section["cpu_seconds_contour"] = totals.contourSeconds;
+  section["cpu_seconds_error_bound"] = totals.errorBoundSeconds;
 }
 
 /// One padded meta-cell around the whole band (no seams).

@@ -24,6 +24,28 @@ const MaskGrid& maskGrid(const Volume& volume);
 const FieldGrid& fieldGrid(const Volume& volume);
 FieldGrid::Ptr fieldGridPtr(const Volume& volume);
 
+/// @brief Calls `visit(box)` with the bounding box of every active tile of `tree` (root and
+///        internal-node values), without visiting its leaves' voxels.
+/// A tree's ValueOn iterator steps through every active voxel to reach the tiles (its depth
+/// bound is compiled out of OpenVDB 10), which on a dense 256^3 field took longer than the
+/// meta-cell partition the tiles were wanted for.
+template <typename TreeT, typename Visit>
+void forEachActiveTile(const TreeT& tree, Visit&& visit) {
+  static_assert(TreeT::DEPTH == 4, "a root, two internal levels and leaves (openvdb::tree::Tree4)");
+  using Upper = typename TreeT::RootNodeType::ChildNodeType;
+  using Lower = typename Upper::ChildNodeType;
+  using Leaf = typename Lower::ChildNodeType;
+  for (auto tile = tree.root().cbeginValueOn(); tile; ++tile)
+    visit(openvdb::CoordBBox::createCube(tile.getCoord(), Upper::DIM));
+  for (auto upper = tree.root().cbeginChildOn(); upper; ++upper) {
+    for (auto tile = upper->cbeginValueOn(); tile; ++tile)
+      visit(openvdb::CoordBBox::createCube(tile.getCoord(), Lower::DIM));
+    for (auto lower = upper->cbeginChildOn(); lower; ++lower)
+      for (auto tile = lower->cbeginValueOn(); tile; ++tile)
+        visit(openvdb::CoordBBox::createCube(tile.getCoord(), Leaf::DIM));
+  }
+}
+
 }  // namespace isovdb::volume
 
 namespace isovdb::volume::detail {

@@ -36,6 +36,22 @@ struct AxisMap {
   }
 };
 
+/// Where file voxel (x, y, z) lies in its 8^3 leaf's buffer (which stores grid voxel
+/// (i, j, k) at i * 64 + j * 8 + k), for the file's axis order: blocks are filled by offset
+/// into a local buffer, so no Coord is built per voxel and no leaf is allocated for a block
+/// that turns out empty or constant.
+struct LeafOffsets {
+  std::array<int, 3> stride;  // per file axis
+  explicit LeafOffsets(const AxisMap& toGrid) {
+    constexpr std::array<int, 3> kGridStride{kLeafDim * kLeafDim, kLeafDim, 1};
+    for (int a = 0; a < 3; ++a) stride[a] = kGridStride[static_cast<std::size_t>(toGrid.gridAxis[a])];
+  }
+  int operator()(int x, int y, int z) const {
+    constexpr int kLow = kLeafDim - 1;
+    return (x & kLow) * stride[0] + (y & kLow) * stride[1] + (z & kLow) * stride[2];
+  }
+};
+
 Geometry geometryOf(const io::VolumeHeader& header) {
   Geometry geometry;
   for (int a = 0; a < 3; ++a) {
@@ -124,6 +140,7 @@ Volume ingestMask(io::SliceStream& stream, const MaskRule& rule, Interrupter* in
   const int blocksY = static_cast<int>((ny + kLeafDim - 1) / kLeafDim);
 
   const AxisMap toGrid{header.gridAxis};
+  const LeafOffsets offsetInLeaf(toGrid);
   auto grid = MaskGrid::create(false);
   MaskGrid::TreeType& tree = grid->tree();
   // Lazy buffers: sized from the declared dimensions, paid for as slices arrive.
@@ -141,22 +158,22 @@ Volume ingestMask(io::SliceStream& stream, const MaskRule& rule, Interrupter* in
     tbb::parallel_for(0, blocksY, [&](int by) {
       for (int bx = 0; bx < blocksX; ++bx) {
         const BlockRange r = blockRange(header, bx, by, depth);
-        int count = 0;
+        using Leaf = MaskGrid::TreeType::LeafNodeType;
+        Leaf::NodeMaskType on;
         for (int z = 0; z < r.depth; ++z)
           for (int y = r.y0; y < r.y1; ++y)
-            for (int x = r.x0; x < r.x1; ++x) count += inside[(z * ny + y) * nx + x];
+            for (int x = r.x0; x < r.x1; ++x)
+              if (inside[(z * ny + y) * nx + x]) on.setOn(static_cast<openvdb::Index>(offsetInLeaf(x, y, z)));
         const std::size_t b = static_cast<std::size_t>(by) * blocksX + bx;
-        if (count == 0) {
+        if (on.isOff()) {
           state[b] = BlockState::Empty;
-        } else if (r.complete() && count == kLeafDim * kLeafDim * kLeafDim) {
+        } else if (r.complete() && on.isOn()) {
           state[b] = BlockState::Tile;
         } else {
           state[b] = BlockState::Leaf;
-          auto* leaf = new MaskGrid::TreeType::LeafNodeType(toGrid(r.x0, r.y0, static_cast<int>(z0)), false, false);
-          for (int z = 0; z < r.depth; ++z)
-            for (int y = r.y0; y < r.y1; ++y)
-              for (int x = r.x0; x < r.x1; ++x)
-                if (inside[(z * ny + y) * nx + x]) leaf->setValueOn(toGrid(x, y, static_cast<int>(z0) + z), true);
+          auto* leaf = new Leaf(toGrid(r.x0, r.y0, static_cast<int>(z0)), false, false);
+          leaf->buffer() = Leaf::Buffer(on);  // inside voxels are on and true
+          leaf->setValueMask(on);
           leaves[b] = leaf;
         }
       }
@@ -179,6 +196,7 @@ Volume ingestScalar(io::SliceStream& stream, const ScalarIngestOptions& options,
   const int blocksY = static_cast<int>((ny + kLeafDim - 1) / kLeafDim);
 
   const AxisMap toGrid{header.gridAxis};
+  const LeafOffsets offsetInLeaf(toGrid);
   auto grid = FieldGrid::create(options.background);
   FieldGrid::TreeType& tree = grid->tree();
   io::LazyBuffer<float> slice(static_cast<std::size_t>(nx * ny));
@@ -198,6 +216,10 @@ Volume ingestScalar(io::SliceStream& stream, const ScalarIngestOptions& options,
       for (int bx = 0; bx < blocksX; ++bx) {
         const BlockRange r = blockRange(header, bx, by, depth);
         const std::size_t b = static_cast<std::size_t>(by) * blocksX + bx;
+        using Leaf = FieldGrid::TreeType::LeafNodeType;
+        std::array<float, Leaf::SIZE> values;  // inactive voxels hold the background
+        values.fill(options.background);
+        Leaf::NodeMaskType on;
         int active = 0;
         float lo = std::numeric_limits<float>::max(), hi = std::numeric_limits<float>::lowest();
         for (int z = 0; z < r.depth; ++z)
@@ -205,6 +227,9 @@ Volume ingestScalar(io::SliceStream& stream, const ScalarIngestOptions& options,
             for (int x = r.x0; x < r.x1; ++x) {
               const float v = slab[(z * ny + y) * nx + x];
               if (!isActive(v)) continue;
+              const auto offset = static_cast<openvdb::Index>(offsetInLeaf(x, y, z));
+              values[offset] = v;
+              on.setOn(offset);
               ++active;
               lo = std::min(lo, v);
               hi = std::max(hi, v);
@@ -219,14 +244,9 @@ Volume ingestScalar(io::SliceStream& stream, const ScalarIngestOptions& options,
           tileValue[b] = lo;
         } else {
           state[b] = BlockState::Leaf;
-          auto* leaf = new FieldGrid::TreeType::LeafNodeType(toGrid(r.x0, r.y0, static_cast<int>(z0)),
-                                                             options.background, false);
-          for (int z = 0; z < r.depth; ++z)
-            for (int y = r.y0; y < r.y1; ++y)
-              for (int x = r.x0; x < r.x1; ++x) {
-                const float v = slab[(z * ny + y) * nx + x];
-                if (isActive(v)) leaf->setValueOn(toGrid(x, y, static_cast<int>(z0) + z), v);
-              }
+          auto* leaf = new Leaf(toGrid(r.x0, r.y0, static_cast<int>(z0)), options.background, false);
+          std::copy(values.begin(), values.end(), leaf->buffer().data());
+          leaf->setValueMask(on);
           leaves[b] = leaf;
         }
       }

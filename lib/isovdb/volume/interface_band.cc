@@ -2,6 +2,8 @@
 // Copyright Contributors to the isovdb project.
 #include "isovdb/volume/interface_band.h"
 
+#include "isovdb/volume/grids.h"
+
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -788,12 +790,7 @@ std::vector<Coord> candidateChunks(const MaskGrid& mask, const Layout& layout) {
   };
   for (auto leaf = mask.tree().cbeginLeaf(); leaf; ++leaf)
     addAround(CoordBBox::createCube(leaf->origin(), kLeaf), false);
-  for (auto tile = mask.tree().cbeginValueOn(); tile; ++tile)
-    if (tile.isTileValue()) {
-      CoordBBox box;
-      tile.getBoundingBox(box);
-      addAround(box, true);
-    }
+  forEachActiveTile(mask.tree(), [&](const CoordBBox& box) { addAround(box, true); });
   std::sort(chunks.begin(), chunks.end());
   chunks.erase(std::unique(chunks.begin(), chunks.end()), chunks.end());
   return chunks;

@@ -58,9 +58,7 @@ MetaCellPartition partitionMetaCells(const Volume& field, int size, float iso, c
     for (auto it = leaf->cbeginValueAll(); it && !near; ++it) near = std::abs(*it - iso) <= 1.f;
     if (near) addBox(leaf->getNodeBoundingBox());
   }
-  if (!distance)
-    for (auto tile = grid.tree().cbeginValueOn(); tile; ++tile)
-      if (!tile.isVoxelValue()) addBox(tile.getBoundingBox());
+  if (!distance) forEachActiveTile(grid.tree(), addBox);
   if (capsBox && backgroundInside(field, iso))
     for (int a = 0; a < 3; ++a) {
       const openvdb::Coord lo(capsBox->min[0], capsBox->min[1], capsBox->min[2]);

@@ -83,8 +83,11 @@ GridStats treeStats(const TreeT& tree, bool withRange) {
 
 GridStats Volume::stats() const {
   if (!grid_) return {};
-  if (kind_ == VolumeKind::Mask) return treeStats(maskGrid(*this).tree(), false);
-  return treeStats(fieldGrid(*this).tree(), true);
+  std::call_once(stats_->once, [this] {
+    stats_->stats =
+        kind_ == VolumeKind::Mask ? treeStats(maskGrid(*this).tree(), false) : treeStats(fieldGrid(*this).tree(), true);
+  });
+  return stats_->stats;
 }
 
 Volume negatedScalar(const Volume& volume) {
