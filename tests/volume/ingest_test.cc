@@ -109,6 +109,35 @@ TEST(IngestScalar, RoundTripIsExact) {
   EXPECT_EQ(grid.tree().getValueDepth(openvdb::Coord(1, 1, 1)), 2);  // the constant block is a tile
 }
 
+// Files whose fastest axis is not the grid's x (SEG-Y: samples along time, stored as the
+// grid's z): each block is filled by leaf offset, so every permutation of the axes is read.
+TEST(Ingest, EveryAxisOrderPutsEachSampleAtItsGridCoordinate) {
+  const std::array<std::array<int, 3>, 6> orders{{{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}}};
+  for (const std::array<int, 3>& order : orders) {
+    VectorSliceStream stream = labelVolume();
+    stream.mutableHeader().gridAxis = order;
+    const auto gridCoord = [&](int x, int y, int z) {
+      openvdb::Coord c;
+      c[order[0]] = x;
+      c[order[1]] = y;
+      c[order[2]] = z;
+      return c;
+    };
+    VectorSliceStream scalarStream = stream;
+    const Volume mask = ingestMask(stream, MaskRule{.labels = {2, 3}});
+    const Volume scalar = ingestScalar(scalarStream, {.background = 0.f});
+    auto inside = maskGrid(mask).getConstAccessor();
+    auto value = fieldGrid(scalar).getConstAccessor();
+    for (int z = 0; z < 21; ++z)
+      for (int y = 0; y < 29; ++y)
+        for (int x = 0; x < 37; ++x) {
+          const float v = stream.at(x, y, z);
+          ASSERT_EQ(inside.isValueOn(gridCoord(x, y, z)), v >= 2.f) << order[0] << order[1] << order[2];
+          ASSERT_EQ(value.getValue(gridCoord(x, y, z)), v) << order[0] << order[1] << order[2];
+        }
+  }
+}
+
 TEST(IngestScalar, BackgroundBlocksAreNotStored) {
   VectorSliceStream stream = VectorSliceStream::fromFunction(
       {64, 64, 64}, [](int x, int y, int z) { return x == 40 && y == 40 && z == 40 ? 1.f : 0.f; });

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <tuple>
 
 #include "isovdb/volume/distance_field.h"
 #include "isovdb/volume/grids.h"
@@ -66,6 +67,39 @@ TEST(MetaCells, ReadMetaCellMatchesTheGridIncludingApronAndSharedBoundary) {
   // Deep inside and far outside read as the signed background.
   EXPECT_LT(a.value(32, 32, 32), 0.f);
   EXPECT_GT(a.value(0, 0, 0), 0.f);
+}
+
+// forEachActiveTile must find what OpenVDB's value iterator finds above the leaves: tiles
+// at the root and in both internal levels, active ones only, beside leaves with voxels on.
+TEST(MetaCells, ActiveTilesAreThoseOfTheValueIteratorWithoutItsVoxels) {
+  const FieldGrid::Ptr grid = FieldGrid::create(0.f);
+  FieldGrid::TreeType& tree = grid->tree();
+  tree.addTile(3, openvdb::Coord(-4096, 0, 4096), 2.f, true);  // a root tile (4096^3)
+  tree.addTile(2, openvdb::Coord(128, 256, 0), 3.f, true);     // in an upper internal node (128^3)
+  tree.addTile(2, openvdb::Coord(256, 256, 0), 3.f, false);    // inactive: not a tile to mesh
+  tree.addTile(1, openvdb::Coord(200, 8, 8), 4.f, true);       // in a lower internal node (8^3)
+  tree.setValueOn(openvdb::Coord(5, 6, 7), 1.f);               // leaves' voxels
+  tree.setValueOn(openvdb::Coord(-300, 40, 9), 1.f);
+  std::vector<openvdb::CoordBBox> expected, found;
+  for (auto value = tree.cbeginValueOn(); value; ++value)
+    if (value.isTileValue()) expected.push_back(value.getBoundingBox());
+  forEachActiveTile(tree, [&](const openvdb::CoordBBox& box) { found.push_back(box); });
+  const auto order = [](const openvdb::CoordBBox& a, const openvdb::CoordBBox& b) {
+    return std::make_tuple(a.min().x(), a.min().y(), a.min().z(), a.max().x()) <
+           std::make_tuple(b.min().x(), b.min().y(), b.min().z(), b.max().x());
+  };
+  std::sort(expected.begin(), expected.end(), order);
+  std::sort(found.begin(), found.end(), order);
+  ASSERT_EQ(expected.size(), 3u);
+  EXPECT_EQ(found, expected);
+  // The partition of that scalar field holds the meta-cells of every tile (the root tile made
+  // inactive first: its 2 M meta-cells of 32^3 are not worth a test's time).
+  tree.addTile(3, openvdb::Coord(-4096, 0, 4096), 0.f, false);
+  const MetaCellPartition partition = partitionMetaCells(Volume(VolumeKind::Scalar, grid, {}, "tiles"), 32, 0.5f);
+  EXPECT_LE(partition.cells.size(), 6u * 6 * 6 + 3 * 3 * 3 + 2 * 3 * 3 * 3);  // each box and its neighbours
+  for (const MetaCellIndex cell : {MetaCellIndex{6, 0, 0}, MetaCellIndex{5, 9, 1}, MetaCellIndex{4, 11, 3}})
+    EXPECT_NE(std::find(partition.cells.begin(), partition.cells.end(), cell), partition.cells.end())
+        << cell[0] << "," << cell[1] << "," << cell[2];
 }
 
 TEST(MetaCells, RejectsBadSizes) {
