@@ -125,10 +125,10 @@ contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const E
       result = contour::contourAdaptiveMetaCell(samples, tree, settings, &adaptiveStats, unitCrossings);
     else
       result = contour::contourRegularMetaCell(samples, tree, settings, &regularStats);
-    // The error bound's second look: leaves whose mesh strays beyond it are split and
-    // the block built again (each pass only deepens the tree, so this ends).
     totals.contourSeconds += secondsSince(t0);
     t0 = std::chrono::steady_clock::now();
+    // The error bound's second look: leaves whose mesh strays beyond it are split and
+    // the block built again (each pass only deepens the tree, so this ends).
     std::vector<octree::MortonKey> beyond;
     if (bounded)
       beyond = contour::leavesBeyondErrorBound(samples, tree, result.mesh, cell::dualVertexOptions(settings),

@@ -70,8 +70,8 @@ struct GridStats {
 };
 
 /// A sparse volume: one OpenVDB grid, its kind and its world geometry.
-/// Copies share the grid (shallow) and its stats(); the grid is never modified once a
-/// Volume holds it (code that edits a grid makes a new Volume of it afterwards).
+/// Copies share the grid (shallow) and its stats(); a grid is not modified once a Volume holds
+/// it (an edited grid gets a new Volume) but for SlabBand's band, which keeps its own figures().
 class Volume {
  public:
   Volume() = default;
