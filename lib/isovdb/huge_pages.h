@@ -13,8 +13,10 @@
 /// stage after it slowed by a third, the kernel compacting memory beside it: left out.)
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -43,6 +45,20 @@ void reserveHuge(Container& values, std::size_t count) {
   if (count <= values.capacity()) return;
   values.reserve(count);
   adviseHugePages(values.data(), count * sizeof(typename Container::value_type));
+}
+
+/// Room for `extra` more values at the end of `values` (arrays appended to a cell at a
+/// time): capacity doubled, from 64 KiB (a small grid's arrays never reach a huge page, whose
+/// first touch clears 2 MiB), into new storage advised huge pages before the old values move
+/// in (`vector::reserve` would copy them into 4 KiB pages first).
+template <class Container>
+void growHuge(Container& values, std::size_t extra) {
+  if (values.size() + extra <= values.capacity()) return;
+  using Value = typename Container::value_type;
+  Container grown;
+  reserveHuge(grown, std::max({values.size() + extra, 2 * values.capacity(), (std::size_t{64} << 10) / sizeof(Value)}));
+  grown.insert(grown.end(), std::make_move_iterator(values.begin()), std::make_move_iterator(values.end()));
+  values.swap(grown);
 }
 
 /// `values.resize(count)` (value-initialised) into storage advised huge pages first.

@@ -8,6 +8,8 @@
 
 #include <Eigen/Geometry>
 
+#include <tbb/global_control.h>
+
 #include <cmath>
 #include <numbers>
 
@@ -159,16 +161,28 @@ TEST(HexMarchingCubes, FaultSplitsTheSurfaceIntoOneSheetPerBlock) {
   EXPECT_EQ(mesh::validateMesh(contourBox(box, 4.2).result.mesh).components, 1);
 }
 
-TEST(HexMarchingCubes, OutputDoesNotDependOnRunning) {
-  test::BoxGrid box{.nx = 9, .ny = 9, .nz = 9};
-  box.field = [](const Vector3d& p) { return std::cos(2.1 * p.x()) * std::cos(2.1 * p.y()) + 0.05 * p.z(); };
-  const Built a = contourBox(box, 0.21), b = contourBox(box, 0.21);
-  EXPECT_EQ(a.result.mesh.positions, b.result.mesh.positions);
-  EXPECT_EQ(a.result.mesh.triangles, b.result.mesh.triangles);
-  EXPECT_GT(a.result.ambiguousFaces, 0);
-  const mesh::MeshReport report = mesh::validateMesh(a.result.mesh);
+TEST(HexMarchingCubes, OutputIsTheSameWhateverTheThreadCount) {
+  // 40 x 40 x 12 cells: several blocks of cells, each thread appending to its own arrays,
+  // welded across the blocks' borders and a fault; ambiguous faces on the way.
+  test::BoxGrid box{.nx = 40, .ny = 40, .nz = 12, .faultThrow = 0.5};
+  box.field = [](const Vector3d& p) { return std::cos(0.9 * p.x()) * std::cos(0.9 * p.y()) + 0.05 * p.z(); };
+  const auto contourWith = [&](int threads) {
+    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(threads));
+    return contourBox(box, 0.21);
+  };
+  const Built one = contourWith(1), four = contourWith(4);
+  const mesh::Mesh& m = one.result.mesh;
+  ASSERT_GT(one.grid.cellCount(), 16000u) << "the grid no longer spans several blocks";
+  EXPECT_EQ(m.positions, four.result.mesh.positions);
+  EXPECT_EQ(m.triangles, four.result.mesh.triangles);
+  EXPECT_EQ(m.normals, four.result.mesh.normals);
+  EXPECT_GT(one.result.ambiguousFaces, 0);
+  const mesh::MeshReport report = mesh::validateMesh(m);
   EXPECT_TRUE(report.manifold) << "ambiguous faces decided alike by both cells";
   EXPECT_EQ(report.nonManifoldEdges, 0);
+  EXPECT_EQ(report.degenerateTriangles, 0);
+  std::set<std::array<float, 3>> distinct(m.positions.begin(), m.positions.end());
+  EXPECT_EQ(distinct.size(), m.vertexCount()) << "a vertex made by cells of two blocks was not welded";
 }
 
 TEST(HexMarchingCubes, BinaryIndicatorAtOneHalfHasNoZeroAreaTriangles) {

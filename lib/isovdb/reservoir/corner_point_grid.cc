@@ -94,6 +94,7 @@ CornerPointGrid buildCornerPointGrid(const GrdeclDeck& deck, const GridOptions& 
   for (int K = 0; K <= nz; ++K)
     for (int J = 0; J <= ny; ++J)
       for (int I = 0; I <= nx; ++I) {
+        growHuge(grid.points, 8);  // at most one point per touching cell
         const std::size_t first = grid.points.size();
         std::array<std::pair<std::size_t, std::uint32_t>, 8> touching{};  // (point, cell)
         int count = 0;
