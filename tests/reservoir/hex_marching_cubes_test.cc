@@ -11,6 +11,7 @@
 #include <tbb/global_control.h>
 
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 #include "isovdb/mesh/validate.h"
@@ -159,6 +160,31 @@ TEST(HexMarchingCubes, FaultSplitsTheSurfaceIntoOneSheetPerBlock) {
   // Without the throw the two halves weld into one sheet.
   box.faultThrow = 0;
   EXPECT_EQ(mesh::validateMesh(contourBox(box, 4.2).result.mesh).components, 1);
+}
+
+TEST(HexMarchingCubes, SheetsEndingOnAFaultDoNotCross) {
+  // Folded surfaces on both sides of a fault (a throw of 3 layers): each side's sheets end
+  // on the shared pillar plane along curves that cross each other there. With the vertices
+  // left on the fault faces these two grids had 4 self-intersecting pairs each.
+  struct Case {
+    std::function<double(const Vector3d&)> field;
+    double iso;
+  };
+  const Case cases[] = {
+      {[](const Vector3d& p) { return std::sin(0.8 * p.z() + 0.7 * p.y()) + 0.1 * p.x(); }, 0.0},
+      {[](const Vector3d& p) { return std::cos(p.z() / 2.0 + p.x() / 3) + 0.8 * std::sin(p.y() / 1.7); }, -0.3}};
+  for (const Case& c : cases) {
+    test::BoxGrid box{.nx = 12, .ny = 16, .nz = 16, .faultThrow = 3.0};
+    box.field = c.field;
+    const Built b = contourBox(box, c.iso);
+    const mesh::MeshReport report = mesh::validateMesh(b.result.mesh);
+    std::cout << "sheets at a fault: " << b.result.mesh.triangleCount() << " triangles, " << b.result.faultVertices
+              << " vertices moved off the fault\n";
+    EXPECT_GT(b.result.faultVertices, 0);
+    EXPECT_EQ(report.selfIntersectingPairs, 0) << "iso " << c.iso;
+    EXPECT_TRUE(report.manifold);
+    EXPECT_EQ(report.degenerateTriangles, 0);
+  }
 }
 
 TEST(HexMarchingCubes, OutputIsTheSameWhateverTheThreadCount) {

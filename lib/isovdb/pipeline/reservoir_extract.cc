@@ -73,6 +73,7 @@ mesh::Mesh extractReservoir(const ReservoirOptions& options, Statistics& stats, 
   section["iso"] = options.iso;
   section["cut_cells"] = contour.cutCells;
   section["ambiguous_faces"] = contour.ambiguousFaces;
+  section["fault_vertices_moved"] = contour.faultVertices;
   section["mc_triangles"] = contour.mesh.triangleCount();
   section["mc_vertices"] = contour.mesh.vertexCount();
   // Faults are already in the corner-point geometry (ZCORN); their records are reported.

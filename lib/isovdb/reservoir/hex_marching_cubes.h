@@ -14,7 +14,10 @@
 /// lie on cell edges and are keyed by the edge's two geometric points, so
 /// cells that touch share them (indexed, welded mesh); cells across a fault do not. Triangles face
 /// lower values (the normal points out of the region above the iso-value) in
-/// world space whatever the grid's handedness. Cells run in parallel (TBB);
+/// world space whatever the grid's handedness. Where a face lies on a fault (the cell
+/// across holds other points there), the sheets of both sides end on the same pillar
+/// plane and would cross: the vertices on such faces move a thousandth of the way to their
+/// own cells' centres. Cells run in parallel (TBB);
 /// the output does not depend on the thread count.
 #pragma once
 
@@ -36,6 +39,7 @@ struct HexContourResult {
   mesh::Mesh mesh;                  ///< world (file) coordinates
   std::int64_t cutCells = 0;        ///< usable cells the surface crosses
   std::int64_t ambiguousFaces = 0;  ///< faces resolved by the asymptotic decider (counted per cell)
+  std::int64_t faultVertices = 0;   ///< vertices moved off fault faces into their own side
 };
 
 /// @param interrupter  progress per group of cell blocks ("marching cubes") and cancellation
