@@ -30,7 +30,7 @@ struct ThreadOutput {
   std::vector<Vec3d> gradients;                                    // beside keys (with normals)
   std::vector<std::pair<std::uint64_t, Eigen::Vector3f>> centres;  // centre vertices' positions
   std::vector<std::array<std::uint32_t, 3>> triangles;             // into keys, from its block's first
-  std::vector<std::pair<std::uint64_t, Vec3d>> faultSides;         // crossings on fault faces (faultFaces)
+  std::vector<std::pair<std::uint64_t, Vec3d>> faultSides;  // crossings on fault faces (onFault), each with its side
 };
 
 /// What a block of consecutive cells made: where it lies in its thread's arrays.
