@@ -2,6 +2,8 @@
 // Copyright Contributors to the isovdb project.
 #include "isovdb/reservoir/corner_point_grid.h"
 
+#include <tbb/parallel_for.h>
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -45,7 +47,7 @@ double cornerJacobian(const std::array<Vec3d, 8>& p, int c) {
 }  // namespace
 
 CornerPointGrid buildCornerPointGrid(const GrdeclDeck& deck, const GridOptions& options) {
-  const auto [nx, ny, nz] = deck.dims;
+  const int nx = deck.dims[0], ny = deck.dims[1], nz = deck.dims[2];  // (lambdas cannot capture bindings)
   if (nx <= 0 || ny <= 0 || nz <= 0)
     throw InputError(deck.path.string() + ": no SPECGRID (or DIMENS) keyword: the grid size is unknown");
   const std::size_t cells = static_cast<std::size_t>(nx) * ny * nz;
@@ -63,7 +65,7 @@ CornerPointGrid buildCornerPointGrid(const GrdeclDeck& deck, const GridOptions& 
   grid.warnings = deck.warnings;
   resizeHuge(grid.corners, cells);
   resizeHuge(grid.active, cells);
-  for (int k = 0; k < nz; ++k)
+  tbb::parallel_for(0, nz, [&](int k) {  // layers of cells in parallel: each cell is written once
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i) {
         const std::size_t cell = grid.cellIndex(i, j, k);
@@ -79,6 +81,7 @@ CornerPointGrid buildCornerPointGrid(const GrdeclDeck& deck, const GridOptions& 
           grid.corners[cell][c] = Vec3d(top.x() + t * (bottom.x() - top.x()), top.y() + t * (bottom.y() - top.y()), z);
         }
       }
+  });
 
   // Tolerance from the bounding box.
   Vec3d lo = Vec3d::Constant(std::numeric_limits<double>::max()), hi = -lo;
@@ -89,13 +92,21 @@ CornerPointGrid buildCornerPointGrid(const GrdeclDeck& deck, const GridOptions& 
     }
   const double tolerance = std::max(1e-12, options.relativeTolerance * (hi - lo).norm());
 
-  // Points: the corners around each grid node, grouped by position (node order: deterministic ids).
+  // Points: the corners around each grid node, grouped by position (node order: deterministic
+  // ids). Each layer of nodes is grouped on its own, in parallel, its points numbered from 0;
+  // the layers are then numbered in order, so the ids are those of one pass in node order.
+  struct NodeLayer {
+    std::vector<Vec3d> points;
+    std::vector<std::uint32_t> cellCounts;  // per point: how many cells share it
+    std::vector<std::uint32_t> cells;       // each point's cells, point after point
+  };
+  std::vector<NodeLayer> layers(static_cast<std::size_t>(nz) + 1);
   resizeHuge(grid.pointIds, cells);
-  for (int K = 0; K <= nz; ++K)
+  tbb::parallel_for(0, nz + 1, [&](int K) {
+    NodeLayer& layer = layers[static_cast<std::size_t>(K)];
     for (int J = 0; J <= ny; ++J)
       for (int I = 0; I <= nx; ++I) {
-        growHuge(grid.points, 8);  // at most one point per touching cell
-        const std::size_t first = grid.points.size();
+        const std::size_t first = layer.points.size();
         std::array<std::pair<std::size_t, std::uint32_t>, 8> touching{};  // (point, cell)
         int count = 0;
         for (int c = 7; c >= 0; --c) {  // cell (I-ix, J-iy, K-iz) touches the node with its corner c
@@ -104,19 +115,46 @@ CornerPointGrid buildCornerPointGrid(const GrdeclDeck& deck, const GridOptions& 
           const std::size_t cell = grid.cellIndex(i, j, k);
           const Vec3d& p = grid.corners[cell][c];
           std::size_t id = first;
-          while (id < grid.points.size() && (grid.points[id] - p).norm() > tolerance) ++id;
-          if (id == grid.points.size()) grid.points.push_back(p);
-          grid.pointIds[cell][c] = static_cast<std::uint32_t>(id);
+          while (id < layer.points.size() && (layer.points[id] - p).norm() > tolerance) ++id;
+          if (id == layer.points.size()) layer.points.push_back(p);
+          grid.pointIds[cell][c] = static_cast<std::uint32_t>(id);  // within the layer, for now
           touching[static_cast<std::size_t>(count++)] = {id, static_cast<std::uint32_t>(cell)};
         }
         // This node's points are the newest: their cells go last, each point's in corner order.
-        for (std::size_t id = first; id < grid.points.size(); ++id) {
+        for (std::size_t id = first; id < layer.points.size(); ++id) {
+          std::uint32_t shared = 0;
           for (int n = 0; n < count; ++n)
-            if (touching[static_cast<std::size_t>(n)].first == id)
-              grid.pointCells.push_back(touching[static_cast<std::size_t>(n)].second);
-          grid.pointCellStart.push_back(static_cast<std::uint32_t>(grid.pointCells.size()));
+            if (touching[static_cast<std::size_t>(n)].first == id) {
+              layer.cells.push_back(touching[static_cast<std::size_t>(n)].second);
+              ++shared;
+            }
+          layer.cellCounts.push_back(shared);
         }
       }
+  });
+  std::vector<std::size_t> layerFirst(layers.size() + 1, 0);
+  std::size_t pointCells = 0;
+  for (std::size_t K = 0; K < layers.size(); ++K) {
+    layerFirst[K + 1] = layerFirst[K] + layers[K].points.size();
+    pointCells += layers[K].cells.size();
+  }
+  if (layerFirst.back() >= std::numeric_limits<std::uint32_t>::max())
+    throw InputError(deck.path.string() + ": more than 2^32 corner points");
+  tbb::parallel_for(0, nz, [&](int k) {
+    for (std::size_t cell = grid.cellIndex(0, 0, k); cell < grid.cellIndex(0, 0, k + 1); ++cell)
+      for (int c = 0; c < 8; ++c)
+        grid.pointIds[cell][c] += static_cast<std::uint32_t>(layerFirst[static_cast<std::size_t>(k + (c >> 2))]);
+  });
+  reserveHuge(grid.points, layerFirst.back());
+  reserveHuge(grid.pointCells, pointCells);
+  grid.pointCellStart.reserve(layerFirst.back() + 1);
+  for (NodeLayer& layer : layers) {
+    grid.points.insert(grid.points.end(), layer.points.begin(), layer.points.end());
+    grid.pointCells.insert(grid.pointCells.end(), layer.cells.begin(), layer.cells.end());
+    for (const std::uint32_t shared : layer.cellCounts)
+      grid.pointCellStart.push_back(grid.pointCellStart.back() + shared);
+    layer = NodeLayer{};  // its memory serves the next layer's copy
+  }
 
   // Orientation and inverted cells.
   std::vector<double> minDet, maxDet;
