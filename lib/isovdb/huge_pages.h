@@ -2,15 +2,15 @@
 // Copyright Contributors to the isovdb project.
 /// @file huge_pages.h
 /// @brief Large arrays backed by transparent huge pages (Linux), for the stages that
-///        build whole-grid arrays at once (the reservoir reader and grid).
+///        build whole-grid arrays at once (the reservoir reader, grid and marching cubes).
 ///
 /// The first touch of fresh memory costs a page fault per 4 KiB page, and on a virtual
 /// machine each fault is expensive: on a 1.5 M-cell deck (119 MB of text, 288 MB of
 /// corners) reading took 3.0 s and the grid 2.2 s, mostly in faults; with 2 MiB pages
 /// 1.0 s and 1.1 s. Debian's default THP mode is "madvise": a region must ask. The
 /// request is advice only: nothing changes where the kernel or the build has no THP.
-/// (Asked for the grid's per-point arrays too, the grid took 0.5 s but the Marching Cubes
-/// stage after it slowed by a third, the kernel compacting memory beside it: left out.)
+/// (The grid's per-point arrays once slowed the Marching Cubes stage after them by a third;
+/// filled layer by layer into arrays reserved at their final size, they no longer do.)
 #pragma once
 
 #include <algorithm>
