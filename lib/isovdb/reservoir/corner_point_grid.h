@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <span>
 #include <vector>
@@ -64,6 +65,16 @@ struct CornerField {
   std::vector<std::string> warnings;
   double value(const CornerPointGrid& grid, std::size_t cell, int corner) const {
     return pointValues[grid.pointIds[cell][corner]];
+  }
+  /// The usable cell across the face of cell `ijk` on `axis` (`side` 1: the face towards
+  /// +axis, 0: towards -axis); nothing at the grid's border or where that cell is not usable.
+  std::optional<std::size_t> usableNeighbour(const CornerPointGrid& grid, std::array<int, 3> ijk, int axis,
+                                             int side) const {
+    ijk[axis] += side ? 1 : -1;
+    if (ijk[axis] < 0 || ijk[axis] >= grid.dims[axis]) return std::nullopt;
+    const std::size_t neighbour = grid.cellIndex(ijk[0], ijk[1], ijk[2]);
+    if (!usable[neighbour]) return std::nullopt;
+    return neighbour;
   }
 };
 

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <optional>
 
 #include "isovdb/huge_pages.h"
 #include "isovdb/reservoir/jacobian_normals.h"
@@ -84,14 +85,10 @@ bool collapsed(const CornerPointGrid& grid, std::size_t cell) {
 /// shares stays: its vertex is the neighbour's too.
 bool onFault(const CornerPointGrid& grid, const CornerField& field, std::size_t cell, const std::array<int, 3>& ijk,
              int a, int b, int axis) {
-  const int side = (a >> axis) & 1;
-  std::array<int, 3> n = ijk;
-  n[axis] += side ? 1 : -1;
-  if (n[axis] < 0 || n[axis] >= grid.dims[axis]) return false;
-  const std::size_t neighbour = grid.cellIndex(n[0], n[1], n[2]);
-  if (!field.usable[neighbour]) return false;
+  const std::optional<std::size_t> neighbour = field.usableNeighbour(grid, ijk, axis, (a >> axis) & 1);
+  if (!neighbour) return false;
   const auto& ids = grid.pointIds[cell];
-  const auto& across = grid.pointIds[neighbour];
+  const auto& across = grid.pointIds[*neighbour];
   return across[a ^ (1 << axis)] != ids[a] || across[b ^ (1 << axis)] != ids[b];
 }
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace isovdb::reservoir {
 
@@ -24,16 +25,11 @@ Vec3d cornerGradient(const CornerPointGrid& grid, const CornerField& field, std:
     largest = std::max(largest, jacobian[a].cwiseAbs().maxCoeff());
     const double near = field.pointValues[ids[other]];
     double derivative = sign * (v - near);
-    // The neighbour cell along this axis on the side of the corner.
-    std::array<int, 3> n = ijk;
-    n[a] += bit ? 1 : -1;
-    if (n[a] >= 0 && n[a] < grid.dims[a]) {
-      const std::size_t neighbour = grid.cellIndex(n[0], n[1], n[2]);
-      if (field.usable[neighbour]) {
-        // Its corner with the same bits lies one cell further along the axis.
-        const double far = field.value(grid, neighbour, corner);
-        if (std::isfinite(far)) derivative = 0.5 * sign * (far - near);
-      }
+    // The neighbour cell along this axis on the side of the corner: its corner with the
+    // same bits lies one cell further along the axis.
+    if (const std::optional<std::size_t> neighbour = field.usableNeighbour(grid, ijk, a, bit)) {
+      const double far = field.value(grid, *neighbour, corner);
+      if (std::isfinite(far)) derivative = 0.5 * sign * (far - near);
     }
     gradientU[a] = derivative;
   }
