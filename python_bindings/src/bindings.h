@@ -52,5 +52,8 @@ void bindMesh(py::module_& m);       // mesh_bindings.cc: Mesh, read_mesh
 void bindExtract(py::module_& m);    // extract_bindings.cc: extract
 void bindMorph(py::module_& m);      // morph_bindings.cc: morph_slices
 void bindReservoir(py::module_& m);  // reservoir_bindings.cc: extract_reservoir
+/// Wraps every public function so that a wrong keyword or argument type is named in
+/// Python terms (argument_errors.cc); called last, once the module holds them all.
+void nameWrongArguments(py::module_& m);
 
 }  // namespace isovdb::python

@@ -48,4 +48,5 @@ PYBIND11_MODULE(isovdb, m) {
   isovdb::python::bindExtract(m);
   isovdb::python::bindMorph(m);
   isovdb::python::bindReservoir(m);
+  isovdb::python::nameWrongArguments(m);
 }

@@ -132,6 +132,39 @@ def test_an_unknown_keyword_raises_type_error(small_ball):
         isovdb.distance_field(small_ball, chunk_size=16)
 
 
+def test_an_unknown_keyword_names_itself_the_closest_and_every_accepted_one(small_ball):
+    with pytest.raises(TypeError) as raised:
+        isovdb.extract(small_ball, levle=3)
+    message = str(raised.value)
+    assert "unexpected keyword argument 'levle' (did you mean 'level'?)" in message
+    assert all(keyword in message for keyword in inspect.signature(isovdb.extract).parameters)
+    # pybind11 functions: their keywords come from the signature line of their docstring.
+    with pytest.raises(TypeError, match=r"'prop' \(did you mean 'property'\?\); its keywords are: grid, property, iso"):
+        isovdb.extract_reservoir("deck.grdecl", prop="PORO", iso=0.2)
+    with pytest.raises(TypeError, match="'dimz' \\(did you mean 'dims'\\?\\)"):
+        isovdb.read_volume("volume.raw", dimz=(2, 2, 2))
+
+
+def test_an_argument_of_the_wrong_type_is_named_by_its_type_not_printed():
+    # pybind11's own message printed the whole array ("Invoked with: array([[[...").
+    array = np.zeros((40, 40, 40), bool)
+    with pytest.raises(TypeError) as raised:
+        isovdb.euler_characteristic(array)
+    message = str(raised.value)
+    assert "called with (numpy.ndarray)" in message and "volume: isovdb.Volume" in message
+    assert "False" not in message and len(message) < 300
+    with pytest.raises(TypeError, match=r"read_mesh\(\): an argument has the wrong type: called with \(int\)"):
+        isovdb.read_mesh(3)
+
+
+def test_wrapped_functions_keep_their_name_documentation_and_pickle_by_name():
+    import pickle
+    for name in ("extract", "read_volume", "euler_characteristic", "extract_reservoir"):
+        function = getattr(isovdb, name)
+        assert function.__name__ == name and function.__doc__ and function.__doc__ == function.__wrapped__.__doc__
+        assert pickle.loads(pickle.dumps(function)) is function
+
+
 def test_none_keeps_the_default(small_ball):
     plain = isovdb.extract(small_ball, meta_cell=16)
     defaulted = isovdb.extract(small_ball, meta_cell=16, threads=None, qef_tolerance=None, method=None)
