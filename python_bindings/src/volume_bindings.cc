@@ -451,8 +451,9 @@ progress: callable(stage: str, percent: int) called as the reading advances; if 
 Raises OSError for a missing or unreadable file, ValueError for a bad header, bad data or
 contradicting keywords (the message names the file and the problem).)doc");
 
-  m.def("euler_characteristic", &eulerCharacteristic, py::arg("volume"), py::arg("adjacency") = 26,
-        py::arg("progress") = py::none(), R"doc(
+  m.def("_euler_characteristic", &eulerCharacteristic, py::arg("volume"), py::arg("adjacency") = 26,
+        py::arg("progress") = py::none(), "euler_characteristic()'s implementation, on a Volume.");
+  const char* eulerDoc = R"doc(
 Euler characteristic of the solid a mask (or a distance field's interior, < 0) describes:
 the union of its voxels' closed cubes, components - tunnels + cavities (`isovdb check
 --against`). A closed mesh of its boundary should have twice this value:
@@ -461,7 +462,9 @@ mesh.check()["euler_characteristic"] == 2 * euler_characteristic(volume).
 adjacency: 26 (inside voxels touching at a face, edge or corner are connected) or 6 (faces
 only; the reading regular contouring follows, except that each pair of cells regrouped by
 Wenger's manifold fix changes the mesh's value by 2).
-Raises ValueError for a scalar field or another adjacency.)doc");
+volume: a Volume, a numpy array (with spacing, origin, kind and threshold as from_numpy()
+takes them) or a pyopenvdb grid, as extract() takes it.
+Raises ValueError for a scalar field or another adjacency.)doc";
 
   m.def("_distance_field", &distanceField, py::arg("volume"), py::arg("settings"), py::kw_only(), py::arg("progress"),
         py::arg("output"), py::arg("grid_name"),
@@ -499,6 +502,13 @@ Raises ValueError for a scalar field or another adjacency.)doc");
                              str(error).replace("'" + path + "'", "the grid")) from None
 
 
+def euler_characteristic(volume, adjacency=26, progress=None, *, spacing=None, origin=None, kind=None,
+                         threshold=None):
+    volume = _as_volume(volume, "euler_characteristic", spacing=spacing, origin=origin, kind=kind,
+                        threshold=threshold)
+    return _euler_characteristic(volume, adjacency, progress)
+
+
 def _as_volume(volume, caller, **array_keywords):
     given = {name: value for name, value in array_keywords.items() if value is not None}
     is_grid = hasattr(volume, "gridClass") and hasattr(volume, "copyToArray")
@@ -513,6 +523,7 @@ def _as_volume(volume, caller, **array_keywords):
     return from_numpy(volume, **given)
 )py",
            m.attr("__dict__"));
+  m.attr("euler_characteristic").attr("__doc__") = eulerDoc;
   m.attr("from_openvdb").attr("__module__") = m.attr("__name__");
   m.attr("from_openvdb").attr("__doc__") = R"doc(
 Makes a Volume from a pyopenvdb grid (Debian's python3-openvdb): a level set (GridClass

@@ -117,6 +117,8 @@ def test_regular_topology_follows_the_voxels_of_a_mask():
     voxels[1:-1, 1:-1, 1:-1] = rng.random((18, 18, 18)) < 0.35
     mask = isovdb.from_numpy(voxels)
     solid = isovdb.euler_characteristic(mask)
+    assert isovdb.euler_characteristic(voxels) == solid  # an array, as extract() takes it
+    assert isovdb.euler_characteristic(voxels.astype(np.float32), threshold=0.5) == solid
     meshes = {t: isovdb.extract(mask, method="regular", topology=t) for t in ("auto", "voxels", "mdmc")}
     for topology, mesh in meshes.items():
         report = mesh.check(self_intersections=False)
