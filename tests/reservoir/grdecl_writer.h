@@ -22,6 +22,7 @@ struct BoxGrid {
   bool mirrorX = false;                                      ///< x = origin - i*cell: a left-handed grid
   std::function<double(const Eigen::Vector3d&)> field = {};  ///< property at the cell centres
   std::function<bool(int, int, int)> active = {};            ///< empty: all active
+  std::function<double(int, int)> pillarShift = {};          ///< z added to every node of pillar (i, j): twisted faces
 };
 
 /// World position of node (i, j, k) of the cell column i (fault throw applied by column).
