@@ -31,18 +31,20 @@ using hex::ThreadOutput;
 constexpr std::size_t kBlockCells = 4096;
 
 /// A crossing on a fault face moved into its own side (`side`: the sum of its cells' vectors
-/// from the face's centre to the cell's) by a thousandth of that, and at least 16 float
+/// from the face's centre to the cell's) by a hundredth of that, and at least 16 float
 /// steps of its largest coordinate, so that the move shows in the float positions. The
-/// faces on the two sides of a fault are different bilinear patches, rarely one plane, so
-/// some pairs remain (Reek PORO 0.2: 23 -> 11); a hundredth left 4 there but folded
-/// Emerald's FACIES 0.5 (1 -> 17 pairs), whose vertices sit a thousandth of an edge from
-/// corners at the iso-value.
+/// faces on the two sides of a fault are different bilinear patches, rarely one plane.
+/// A hundredth once folded Emerald's FACIES 0.5 (1 -> 17 pairs: its vertices sit a
+/// thousandth of an edge from corners at the iso-value) and a thousandth was used; with
+/// fans chosen by their depth in the cell (hex_cell_contour.cc) it no longer folds, and
+/// self-intersecting pairs over nine iso-values on Reek and six on Emerald are 89 with a
+/// thousandth, 62 with three thousandths, 57 with a hundredth (Reek PORO 0.2: 7 -> 0).
 Eigen::Vector3f offFault(const Eigen::Vector3f& position, const Vec3d& side) {
   const double length = side.norm();
   if (!(length > 0)) return position;
   const float largest = position.cwiseAbs().maxCoeff();
   const double ulp = std::bit_cast<float>(std::bit_cast<std::uint32_t>(largest) + 1) - largest;
-  const double step = std::min(std::max(1e-3 * length, 16.0 * ulp), 0.05 * length);
+  const double step = std::min(std::max(1e-2 * length, 16.0 * ulp), 0.05 * length);
   return (position.cast<double>() + step / length * side).cast<float>();
 }
 

@@ -16,7 +16,7 @@
 /// lower values (the normal points out of the region above the iso-value) in
 /// world space whatever the grid's handedness. Where a face lies on a fault (the cell
 /// across holds other points there), the sheets of both sides end on the same pillar
-/// plane and would cross: the vertices on such faces move a thousandth of the way to their
+/// plane and would cross: the vertices on such faces move a hundredth of the way to their
 /// own cells' centres. Cells run in parallel (TBB);
 /// the output does not depend on the thread count.
 #pragma once
