@@ -62,7 +62,7 @@ progress: callable(stage: str, percent: int) per stage (read grdecl, corner-poin
   (Ctrl-C too).
 
 Returns a Mesh in the grid's coordinates with normals; mesh.statistics holds the figures
-(cells, active and inverted cells, handedness, triangles before and after tessellation,
+(cells, active, inverted and pinched cells, handedness, triangles before and after tessellation,
 warnings, timings). Raises OSError for a missing file and ValueError for a bad deck (the
 message names the file and the line).)doc");
 }

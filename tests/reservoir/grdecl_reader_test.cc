@@ -229,17 +229,30 @@ TEST(GrdeclReader, NanValues) {
   EXPECT_TRUE(std::isnan(field.value(grid, 0, 0)));
 }
 
-TEST(GrdeclReader, InvertedCellIsReported) {
+/// kTiny's two cells with other ZCORN values (order: i fastest, bottom then top).
+CornerPointGrid tinyGridWithZcorn(const std::string& zcorn) {
   TempDir dir;
   std::string deck = kTiny;
-  // Cell 0: bottom above top at its left corners (ZCORN order: i fastest).
-  deck.replace(deck.find("8*0 8*1"), 7, "2 0 0 0 2 0 0 0 8*1");
-  writeFile(dir / "inv.grdecl", deck);
-  const CornerPointGrid grid = buildCornerPointGrid(readGrdecl(dir / "inv.grdecl"));
+  deck.replace(deck.find("8*0 8*1"), 7, zcorn);
+  writeFile(dir / "tiny.grdecl", deck);
+  return buildCornerPointGrid(readGrdecl(dir / "tiny.grdecl"));
+}
+
+TEST(GrdeclReader, InvertedCellIsReported) {
+  // Cell 0: bottom above top at its left corners.
+  const CornerPointGrid grid = tinyGridWithZcorn("2 0 0 0 2 0 0 0 8*1");
   EXPECT_EQ(grid.invertedCells, 1);
   ASSERT_FALSE(grid.warnings.empty());
   EXPECT_NE(grid.warnings.back().find("inverted"), std::string::npos);
   EXPECT_NE(grid.warnings.back().find("(1,1,1)"), std::string::npos) << grid.warnings.back();
+}
+
+TEST(GrdeclReader, PinchedCellIsCountedNotInverted) {
+  // Cell 0's top meets its bottom at one corner (a pinch-out): a zero Jacobian there.
+  const CornerPointGrid grid = tinyGridWithZcorn("8*0 0 7*1");
+  EXPECT_EQ(grid.pinchedCells, 1);
+  EXPECT_EQ(grid.invertedCells, 0);
+  EXPECT_EQ(tinyGridWithZcorn("8*0 8*1").pinchedCells, 0);
 }
 
 TEST(GrdeclReader, MissingFileAndMissingSpecgrid) {

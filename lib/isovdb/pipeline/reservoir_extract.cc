@@ -68,6 +68,7 @@ mesh::Mesh extractReservoir(const ReservoirOptions& options, Statistics& stats, 
   section["active_cells"] = grid.activeCells;
   section["usable_cells"] = std::count(field.usable.begin(), field.usable.end(), 1);
   section["inverted_cells"] = grid.invertedCells;
+  section["pinched_cells"] = grid.pinchedCells;
   section["handedness"] = grid.orientation > 0 ? "positive Jacobian" : "negative Jacobian";
   section["property"] = options.property;
   section["iso"] = options.iso;

@@ -164,15 +164,19 @@ CornerPointGrid buildCornerPointGrid(const GrdeclDeck& deck, const GridOptions& 
   for (std::size_t cell = 0; cell < cells; ++cell) {
     if (!grid.active[cell]) continue;
     ++grid.activeCells;
-    double lo = std::numeric_limits<double>::max(), hi = -lo;
+    double lo = std::numeric_limits<double>::max(), hi = -lo, smallest = lo;
     for (int c = 0; c < 8; ++c) {
       const double d = cornerJacobian(grid.corners[cell], c);
       lo = std::min(lo, d);
       hi = std::max(hi, d);
+      smallest = std::min(smallest, std::abs(d));
       sum += d;
     }
     minDet[cell] = lo;
     maxDet[cell] = hi;
+    // A pinch-out: the cell's thickness (or another extent) is zero at some corners only.
+    const double scale = std::max(std::abs(lo), std::abs(hi));
+    grid.pinchedCells += scale > 0 && smallest <= 1e-9 * scale;
   }
   grid.orientation = sum < 0 ? -1 : 1;
   std::size_t firstInverted = cells;

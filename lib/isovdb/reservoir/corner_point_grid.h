@@ -38,6 +38,7 @@ struct CornerPointGrid {
   std::vector<std::uint32_t> pointCells;
   int orientation = 1;             ///< sign of the Jacobian of most active cells (-1: left-handed grid)
   std::int64_t invertedCells = 0;  ///< active cells whose Jacobian has the other sign at some corner
+  std::int64_t pinchedCells = 0;   ///< active cells whose Jacobian is zero at some corners, not all (pinch-outs)
   std::int64_t activeCells = 0;
   std::vector<std::string> warnings;
 

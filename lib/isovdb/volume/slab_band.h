@@ -57,9 +57,6 @@ class SlabBand {
   void read(const MetaCellIndex& index, cell::MetaCellSamples& out) const;
 
   Figures figures() const;
-  /// The band held now, as a distance field volume (only the current layers' leaves): its
-  /// grid changes as layers pass, so its stats() would be stale; figures() are kept.
-  const Volume& held() const { return held_; }
 
  private:
   void dropBelow(int z);
