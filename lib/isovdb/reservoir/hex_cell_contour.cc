@@ -25,8 +25,9 @@ constexpr double kMaxCornerOffset = 0.02;
 
 /// A fan whose diagonals come nearer a face of the cell than this fraction of the cell's
 /// extent across it (or leave the cell) gives way to a centre vertex that stays deeper.
-/// Measured on Reek (PORO 0.1-0.3, 9 iso-values) and Emerald (PORO, FACIES), self-intersecting
-/// pairs / triangles against the first fan apex in loop order: only fans chosen by depth
+/// Measured on Reek (PORO 0.1-0.3, 9 iso-values) and Emerald (PORO, FACIES), with the fault
+/// move (hex_marching_cubes.cc) at a thousandth then, self-intersecting pairs / triangles
+/// against the first fan apex in loop order: only fans chosen by depth
 /// 192 -> 122 / +0.0 %; centres where a diagonal leaves the cell (0) 91 / +0.9 %; 0.1: 89 /
 /// +5.3 %; 0.15: 86 / +6.5 %. On thin layers with 3 m twists (FansStayInsideThinTwistedCells'
 /// grids, 10 seeds) 0.1 left 37 pairs where 0 left 73 and the first apex 137.
