@@ -12,6 +12,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-numpy python3-pytest python3-openvdb python3-segyio
   python3-dev pybind11-dev python3-matplotlib python3-nbformat python3-nbclient python3-ipykernel
+  python3-vtk9  # the interop tests: Mesh.to_vtk(), GLB files through VTK's glTF reader
 )
 # CI's sanitizer job (ISOVDB_SANITIZE=1): Clang with libFuzzer for fuzz/.
 [ "${ISOVDB_SANITIZE:-0}" = 1 ] && packages+=(clang-14 libfuzzer-14-dev)
