@@ -194,10 +194,13 @@ TEST(HexMarchingCubes, SheetsEndingOnAFaultDoNotCross) {
 /// porosity's iso-surfaces are stacked sheets a layer or two apart.
 test::BoxGrid twistedLayers(std::uint64_t seed, double twist) {
   test::BoxGrid box{.nx = 16, .ny = 16, .nz = 10, .cell = 100.0, .layer = 3.0};
+  const int pillarsAlongX = box.nx + 1, pillars = pillarsAlongX * (box.ny + 1);
   std::vector<double> shifts;
   SplitMix64 random(seed);
-  for (int n = 0; n < 17 * 17; ++n) shifts.push_back(twist * (2 * random.uniform() - 1));
-  box.pillarShift = [shifts](int i, int j) { return shifts[static_cast<std::size_t>(j * 17 + i)]; };
+  for (int n = 0; n < pillars; ++n) shifts.push_back(twist * (2 * random.uniform() - 1));
+  box.pillarShift = [shifts, pillarsAlongX](int i, int j) {
+    return shifts[static_cast<std::size_t>(j * pillarsAlongX + i)];
+  };
   box.field = [seed](const Vector3d& p) {
     SplitMix64 noise(seed ^ static_cast<std::uint64_t>(std::llround(p.x()) * 1000003 + std::llround(p.y()) * 1009 +
                                                        std::llround(p.z() * 10)));

@@ -185,10 +185,14 @@ EdgeCrossing crossEdge(const CornerPointGrid& grid, const CornerField& field, do
   return crossing;
 }
 
-Eigen::Vector3f crossingPosition(const CornerPointGrid& grid, const EdgeCrossing& crossing) {
+Vec3d crossingPoint(const CornerPointGrid& grid, const EdgeCrossing& crossing) {
   const Vec3d& pa = grid.points[crossing.from];
   const Vec3d& pb = grid.points[crossing.to];
-  return (pa + crossing.t * (pb - pa)).cast<float>();
+  return pa + crossing.t * (pb - pa);
+}
+
+Eigen::Vector3f crossingPosition(const CornerPointGrid& grid, const EdgeCrossing& crossing) {
+  return crossingPoint(grid, crossing).cast<float>();
 }
 
 void contourCell(const CornerPointGrid& grid, const CornerField& field, std::size_t cell, const std::array<int, 3>& ijk,
@@ -345,7 +349,7 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
         const int a = edgeCorners[edges[i]][0], b = edgeCorners[edges[i]][1];
         const double t = ids[a] == crossing.from ? crossing.t : 1 - crossing.t;
         param[i] = cornerParameters(a) + t * (cornerParameters(b) - cornerParameters(a));
-        at[i] = grid.points[crossing.from] + crossing.t * (grid.points[crossing.to] - grid.points[crossing.from]);
+        at[i] = crossingPoint(grid, crossing);
       }
     int apex = -1;
     double apexDepth = -std::numeric_limits<double>::infinity();

@@ -71,6 +71,8 @@ struct EdgeCrossing {
 /// The crossing on the edge between points `a` and `b` (any order) at `iso`.
 EdgeCrossing crossEdge(const CornerPointGrid& grid, const CornerField& field, double iso, std::uint32_t a,
                        std::uint32_t b);
+/// Where the crossing lies: in double precision (fan choices), and as the mesh's float.
+Vec3d crossingPoint(const CornerPointGrid& grid, const EdgeCrossing& crossing);
 Eigen::Vector3f crossingPosition(const CornerPointGrid& grid, const EdgeCrossing& crossing);
 
 /// Contours usable cell `cell` at grid indices `ijk`, appending its records to `out` and
