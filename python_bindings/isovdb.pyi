@@ -73,7 +73,8 @@ def read_volume(path: PathLike, *, dims: Sequence[int] | None = None, dtype: npt
                 threshold: float | None = None, labels: Sequence[float] | None = None, mask: str | None = None,
                 mask_range: tuple[float, float] | None = None, clip: float = 0.0, inline_byte: int = 189,
                 crossline_byte: int = 193, scalar: bool = False, grid: str = "", segy: bool = False,
-                sample_statistics: bool = False, progress: Progress = None) -> Volume: ...
+                sample_statistics: bool = False, progress: Progress = None,
+                window: tuple[int, int] | None = None) -> Volume: ...
 def read_segy(path: PathLike, *, clip: float = 0.0, mask: str | None = None,
               mask_range: tuple[float, float] | None = None, threshold: float | None = None,
               inline_byte: int = 189, crossline_byte: int = 193, sample_statistics: bool = True,

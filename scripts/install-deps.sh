@@ -13,6 +13,7 @@ packages=(
   python3 python3-numpy python3-pytest python3-openvdb python3-segyio
   python3-dev pybind11-dev python3-matplotlib python3-nbformat python3-nbclient python3-ipykernel
   python3-vtk9  # the interop tests: Mesh.to_vtk(), GLB files through VTK's glTF reader
+  python3-distributed python3-zarr  # isovdb.distributed: Dask clusters, chunked volumes
 )
 # CI's sanitizer job (ISOVDB_SANITIZE=1): Clang with libFuzzer for fuzz/.
 [ "${ISOVDB_SANITIZE:-0}" = 1 ] && packages+=(clang-14 libfuzzer-14-dev)

@@ -46,12 +46,13 @@ py::tuple toTuple(const std::array<T, 3>& v) {
 /// A float, or a sequence of three, as three floats (`name` is used in messages).
 std::array<double, 3> threeDoubles(const py::object& value, const char* name);
 
-void bindVolume(py::module_& m);     // volume_bindings.cc: Volume, from_numpy, read_volume, distance_field
-void bindSeismic(py::module_& m);    // seismic_bindings.cc: read_segy
-void bindMesh(py::module_& m);       // mesh_bindings.cc: Mesh, read_mesh
-void bindExtract(py::module_& m);    // extract_bindings.cc: extract
-void bindMorph(py::module_& m);      // morph_bindings.cc: morph_slices
-void bindReservoir(py::module_& m);  // reservoir_bindings.cc: extract_reservoir
+void bindVolume(py::module_& m);       // volume_bindings.cc: Volume, from_numpy, read_volume, distance_field
+void bindSeismic(py::module_& m);      // seismic_bindings.cc: read_segy
+void bindMesh(py::module_& m);         // mesh_bindings.cc: Mesh, read_mesh
+void bindExtract(py::module_& m);      // extract_bindings.cc: extract
+void bindMorph(py::module_& m);        // morph_bindings.cc: morph_slices
+void bindReservoir(py::module_& m);    // reservoir_bindings.cc: extract_reservoir
+void bindDistributed(py::module_& m);  // distributed_bindings.cc: the tasks and client of isovdb.distributed
 /// Wraps every public function so that a wrong keyword or argument type is named in
 /// Python terms (argument_errors.cc); called last, once the module holds them all.
 void nameWrongArguments(py::module_& m);

@@ -1,7 +1,11 @@
 // SPDX-License-Identifier: MPL-2.0
 // Copyright Contributors to the isovdb project.
 // The `isovdb` Python module: exceptions, then one registration per topic.
+#include <dlfcn.h>
 #include <pybind11/pybind11.h>
+
+#include <filesystem>
+#include <string>
 
 #include "bindings.h"
 #include "setting_keywords.h"
@@ -9,6 +13,19 @@
 #include "isovdb/pipeline/memory.h"
 
 namespace py = pybind11;
+
+namespace {
+
+/// The folder of the module's pure-Python submodules (isovdb.distributed): isovdb-modules/
+/// beside the extension's own file, found from this code's address (the module's
+/// __file__ is set only after its initialisation).
+std::string submoduleFolder() {
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<const void*>(&submoduleFolder), &info) == 0 || !info.dli_fname) return {};
+  return (std::filesystem::path(info.dli_fname).parent_path() / "isovdb-modules").string();
+}
+
+}  // namespace
 
 PYBIND11_MODULE(isovdb, m) {
   isovdb::pipeline::keepFreedHeapMemory();
@@ -23,6 +40,10 @@ PYBIND11_MODULE(isovdb, m) {
       "Errors: bad input raises ValueError, an unreadable or unwritable file OSError,\n"
       "both with the library's one-line message naming the file and the problem.";
   m.attr("__version__") = "0.1.0";
+  // A package's search path: `import isovdb.distributed` finds distributed.py there.
+  py::list path;
+  path.append(submoduleFolder());
+  m.attr("__path__") = path;
 
   static py::exception<isovdb::Interrupted> interrupted(m, "Interrupted", PyExc_RuntimeError);
   interrupted.doc() = "Long work was cancelled through its progress callback.";
@@ -48,5 +69,6 @@ PYBIND11_MODULE(isovdb, m) {
   isovdb::python::bindExtract(m);
   isovdb::python::bindMorph(m);
   isovdb::python::bindReservoir(m);
+  isovdb::python::bindDistributed(m);
   isovdb::python::nameWrongArguments(m);
 }

@@ -9,10 +9,12 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <optional>
 
 #include "array_slice_stream.h"
 #include "bindings.h"
 #include "isovdb/errors.h"
+#include "isovdb/io/slice_window.h"
 #include "isovdb/store/dense_array.h"
 #include "isovdb/store/dense_writer.h"
 #include "isovdb/store/vdb_file.h"
@@ -73,8 +75,12 @@ std::string shapeText(const py::array& array) {
       .cast<std::string>();
 }
 
-PyVolume fromNumpy(const py::object& object, const py::object& threshold, py::object voxelSize,
-                   const py::object& origin, const py::object& spacingKeyword, const py::object& kindKeyword) {
+/// from_numpy(), and a slab of a larger array for a distributed run's task: `placement`
+/// None, or (first, total): the array holds grid z slices [first, first + its depth) of a
+/// volume of `total` slices (the others read as holes).
+PyVolume fromNumpyPlaced(const py::object& object, const py::object& threshold, py::object voxelSize,
+                         const py::object& origin, const py::object& spacingKeyword, const py::object& kindKeyword,
+                         const py::object& placement) {
   const std::string kind = kindKeyword.is_none() ? "" : py::str(kindKeyword).cast<std::string>();
   if (!kindKeyword.is_none() &&
       (!py::isinstance<py::str>(kindKeyword) || (kind != "mask" && kind != "field" && kind != "distance")))
@@ -94,12 +100,19 @@ PyVolume fromNumpy(const py::object& object, const py::object& threshold, py::ob
   if (array.ndim() != 3)
     throw py::value_error("from_numpy: expected a 3-D array indexed [x, y, z], got a " + std::to_string(array.ndim()) +
                           "-D array of shape " + shapeText(array));
-  if (array.size() == 0) throw py::value_error("from_numpy: empty array of shape " + shapeText(array));
+  // A placed slab may hold no slice (a window beyond the array: the header alone).
+  if (array.size() == 0 && placement.is_none())
+    throw py::value_error("from_numpy: empty array of shape " + shapeText(array));
   array = withSupportedDtype(array);
   const io::SampleType type = sampleTypeOf(array.dtype());
   // A [z, y, x] stack's transpose is Fortran-ordered: read as it lies (x fastest, like a raw
   // file). Any other layout (a strided slice) is copied into C order first.
-  const bool xFastest = !(array.flags() & py::array::c_style) && (array.flags() & py::array::f_style);
+  bool xFastest = !(array.flags() & py::array::c_style) && (array.flags() & py::array::f_style);
+  if (!placement.is_none() && !xFastest) {
+    // A placed slab is read in z-planes, the slices it is placed by.
+    array = py::module_::import("numpy").attr("asfortranarray")(array);
+    xFastest = true;
+  }
   if (!(array.flags() & py::array::c_style) && !xFastest)
     array = py::module_::import("numpy").attr("ascontiguousarray")(array);
   const bool bigEndian = array.dtype().attr("byteorder").cast<std::string>() == ">";
@@ -113,13 +126,19 @@ PyVolume fromNumpy(const py::object& object, const py::object& threshold, py::ob
 
   ArraySliceStream stream(static_cast<const std::byte*>(array.data()), {array.shape(0), array.shape(1), array.shape(2)},
                           type, bigEndian, spacing, position, xFastest);
+  std::optional<io::PlacedSliceStream> placed;
+  io::SliceStream* source = &stream;
+  if (!placement.is_none()) {
+    const auto where = placement.cast<std::array<std::int64_t, 2>>();
+    source = &placed.emplace(stream, where[0], where[1]);
+  }
   PyVolume result;
   {
     py::gil_scoped_release release;
     if (kind == "distance")
-      result.volume = volume::ingestSignedDistances(stream);
+      result.volume = volume::ingestSignedDistances(*source);
     else
-      result.volume = scalar ? volume::ingestScalar(stream) : volume::ingestMask(stream, rule);
+      result.volume = scalar ? volume::ingestScalar(*source) : volume::ingestMask(*source, rule);
   }
   Json& input = result.input;
   input["format"] = "numpy";
@@ -132,7 +151,8 @@ PyVolume fromNumpy(const py::object& object, const py::object& threshold, py::ob
 PyVolume readVolume(const std::filesystem::path& path, const py::object& dims, const py::object& dtype, bool bigEndian,
                     const py::object& spacing, std::int64_t headerBytes, py::object threshold, py::object labels,
                     py::object mask, py::object maskRange, float clip, int inlineByte, int crosslineByte, bool scalar,
-                    const std::string& grid, bool segy, bool sampleStatistics, const py::object& progress) {
+                    const std::string& grid, bool segy, bool sampleStatistics, const py::object& progress,
+                    const py::object& window) {
   const InputKeywords keywords{.threshold = std::move(threshold),
                                .labels = std::move(labels),
                                .mask = std::move(mask),
@@ -160,6 +180,13 @@ PyVolume readVolume(const std::filesystem::path& path, const py::object& dims, c
   }
   pipeline::InputOptions options = pipeline::resolveInputChoices(path, choices);
   options.sampleStatistics = sampleStatistics;
+  if (!window.is_none()) {
+    const auto range = window.cast<std::array<std::int64_t, 2>>();
+    if (range[0] > range[1])
+      throw py::value_error("window: expected (begin, end) with begin <= end, got (" + std::to_string(range[0]) + ", " +
+                            std::to_string(range[1]) + ")");
+    options.window = io::SliceWindow{range[0], range[1]};
+  }
   return loadWithProgress(path, options, progress);
 }
 
@@ -393,8 +420,10 @@ header). Written through a temporary file. Raises OSError when the path is not w
                "' shape " + py::str(py::cast(v).attr("shape")).cast<std::string>() + ">";
       });
 
-  m.def("_from_numpy", &fromNumpy, py::arg("array"), py::arg("threshold"), py::arg("voxel_size"), py::arg("origin"),
-        py::arg("spacing"), py::arg("kind"), "from_numpy()'s implementation.");
+  m.def("_from_numpy", &fromNumpyPlaced, py::arg("array"), py::arg("threshold"), py::arg("voxel_size"),
+        py::arg("origin"), py::arg("spacing"), py::arg("kind"), py::arg("placement") = py::none(),
+        "from_numpy()'s implementation; placement=(first, total): the array holds grid z slices [first, first + "
+        "depth) of a volume of total slices (a distributed run's slab).");
   // Defined in Python so that a wrong keyword gets Python's own message naming it (pybind11's
   // lists the overloads and prints the whole array).
   py::exec(R"(def from_numpy(array, threshold=None, voxel_size=1.0, origin=(0.0, 0.0, 0.0), *, spacing=None, kind=None):
@@ -431,7 +460,7 @@ holding NaN/inf.)doc";
         py::arg("mask") = py::none(), py::arg("mask_range") = py::none(), py::arg("clip") = 0.f,
         py::arg("inline_byte") = 189, py::arg("crossline_byte") = 193, py::arg("scalar") = false, py::arg("grid") = "",
         py::arg("segy") = false, py::arg("sample_statistics") = false, py::arg("progress") = py::none(),
-        R"doc(
+        py::arg("window") = py::none(), R"doc(
 Reads a volume file as a sparse Volume: raw (with dims and dtype), NRRD (.nrrd/.nhdr),
 MetaImage (.mhd/.mha), SEG-Y (.sgy/.segy, or segy=True) or .vdb. Keywords map one to one
 onto the CLI's input flags:
@@ -447,6 +476,9 @@ grid: .vdb grid name (default: the first float or bool grid).
 sample_statistics: also record the samples' range and percentiles in info()["input"].
 progress: callable(stage: str, percent: int) called as the reading advances; if it
   raises, the reading stops and its exception propagates.
+window=(begin, end): read only the samples whose grid z lies in [begin, end) (one slab of
+  a distributed run, isovdb.distributed); the others read as holes (outside a mask). The
+  Volume keeps the file's whole index space, geometry and box. Not for .vdb files.
 
 Raises OSError for a missing or unreadable file, ValueError for a bad header, bad data or
 contradicting keywords (the message names the file and the problem).)doc");

@@ -78,6 +78,29 @@ TEST(RawReader, StreamsALargeVolumeSliceBySlice) {
   }
 }
 
+TEST(RawReader, SkippedSlicesAreNotReadAndTheNextOnesAreExact) {
+  // A distributed run's slab skips the slices before its window (io/slice_window.h).
+  TempDir dir;
+  const std::vector<double> values = testValues(SampleType::Int16, 5 * 4 * 6);
+  writeFile(dir / "vol.raw", encode(SampleType::Int16, false, values));
+  auto stream = openRaw(dir / "vol.raw", {.dims = {5, 4, 6}, .type = SampleType::Int16});
+  stream->skipSlices(2);
+  EXPECT_EQ(stream->nextSlice(), 2);
+  std::vector<float> slice(20);
+  stream->readSlice(slice.data());
+  for (std::size_t i = 0; i < slice.size(); ++i) ASSERT_EQ(slice[i], static_cast<float>(values[40 + i]));
+  stream->skipSlices(3);
+  EXPECT_EQ(stream->nextSlice(), 6);
+  EXPECT_THROW(stream->skipSlices(1), std::out_of_range);
+  // A truncated file is named when the skip runs past its end.
+  writeFile(dir / "short.raw", encode(SampleType::Int16, false, values).substr(0, 100));
+  expectError<InputError>(
+      [&] {
+        openRaw(dir / "short.raw", {.dims = {5, 4, 6}, .type = SampleType::Int16})->skipSlices(4);
+      },
+      {"short.raw"});
+}
+
 TEST(RawReader, MissingFileIsIoError) {
   TempDir dir;
   const auto path = dir / "absent.raw";

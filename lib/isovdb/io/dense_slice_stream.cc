@@ -92,4 +92,14 @@ void DenseSliceStream::readSlice(float* out) {
   if (nextSlice_ == header_.dims[2]) bytes_->finish(totalBytes_);
 }
 
+void DenseSliceStream::skipSlices(std::int64_t count) {
+  if (count <= 0) return;
+  if (nextSlice_ + count > header_.dims[2])
+    throw std::out_of_range("'" + source_ + "': skipping " + std::to_string(count) + " slices from slice " +
+                            std::to_string(nextSlice_) + " of " + std::to_string(header_.dims[2]));
+  bytes_->skip(count * header_.sliceSamples() * static_cast<std::int64_t>(sampleSize(header_.sampleType)));
+  nextSlice_ += count;
+  if (nextSlice_ == header_.dims[2]) bytes_->finish(totalBytes_);
+}
+
 }  // namespace isovdb::io

@@ -51,6 +51,11 @@ class DenseSliceStream final : public SliceStream {
 
   std::int64_t nextSlice() const override { return nextSlice_; }
 
+  /// Moves past `count` slices without converting them: a file region seeks, an
+  /// inflating stream inflates without keeping (a distributed run's slab starts there).
+  /// @throw InputError when the data ends first; std::out_of_range past the last slice.
+  void skipSlices(std::int64_t count) override;
+
  private:
   std::string source_;
   VolumeHeader header_;

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "isovdb/io/sample_type.h"
 
@@ -51,6 +52,24 @@ class SliceStream {
 
   /// Index of the next slice readSlice() returns.
   virtual std::int64_t nextSlice() const = 0;
+
+  /// True when slices [first, first + count) hold no sample at all (outside a
+  /// SliceWindow): ingest then moves past them with skipSlices() instead of reading
+  /// and classifying them.
+  virtual bool blank(std::int64_t first, std::int64_t count) const {
+    (void)first;
+    (void)count;
+    return false;
+  }
+
+  /// Moves past the next `count` slices without returning them (by default: reads and
+  /// discards them). Inline, as every other member: generators outside the library
+  /// (data/generators) derive from this class without linking it.
+  virtual void skipSlices(std::int64_t count) {
+    if (count <= 0) return;
+    std::vector<float> discarded(static_cast<std::size_t>(header().sliceSamples()));
+    for (std::int64_t i = 0; i < count; ++i) readSlice(discarded.data());
+  }
 };
 
 }  // namespace isovdb::io

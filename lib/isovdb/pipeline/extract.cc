@@ -76,18 +76,7 @@ namespace {
 /// inactive voxels inside the sampled box (a sparse grid's pruned values, SEG-Y's dead band), or
 /// everywhere when the grid records no box (a .vdb level set).
 std::pair<float, float> valueRange(const volume::Volume& volume) {
-  const volume::GridStats stats = volume.stats();
-  bool backgroundSampled = stats.activeVoxels == 0;
-  if (const std::optional<volume::IndexBox> box = volume::sampledBox(volume)) {
-    double samples = 1.0;
-    for (int a = 0; a < 3; ++a) samples *= static_cast<double>(box->max[a]) - box->min[a] + 1.0;
-    backgroundSampled = backgroundSampled || static_cast<double>(stats.activeVoxels) < samples;
-  } else {
-    backgroundSampled = true;
-  }
-  if (!backgroundSampled) return {stats.minValue, stats.maxValue};
-  return {std::min(stats.activeVoxels > 0 ? stats.minValue : stats.background, stats.background),
-          std::max(stats.activeVoxels > 0 ? stats.maxValue : stats.background, stats.background)};
+  return valueRangeOf(sampleRangeOf(volume), volume::sampledBox(volume));
 }
 
 /// An isovalue that cannot meet any surface is refused with the reason, instead of an empty
@@ -141,15 +130,63 @@ float isoFor(const volume::Volume& volume, const ExtractOptions& options) {
   return isoFor(volume, options, needsRange ? std::optional(valueRange(volume)) : std::nullopt);
 }
 
+SampleRange& SampleRange::operator+=(const SampleRange& other) {
+  if (other.active > 0) {
+    min = active > 0 ? std::min(min, other.min) : other.min;
+    max = active > 0 ? std::max(max, other.max) : other.max;
+  }
+  active += other.active;
+  return *this;
+}
+
+SampleRange sampleRangeOf(const volume::Volume& field) {
+  const volume::GridStats stats = field.stats();
+  return {.active = stats.activeVoxels, .min = stats.minValue, .max = stats.maxValue, .background = stats.background};
+}
+
+std::pair<float, float> valueRangeOf(const SampleRange& samples, const std::optional<volume::IndexBox>& box) {
+  bool backgroundSampled = samples.active == 0;
+  if (box) {
+    double count = 1.0;
+    for (int a = 0; a < 3; ++a) count *= static_cast<double>(box->max[a]) - box->min[a] + 1.0;
+    backgroundSampled = backgroundSampled || static_cast<double>(samples.active) < count;
+  } else {
+    backgroundSampled = true;
+  }
+  if (!backgroundSampled) return {samples.min, samples.max};
+  return {std::min(samples.active > 0 ? samples.min : samples.background, samples.background),
+          std::max(samples.active > 0 ? samples.max : samples.background, samples.background)};
+}
+
+int slabHalo(const ExtractOptions& options) {
+  constexpr int kLeaf = 8;
+  // A layer's samples reach its apron (regular mode: a finest cell) beyond it; the band's
+  // values depend on the mask within half-width + 4 voxels (interface_band.h), a closing
+  // on 2 x its steps more; the band's partition looks at leaves two leaves beyond.
+  const int apron = std::max(1, octree::finestLeafSize(options.octree, std::max(options.metaCellSize, 16)));
+  const int reach = apron + options.distance.halfWidth + 4 + 2 * options.distance.closingSteps + 2 * kLeaf;
+  return (reach + kLeaf - 1) / kLeaf * kLeaf;
+}
+
 void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::MeshSink& sink, Interrupter* interrupter,
-                 Statistics* stats) {
+                 Statistics* stats, const ExtractPart* part) {
+  if (part && (volume.kind() == volume::VolumeKind::DistanceField || options.contour.method == ContourMethod::Vdb ||
+               options.metaCellSize == 0 || options.distance.method != volume::DistanceMethod::Interface))
+    throw InputError("'" + volume.name() +
+                     "': a distributed run contours masks and scalar fields in meta-cells with the regular or "
+                     "adaptive method (and a mask's interface distance field)");
+  if (part && volume.kind() == volume::VolumeKind::Scalar && !part->valueRange)
+    throw InputError("'" + volume.name() + "': a part of a scalar field's run needs the whole field's value range");
   if (options.threads < 0)
     throw InputError("--threads: expected 0 (every core) or more, got " + std::to_string(options.threads));
   std::optional<tbb::global_control> threads;
   if (options.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, options.threads);
   // The field's range is walked once (a tree walk): the default iso and its check both read it.
   std::optional<std::pair<float, float>> range;
-  if (volume.kind() != volume::VolumeKind::Mask) range = valueRange(volume);
+  if (part && part->valueRange)
+    range = part->valueRange;
+  else if (volume.kind() != volume::VolumeKind::Mask)
+    range = valueRange(volume);
   float iso = isoFor(volume, options, range);
   const float givenIso = iso;  // before withInsideAboveIso negates it
   checkIsoReachesSurface(volume, iso, options.distance.halfWidth, range);
@@ -209,7 +246,22 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
   } else {
     octree::OctreeOptions tree = options.octree;
     if (capsMade) settings.dataBox = {{box->min, box->max}};
-    if (byLayers)
+    if (part && part->received) {
+      SeamedMeshAssembler assembler(settings, options.metaCellSize, capped);
+      volume::MetaCellIndex index{};
+      contour::MetaCellMesh block;
+      while (part->received(index, block)) assembler.add(index, std::move(block));
+      assembler.finish(interrupter, stats);
+    } else if (part && byLayers) {
+      contourMaskMetaCellsInto(volume, options.distance, settings, tree, options.metaCellSize, *part->pieces,
+                               part->layers, interrupter, stats);
+    } else if (part) {
+      // The far-outside value beyond the box derives from the whole field's largest |value|.
+      const float bound =
+          std::max({std::abs(range->first), std::abs(range->second), std::abs(field.stats().background)});
+      contourMetaCellsInto(field, settings, tree, options.metaCellSize, *part->pieces, part->layers, bound, interrupter,
+                           stats);
+    } else if (byLayers)
       contourMaskWithOctree(volume, options.distance, settings, tree, options.metaCellSize, capped, interrupter, stats);
     else
       contourWithOctree(field, settings, tree, options.metaCellSize, capped, interrupter, stats);

@@ -6,7 +6,9 @@
 /// This is the only place that knows the order of the stages (DESIGN.md, data flow).
 #pragma once
 
+#include <functional>
 #include <optional>
+#include <utility>
 #include <string_view>
 
 #include "isovdb/mesh/mesh.h"
@@ -91,6 +93,45 @@ volume::Volume withInsideAboveIso(const volume::Volume& volume, ScalarInside ins
 volume::Volume toContourable(const volume::Volume& volume, const volume::DistanceFieldOptions& options,
                              Interrupter* interrupter = nullptr, Statistics* stats = nullptr);
 
+/// How extractInto takes part in an extraction split over processes (isovdb.distributed,
+/// pipeline/meta_cell_pieces.h). A task reads one slab of meta-cell layers (plus the halo
+/// its distance field needs, slabHalo) and hands the meta-cells of `layers` to `pieces`:
+/// nothing reaches the sink and nothing is stitched. The client reads only the file's
+/// header (an empty window), contours nothing, and takes every meta-cell from `received`
+/// in meta-cell order, assembling and stitching them into the sink as one process does
+/// its own: the same bytes as `isovdb extract` with the same settings.
+struct ExtractPart {
+  std::optional<MetaCellLayers> layers;  ///< task: the slab it contours
+  MetaCellConsumer* pieces = nullptr;    ///< task: where its meta-cells go
+  /// Client: the next meta-cell of the run, in meta-cell order; false after the last.
+  std::function<bool(volume::MetaCellIndex&, contour::MetaCellMesh&)> received;
+  /// Scalar fields, task and client alike: the whole volume's value range (valueRangeOf
+  /// the slabs' SampleRanges), which neither holds: the default iso, the iso's check and
+  /// the far-outside value beyond the box derive from it.
+  std::optional<std::pair<float, float>> valueRange;
+};
+
+/// What a field's value range is made of: its active samples' count and extremes (within
+/// a slab, for a distributed run's first pass) and its background.
+struct SampleRange {
+  std::int64_t active = 0;
+  float min = 0.f, max = 0.f;
+  float background = 0.f;
+  /// Both slabs' samples (backgrounds are the same file's).
+  SampleRange& operator+=(const SampleRange& other);
+};
+SampleRange sampleRangeOf(const volume::Volume& field);
+
+/// A scalar field's value range from its samples' SampleRange (summed over every slab):
+/// the active samples' extremes, and the background where inactive samples lie inside
+/// the sampled `box` (or there is no box), as isoFor reads a whole volume.
+std::pair<float, float> valueRangeOf(const SampleRange& samples, const std::optional<volume::IndexBox>& box);
+
+/// Samples beyond its layers a task must read so that its meta-cells' samples are the
+/// whole volume's: the meta-cells' apron, the distance field's reach (half-width, blur,
+/// closing) and the band's leaf margins, rounded up to whole 8-voxel leaves.
+int slabHalo(const ExtractOptions& options);
+
 /// Contours `volume` (any kind) and returns the mesh in world space
 /// (Volume::geometry() applied), outward-oriented, with `options.boundary` applied
 /// on the volume's sampled box. Records timings and counts in `stats`.
@@ -104,8 +145,9 @@ mesh::Mesh extractMesh(volume::Volume volume, const ExtractOptions& options, Int
 /// The same, streamed into `sink` in voxel INDEX space (the octree methods hand
 /// it one meta-cell at a time; apply volume.geometry() in the sink, e.g.
 /// io::PlyStreamWriter's transform).
+/// `part`: one side of a distributed run (see ExtractPart); masks and scalar fields.
 void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::MeshSink& sink,
-                 Interrupter* interrupter = nullptr, Statistics* stats = nullptr);
+                 Interrupter* interrupter = nullptr, Statistics* stats = nullptr, const ExtractPart* part = nullptr);
 
 /// world = origin + spacing * index, applied in place (flips nothing: spacings are positive).
 void indexToWorld(mesh::Mesh& mesh, const volume::Geometry& geometry);

@@ -11,19 +11,20 @@
 namespace isovdb::pipeline {
 
 std::uint64_t extractToFile(volume::Volume volume, const ExtractOptions& options, const std::filesystem::path& path,
-                            Interrupter* interrupter, Statistics* stats) {
+                            Interrupter* interrupter, Statistics* stats, const ExtractPart* part) {
   io::checkMeshPath(path);
   io::AtomicFile::checkWritable(path);
   const bool stream = options.contour.method != ContourMethod::Vdb && io::lowerExtension(path) == ".ply";
   if (stream) {
     const volume::Geometry g = volume.geometry();
     io::PlyStreamWriter writer(path, g.spacing, g.origin);
-    extractInto(std::move(volume), options, writer, interrupter, stats);
+    extractInto(std::move(volume), options, writer, interrupter, stats, part);
     Statistics::StageTimer timer(stats, "write");
     writer.commit();
     if (stats) (*stats)["output"]["streamed"] = true;
     return writer.triangleCount();
   }
+  if (part) throw InputError("'" + path.string() + "': a distributed run writes a .ply file");
   const mesh::Mesh mesh = extractMesh(std::move(volume), options, interrupter, stats);
   Statistics::StageTimer timer(stats, "write");
   io::writeMesh(path, mesh);

@@ -20,7 +20,9 @@ namespace isovdb::pipeline {
 /// @return the number of triangles written
 /// @throw InputError for another extension or invalid options; IoError when the path
 ///        is not writable (checked before the work starts); Interrupted on cancellation.
+/// `part`: the client of a distributed run (ExtractPart::received).
 std::uint64_t extractToFile(volume::Volume volume, const ExtractOptions& options, const std::filesystem::path& path,
-                            Interrupter* interrupter = nullptr, Statistics* stats = nullptr);
+                            Interrupter* interrupter = nullptr, Statistics* stats = nullptr,
+                            const ExtractPart* part = nullptr);
 
 }  // namespace isovdb::pipeline

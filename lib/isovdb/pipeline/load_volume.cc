@@ -98,10 +98,15 @@ volume::Volume ingest(io::SliceStream& stream, const InputOptions& options, Inte
                       Statistics::Json& input) {
   std::optional<io::SampleStatistics> statistics;
   std::optional<io::ObservedSliceStream> observed;
+  std::optional<io::SliceWindowStream> windowed;
   io::SliceStream* source = &stream;
+  if (options.window) {
+    source = &windowed.emplace(stream, *options.window);
+    input["window_z"] = {options.window->begin, options.window->end};
+  }
   if (options.sampleStatistics) {
     statistics.emplace(options.clip);
-    source = &observed.emplace(stream, *statistics);
+    source = &observed.emplace(*source, *statistics);
   }
   volume::Volume result;
   if (options.denseAs == DenseAs::Mask) {
@@ -126,6 +131,10 @@ volume::Volume loadVolume(const std::filesystem::path& path, const InputOptions&
   Statistics::Json input = Statistics::Json::object();
   input["path"] = path.string();
   if (isVdbPath(path)) {
+    if (options.window)
+      throw InputError("'" + path.string() +
+                       "': a .vdb file is read whole; slabs of a distributed run read raw, NRRD, MetaImage and "
+                       "SEG-Y files (or arrays)");
     input["format"] = "vdb";
     result = store::readVdb(path, options.gridName);
   } else if (options.segy || io::isSegyPath(path)) {

@@ -10,6 +10,7 @@
 
 #include "isovdb/io/raw_reader.h"
 #include "isovdb/io/segy_reader.h"
+#include "isovdb/io/slice_window.h"
 #include "isovdb/pipeline/statistics.h"
 #include "isovdb/progress.h"
 #include "isovdb/volume/distance_field.h"
@@ -39,6 +40,10 @@ struct InputOptions {
   /// under "input.samples" (gathered during the same read; 12 MiB of histograms).
   bool sampleStatistics = false;
   std::string gridName;  ///< .vdb: grid to read (empty: first float/bool grid)
+  /// Read only the samples whose grid z lies in this window (one slab of a distributed
+  /// run, io/slice_window.h): the others are holes; dims, geometry and sampled box stay
+  /// the file's. Dense files and SEG-Y only.
+  std::optional<io::SliceWindow> window;
 };
 
 /// Reads `path` into a Volume, streaming dense files slab by slab and SEG-Y files

@@ -319,18 +319,18 @@ void checkMetaCellSize(int s) {
     throw InputError("--meta-cell: expected a power of two in 16..512 (or 0 for one block), got " + std::to_string(s));
 }
 
-/// Meta-cells contoured in parallel, their meshes handed to the sink in the order
-/// given and their seams kept; finish() stitches the seams. Batches of meta-cells
-/// (all of them, or one layer at a time) are contoured one after the other.
+/// Meta-cells contoured in parallel, handed to the consumer in the order given (a
+/// SeamedMeshAssembler: meshes into the sink, seams kept). Batches of meta-cells (all
+/// of them, or one layer at a time) are contoured one after the other.
 class MetaCellRun {
  public:
   /// Fills a meta-cell's samples; called from several threads at once.
   using Reader = std::function<void(const volume::MetaCellIndex&, cell::MetaCellSamples&)>;
 
-  MetaCellRun(const Engine& engine, volume::VolumeKind kind, mesh::MeshSink& sink)
+  MetaCellRun(const Engine& engine, volume::VolumeKind kind, MetaCellConsumer& consumer)
       : engine_(engine),
         kind_(kind),
-        sink_(sink),
+        consumer_(consumer),
         tokens_(std::max<std::size_t>(
             1, tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism))) {}
 
@@ -371,31 +371,16 @@ class MetaCellRun {
                        totals_.add(job->totals);
                        if (job->contoured) {
                          ++contoured_;
-                         const auto base = static_cast<std::uint32_t>(sink_.vertexCount());
-                         for (mesh::Triangle& t : job->result.mesh.triangles)
-                           for (std::uint32_t& v : t) v += base;
-                         sink_.addVertices(job->result.mesh.positions);
-                         sink_.addTriangles(job->result.mesh.triangles);
-                         contour::rebaseSeam(job->result.seam, base);
-                         seams_.add(cells[job->position], std::move(job->result.seam));
+                         consumer_.add(cells[job->position], std::move(job->result));
                        }
-                       jobs[job->position].reset();  // its mesh is in the sink now
+                       jobs[job->position].reset();  // its mesh is with the consumer now
                        cellDone();
                      }));
   }
 
-  /// Stitches the seams and records the figures of the whole run.
-  void finish(int apron, std::int64_t leavesScanned, Interrupter* interrupter, Statistics* stats) {
+  /// Records the figures of the meta-cells contoured.
+  void record(int apron, std::int64_t leavesScanned, Statistics* stats) const {
     const cell::ContourSettings& options = engine_.settings;
-    stitch::StitchStats stitchStats;
-    {
-      Statistics::StageTimer timer(stats, "stitch");
-      mesh::Mesh tail;
-      stitch::stitchSeams(seams_, options, engine_.metaCellSize, static_cast<std::uint32_t>(sink_.vertexCount()), tail,
-                          &stitchStats, interrupter);
-      sink_.addVertices(tail.positions);
-      sink_.addTriangles(tail.triangles);
-    }
     if (!stats) return;
     Statistics::Json section = Statistics::Json::object();
     section["meta_cell_size"] = engine_.metaCellSize;
@@ -407,22 +392,13 @@ class MetaCellRun {
     section["leaves_scanned_for_partition"] = leavesScanned;
     recordTotals(totals_, options, section);
     (*stats)["meta_cells"] = section;
-    Statistics::Json st = Statistics::Json::object();
-    st["meta_faces"] = stitchStats.metaFaces;
-    st["meta_edges"] = stitchStats.metaEdges;
-    st["seam_cells"] = stitchStats.seamCells;
-    st["edges"] = stitchStats.edges;
-    if (options.contoursByMinimalEdges()) st["fanned_edges"] = stitchStats.fannedEdges;
-    st["missing_cells"] = stitchStats.missingCells;
-    (*stats)["stitch"] = st;
   }
 
  private:
   const Engine& engine_;
   volume::VolumeKind kind_;
-  mesh::MeshSink& sink_;
+  MetaCellConsumer& consumer_;
   std::size_t tokens_;
-  stitch::SeamStore seams_;
   MetaCellTotals totals_;
   std::size_t candidates_ = 0, contoured_ = 0;
   // One sample block per thread, reused meta-cell after meta-cell: a fresh 9 MB
@@ -430,18 +406,19 @@ class MetaCellRun {
   tbb::enumerable_thread_specific<cell::MetaCellSamples> sampleBlocks_;
 };
 
-/// Every meta-cell in parallel, output in meta-cell order, then the seams.
-void contourMetaCells(const volume::Volume& field, const Engine& engine, mesh::MeshSink& sink, Interrupter* interrupter,
-                      Statistics* stats) {
+/// Every meta-cell (of `layers`, when set) in parallel, to the consumer in meta-cell order.
+void contourMetaCells(const volume::Volume& field, const Engine& engine, MetaCellConsumer& consumer,
+                      const std::optional<MetaCellLayers>& layers, Interrupter* interrupter, Statistics* stats) {
   const int s = engine.metaCellSize;
   checkMetaCellSize(s);
   volume::MetaCellPartition partition;
   {
     Statistics::StageTimer timer(stats, "partition");
     partition = volume::partitionMetaCells(field, s, engine.settings.iso, capsIndexBox(engine.settings));
+    if (layers) std::erase_if(partition.cells, [&](const volume::MetaCellIndex& c) { return !layers->contains(c[2]); });
   }
   const int apron = metaCellApron(engine);
-  MetaCellRun run(engine, field.kind(), sink);
+  MetaCellRun run(engine, field.kind(), consumer);
   {
     Statistics::StageTimer timer(stats, "contour_meta_cells");
     ProgressStage progress(interrupter, "contouring meta-cells");
@@ -454,14 +431,15 @@ void contourMetaCells(const volume::Volume& field, const Engine& engine, mesh::M
         },
         [&] { progress.update(static_cast<double>(++done), total); });
   }
-  run.finish(apron, partition.leavesScanned, interrupter, stats);
+  run.record(apron, partition.leavesScanned, stats);
 }
 
 /// A mask's meta-cells layer by layer, each layer's distance field computed just
 /// before it is contoured (volume/slab_band.h): the same meshes as contourMetaCells
 /// on distanceField(mask), without the whole band in memory.
 void contourMaskMetaCells(const volume::Volume& mask, const volume::DistanceFieldOptions& distance,
-                          const Engine& engine, mesh::MeshSink& sink, Interrupter* interrupter, Statistics* stats) {
+                          const Engine& engine, MetaCellConsumer& consumer, const std::optional<MetaCellLayers>& layers,
+                          Interrupter* interrupter, Statistics* stats) {
   const int s = engine.metaCellSize;
   checkMetaCellSize(s);
   const int apron = metaCellApron(engine);
@@ -470,23 +448,25 @@ void contourMaskMetaCells(const volume::Volume& mask, const volume::DistanceFiel
     Statistics::StageTimer timer(stats, "distance_field");
     band.emplace(mask, distance, s, apron);
   }
-  MetaCellRun run(engine, volume::VolumeKind::DistanceField, sink);
+  MetaCellRun run(engine, volume::VolumeKind::DistanceField, consumer);
   ProgressStage progress(interrupter, "contouring meta-cells");
-  const int layers = band->endLayer() - band->firstLayer();
-  for (int k = band->firstLayer(); k < band->endLayer(); ++k) {
-    const double layer = k - band->firstLayer();
+  const int first = layers ? std::max(layers->begin, band->firstLayer()) : band->firstLayer();
+  const int end = layers ? std::min(layers->end, band->endLayer()) : band->endLayer();
+  const int count = std::max(0, end - first);
+  for (int k = first; k < end; ++k) {
+    const double layer = k - first;
     std::vector<volume::MetaCellIndex> cells;
     {
       // The band's chunks report the layer's start again: Ctrl-C is noticed within a layer's band.
       Statistics::StageTimer timer(stats, "distance_field");
-      cells = band->advanceTo(k, engine.settings.iso, [&] { progress.update(layer, layers); });
+      cells = band->advanceTo(k, engine.settings.iso, [&] { progress.update(layer, count); });
     }
     Statistics::StageTimer timer(stats, "contour_meta_cells");
     std::size_t done = 0;
     run.contour(
         cells, [&](const volume::MetaCellIndex& index, cell::MetaCellSamples& samples) { band->read(index, samples); },
-        [&] { progress.update(layer + static_cast<double>(++done) / static_cast<double>(cells.size()), layers); });
-    progress.update(layer + 1, layers);
+        [&] { progress.update(layer + static_cast<double>(++done) / static_cast<double>(cells.size()), count); });
+    progress.update(layer + 1, count);
   }
   if (stats) {
     Statistics::Json section = distanceFieldSection(distance);
@@ -496,7 +476,12 @@ void contourMaskMetaCells(const volume::Volume& mask, const volume::DistanceFiel
     (*stats)["distance_field"] = section;
   }
   band.reset();
-  run.finish(apron, 0, interrupter, stats);
+  run.record(apron, 0, stats);
+}
+
+void checkOctreeMethod(const cell::ContourSettings& settings) {
+  if (settings.method == cell::ContourMethod::Vdb)
+    throw InputError("octree contouring: the method is vdb; expected regular or adaptive");
 }
 
 }  // namespace
@@ -506,13 +491,57 @@ void contourWithOctree(const volume::Volume& field, const cell::ContourSettings&
                        Interrupter* interrupter, Statistics* stats) {
   if (field.kind() == volume::VolumeKind::Mask)
     throw InputError("'" + field.name() + "': octree contouring needs a distance field or a scalar field");
-  if (settings.method == cell::ContourMethod::Vdb)
-    throw InputError("octree contouring: the method is vdb; expected regular or adaptive");
+  checkOctreeMethod(settings);
   const Engine engine{settings, tree, metaCellSize, valueBound(field)};
-  if (metaCellSize == 0)
+  if (metaCellSize == 0) {
     contourSingleBlock(field, engine, sink, interrupter, stats);
-  else
-    contourMetaCells(field, engine, sink, interrupter, stats);
+    return;
+  }
+  SeamedMeshAssembler assembler(settings, metaCellSize, sink);
+  contourMetaCells(field, engine, assembler, std::nullopt, interrupter, stats);
+  assembler.finish(interrupter, stats);
+}
+
+void contourMetaCellsInto(const volume::Volume& field, const cell::ContourSettings& settings,
+                          const octree::OctreeOptions& tree, int metaCellSize, MetaCellConsumer& consumer,
+                          const std::optional<MetaCellLayers>& layers, std::optional<float> bound,
+                          Interrupter* interrupter, Statistics* stats) {
+  if (field.kind() == volume::VolumeKind::Mask)
+    throw InputError("'" + field.name() + "': octree contouring needs a distance field or a scalar field");
+  checkOctreeMethod(settings);
+  const Engine engine{settings, tree, metaCellSize, bound ? *bound : valueBound(field)};
+  contourMetaCells(field, engine, consumer, layers, interrupter, stats);
+}
+
+void SeamedMeshAssembler::add(const volume::MetaCellIndex& index, contour::MetaCellMesh&& block) {
+  const auto base = static_cast<std::uint32_t>(sink_.vertexCount());
+  for (mesh::Triangle& t : block.mesh.triangles)
+    for (std::uint32_t& v : t) v += base;
+  sink_.addVertices(block.mesh.positions);
+  sink_.addTriangles(block.mesh.triangles);
+  contour::rebaseSeam(block.seam, base);
+  seams_.add(index, std::move(block.seam));
+}
+
+void SeamedMeshAssembler::finish(Interrupter* interrupter, Statistics* stats) {
+  stitch::StitchStats stitchStats;
+  {
+    Statistics::StageTimer timer(stats, "stitch");
+    mesh::Mesh tail;
+    stitch::stitchSeams(seams_, settings_, metaCellSize_, static_cast<std::uint32_t>(sink_.vertexCount()), tail,
+                        &stitchStats, interrupter);
+    sink_.addVertices(tail.positions);
+    sink_.addTriangles(tail.triangles);
+  }
+  if (!stats) return;
+  Statistics::Json st = Statistics::Json::object();
+  st["meta_faces"] = stitchStats.metaFaces;
+  st["meta_edges"] = stitchStats.metaEdges;
+  st["seam_cells"] = stitchStats.seamCells;
+  st["edges"] = stitchStats.edges;
+  if (settings_.contoursByMinimalEdges()) st["fanned_edges"] = stitchStats.fannedEdges;
+  st["missing_cells"] = stitchStats.missingCells;
+  (*stats)["stitch"] = st;
 }
 
 octree::LinearOctree metaCellOctree(const volume::Volume& field, const cell::ContourSettings& settings,
@@ -538,15 +567,23 @@ octree::LinearOctree metaCellOctree(const volume::Volume& field, const cell::Con
 void contourMaskWithOctree(const volume::Volume& mask, const volume::DistanceFieldOptions& distance,
                            const cell::ContourSettings& settings, const octree::OctreeOptions& tree, int metaCellSize,
                            mesh::MeshSink& sink, Interrupter* interrupter, Statistics* stats) {
+  SeamedMeshAssembler assembler(settings, metaCellSize, sink);
+  contourMaskMetaCellsInto(mask, distance, settings, tree, metaCellSize, assembler, std::nullopt, interrupter, stats);
+  assembler.finish(interrupter, stats);
+}
+
+void contourMaskMetaCellsInto(const volume::Volume& mask, const volume::DistanceFieldOptions& distance,
+                              const cell::ContourSettings& settings, const octree::OctreeOptions& tree,
+                              int metaCellSize, MetaCellConsumer& consumer, const std::optional<MetaCellLayers>& layers,
+                              Interrupter* interrupter, Statistics* stats) {
   if (mask.kind() != volume::VolumeKind::Mask)
     throw InputError("'" + mask.name() + "': contouring by meta-cell layers needs a mask");
   if (distance.method != volume::DistanceMethod::Interface)
     throw InputError("contouring by meta-cell layers: the distance field must be the interface band");
-  if (settings.method == cell::ContourMethod::Vdb)
-    throw InputError("octree contouring: the method is vdb; expected regular or adaptive");
+  checkOctreeMethod(settings);
   // The band's samples are distances in voxels, ±halfWidth beyond it.
   const Engine engine{settings, tree, metaCellSize, static_cast<float>(distance.halfWidth)};
-  contourMaskMetaCells(mask, distance, engine, sink, interrupter, stats);
+  contourMaskMetaCells(mask, distance, engine, consumer, layers, interrupter, stats);
 }
 
 mesh::Mesh contourWithOctree(const volume::Volume& field, const cell::ContourSettings& settings,

@@ -18,16 +18,55 @@
 /// whole band, no seams (a dense block of the band's size; for comparison).
 #pragma once
 
+#include <optional>
+
 #include "isovdb/contour/voxel_dmc.h"
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/mesh/mesh_sink.h"
 #include "isovdb/octree/build.h"
 #include "isovdb/pipeline/statistics.h"
 #include "isovdb/progress.h"
+#include "isovdb/stitch/stitch_seams.h"
+#include "isovdb/volume/meta_cells.h"
 #include "isovdb/volume/distance_field.h"
 #include "isovdb/volume/volume.h"
 
 namespace isovdb::pipeline {
+
+/// Meta-cell layers [begin, end) along z (layer k: meta-cells with z from k S to k S + S):
+/// the part of a run one task of a distributed run contours (isovdb.distributed).
+struct MetaCellLayers {
+  int begin = 0;
+  int end = 0;
+  bool contains(int k) const noexcept { return begin <= k && k < end; }
+};
+
+/// Where contoured meta-cells go, one at a time, in meta-cell order (z, y, x).
+class MetaCellConsumer {
+ public:
+  virtual ~MetaCellConsumer() = default;
+  /// Meta-cell `index`'s mesh (global voxel index coordinates, ids local to it) and seam.
+  virtual void add(const volume::MetaCellIndex& index, contour::MetaCellMesh&& block) = 0;
+};
+
+/// Appends each meta-cell's mesh to a sink, its ids moved after the vertices already
+/// there, and keeps its seam; finish() stitches the seams into the sink. What one process
+/// does with its meta-cells, and what a distributed run's client does with the pieces its
+/// tasks return: the same calls in the same order, so the same bytes.
+class SeamedMeshAssembler final : public MetaCellConsumer {
+ public:
+  SeamedMeshAssembler(const cell::ContourSettings& settings, int metaCellSize, mesh::MeshSink& sink)
+      : settings_(settings), metaCellSize_(metaCellSize), sink_(sink) {}
+  void add(const volume::MetaCellIndex& index, contour::MetaCellMesh&& block) override;
+  /// Stitches every seam kept (stage "stitch"; figures under "stitch").
+  void finish(Interrupter* interrupter = nullptr, Statistics* stats = nullptr);
+
+ private:
+  cell::ContourSettings settings_;
+  int metaCellSize_;
+  mesh::MeshSink& sink_;
+  stitch::SeamStore seams_;
+};
 
 /// Contours a DistanceField (inside = value <= iso) or a Scalar volume (inside =
 /// value >= iso) with our octree methods into `sink` (voxel index space,
@@ -53,6 +92,20 @@ void contourWithOctree(const volume::Volume& field, const cell::ContourSettings&
 void contourMaskWithOctree(const volume::Volume& mask, const volume::DistanceFieldOptions& distance,
                            const cell::ContourSettings& settings, const octree::OctreeOptions& tree, int metaCellSize,
                            mesh::MeshSink& sink, Interrupter* interrupter = nullptr, Statistics* stats = nullptr);
+
+/// contourWithOctree and contourMaskWithOctree for one part of a distributed run: only
+/// the meta-cells of `layers` (all when unset) are contoured and handed to `consumer`;
+/// nothing is stitched. `metaCellSize` 16..512. `valueBound` (scalar fields): the largest
+/// |value| of the whole volume, when `field` holds only a slab of it (the caps' far
+/// outside value derives from it; blocks must agree on it).
+void contourMetaCellsInto(const volume::Volume& field, const cell::ContourSettings& settings,
+                          const octree::OctreeOptions& tree, int metaCellSize, MetaCellConsumer& consumer,
+                          const std::optional<MetaCellLayers>& layers, std::optional<float> valueBound = std::nullopt,
+                          Interrupter* interrupter = nullptr, Statistics* stats = nullptr);
+void contourMaskMetaCellsInto(const volume::Volume& mask, const volume::DistanceFieldOptions& distance,
+                              const cell::ContourSettings& settings, const octree::OctreeOptions& tree,
+                              int metaCellSize, MetaCellConsumer& consumer, const std::optional<MetaCellLayers>& layers,
+                              Interrupter* interrupter = nullptr, Statistics* stats = nullptr);
 
 /// The same, collected into a mesh.
 mesh::Mesh contourWithOctree(const volume::Volume& field, const cell::ContourSettings& settings,

@@ -85,6 +85,16 @@ int readSlab(io::SliceStream& stream, io::LazyBuffer<float>& slice, Classify&& s
   return depth;
 }
 
+/// Moves past the slab of slices from `z0` when the stream says it holds no sample (outside
+/// a SliceWindow): nothing to classify or insert. Returns whether it did.
+bool skipBlankSlab(io::SliceStream& stream, std::int64_t z0, const ProgressStage& progress) {
+  const std::int64_t depth = std::min<std::int64_t>(kLeafDim, stream.header().dims[2] - z0);
+  if (!stream.blank(z0, depth)) return false;
+  stream.skipSlices(depth);
+  progress.update(static_cast<double>(z0 + depth), static_cast<double>(stream.header().dims[2]));
+  return true;
+}
+
 /// One 8x8 column block of a slab: the leaf-sized block at (bx, by).
 struct BlockRange {
   int x0, y0, x1, y1, depth;  // voxel range [x0,x1) x [y0,y1) x [0,depth)
@@ -150,6 +160,7 @@ Volume ingestMask(io::SliceStream& stream, const MaskRule& rule, Interrupter* in
   std::vector<MaskGrid::TreeType::LeafNodeType*> leaves(state.size(), nullptr);
 
   for (std::int64_t z0 = 0; z0 < nz; z0 += kLeafDim) {
+    if (skipBlankSlab(stream, z0, progress)) continue;
     const int depth = readSlab(stream, slice, [&](int z, const io::LazyBuffer<float>& values) {
       std::uint8_t* out = inside.data() + static_cast<std::size_t>(z) * nx * ny;
       for (std::size_t i = 0; i < values.size(); ++i) out[i] = rule.inside(values[i]) ? 1 : 0;
@@ -209,6 +220,7 @@ Volume ingestScalar(io::SliceStream& stream, const ScalarIngestOptions& options,
   const auto isActive = [deadBand](float v) { return !std::isnan(v) && !(std::abs(v) < deadBand); };
 
   for (std::int64_t z0 = 0; z0 < nz; z0 += kLeafDim) {
+    if (skipBlankSlab(stream, z0, progress)) continue;
     const int depth = readSlab(stream, slice, [&](int z, const io::LazyBuffer<float>& values) {
       std::copy(values.begin(), values.end(), slab.begin() + static_cast<std::ptrdiff_t>(z * nx * ny));
     });
