@@ -11,6 +11,10 @@ Run on demand, never in CI:
         [--shapes blobs,salt-dome] [--repeat 3] [--work DIR] [--build build]
 It builds nothing: run scripts/build.sh first (BUILD/isovdb, BUILD/python, BUILD/data/isovdb-sample).
 
+Peak RSS: each task's worker process from the task's start (Linux clear_refs, VmHWM), the
+client's (this process) from the run's start; both include the interpreter, Dask and the
+module (about 100-150 MB before any work).
+
 Protocol: each worker is a process with one thread (LocalCluster(processes=True)), each
 task runs with threads=1; the single process runs with --threads W for W workers, so both
 sides use the same cores. The cluster is started before the clock (a cluster is long-lived;
@@ -30,6 +34,9 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 MIB = 1 << 20
+# This file's name is Dask's package's: its folder must not shadow `import distributed`
+# (here, and in the worker processes, which start with this process's sys.path).
+sys.path = [p for p in sys.path if os.path.abspath(p or os.curdir) != os.path.dirname(os.path.abspath(__file__))]
 
 
 def generate(sample, shape, size, work):
@@ -52,8 +59,8 @@ def run_cli(cli, volume, out, method, meta_cell, threads, work):
 
 
 def run_dask(client, volume, out, method, meta_cell, slab_layers):
-    import resource
     import isovdb.distributed
+    isovdb.distributed._reset_peak_rss()
     start = time.perf_counter()
     stats = isovdb.distributed.extract(volume, out, client, method=method, meta_cell=meta_cell,
                                        slab_layers=slab_layers, threads=1)
@@ -65,7 +72,7 @@ def run_dask(client, volume, out, method, meta_cell, slab_layers):
     meta_cells = sum(s["meta_cells"] for s in slabs)
     seam = sum(s["seam_bytes"] for s in slabs)
     return {"wall": wall, "worker_rss": max(per_worker.values()) if per_worker else 0,
-            "client_rss": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024,
+            "client_rss": isovdb.distributed._peak_rss(),
             "seam_bytes": seam, "bytes": sum(s["bytes"] for s in slabs), "meta_cells": meta_cells,
             "slabs": len(slabs), "stitch": stats["timings_s"].get("stitch", 0.0),
             "task_seconds": sum(s["seconds"] for s in slabs), "triangles": stats["contour"]["triangles"]}

@@ -112,6 +112,7 @@ def _slab_task(source, settings, layers, halo, value_range):
         except (ImportError, ValueError, AttributeError):
             pass
     meta_cell = settings.get("meta_cell", 128)
+    _reset_peak_rss()
     start = time.perf_counter()
     volume = source.volume((layers[0] * meta_cell - halo, layers[1] * meta_cell + halo))
     read_s = time.perf_counter() - start
@@ -124,7 +125,24 @@ def _slab_task(source, settings, layers, halo, value_range):
     return data, figures
 
 
+def _reset_peak_rss():
+    """Starts the process's peak RSS over (Linux: clear_refs 5), so each task reports its own."""
+    try:
+        with open("/proc/self/clear_refs", "w") as f:
+            f.write("5")
+    except OSError:
+        pass
+
+
 def _peak_rss():
+    """The process's peak RSS since _reset_peak_rss (Linux's VmHWM), in bytes."""
+    try:
+        with open("/proc/self/status") as f:
+            for line in f:
+                if line.startswith("VmHWM:"):
+                    return int(line.split()[1]) * 1024
+    except OSError:
+        pass
     import resource
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
 

@@ -16,6 +16,7 @@
 #include "isovdb/io/slice_window.h"
 #include "isovdb/pipeline/extract.h"
 #include "isovdb/pipeline/meta_cell_pieces.h"
+#include "isovdb/pipeline/statistics.h"
 #include "isovdb/volume/grids.h"
 #include "isovdb/volume/ingest.h"
 #include "isovdb/volume/sampled_box.h"
@@ -127,6 +128,24 @@ TEST(ExtractParts, SlabsWithoutTheirHaloDoNotAssembleIntoTheSameMesh) {
   options.metaCellSize = 16;
   const TwoRuns runs = runBothWays(samples::ShapeKind::SaltDome, 72, options, 1, /*halo=*/0);
   EXPECT_NE(runs.assembled.positions, runs.single.positions);
+}
+
+TEST(SeamStitcher, HoldsAboutTwoLayersOfKeptCells) {
+  // Each layer's seams are stitched once the next layer is in, and their cells dropped:
+  // a ball's surface is spread evenly over z (2 pi R dz), 10 layers of meta-cells here,
+  // and the stitcher holds about two or three of them at a time.
+  ExtractOptions options;
+  options.contour.method = ContourMethod::Regular;
+  options.metaCellSize = 16;
+  Statistics stats;
+  mesh::MeshCollector mesh;
+  extractInto(shapeMask(samples::ShapeKind::Sphere, 200), options, mesh, nullptr, &stats);
+  const auto& stitch = stats.json()["stitch"];
+  const auto held = stitch["peak_held_seam_cells"].get<std::int64_t>();
+  const auto all = stitch["seam_cells"].get<std::int64_t>();
+  EXPECT_GT(held, 0);
+  EXPECT_LT(3 * held, all) << held << " of " << all;
+  EXPECT_EQ(stitch["missing_cells"].get<std::int64_t>(), 0);
 }
 
 TEST(MetaCellPieces, TruncatedOrForeignBytesAreRefusedByName) {

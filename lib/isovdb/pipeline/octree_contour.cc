@@ -520,27 +520,27 @@ void SeamedMeshAssembler::add(const volume::MetaCellIndex& index, contour::MetaC
   sink_.addVertices(block.mesh.positions);
   sink_.addTriangles(block.mesh.triangles);
   contour::rebaseSeam(block.seam, base);
-  seams_.add(index, std::move(block.seam));
+  stitcher_.add(index, std::move(block.seam));
 }
 
 void SeamedMeshAssembler::finish(Interrupter* interrupter, Statistics* stats) {
-  stitch::StitchStats stitchStats;
   {
     Statistics::StageTimer timer(stats, "stitch");
     mesh::Mesh tail;
-    stitch::stitchSeams(seams_, settings_, metaCellSize_, static_cast<std::uint32_t>(sink_.vertexCount()), tail,
-                        &stitchStats, interrupter);
+    stitcher_.finish(static_cast<std::uint32_t>(sink_.vertexCount()), tail, interrupter);
     sink_.addVertices(tail.positions);
     sink_.addTriangles(tail.triangles);
   }
   if (!stats) return;
+  const stitch::StitchStats& figures = stitcher_.stats();
   Statistics::Json st = Statistics::Json::object();
-  st["meta_faces"] = stitchStats.metaFaces;
-  st["meta_edges"] = stitchStats.metaEdges;
-  st["seam_cells"] = stitchStats.seamCells;
-  st["edges"] = stitchStats.edges;
-  if (settings_.contoursByMinimalEdges()) st["fanned_edges"] = stitchStats.fannedEdges;
-  st["missing_cells"] = stitchStats.missingCells;
+  st["meta_faces"] = figures.metaFaces;
+  st["meta_edges"] = figures.metaEdges;
+  st["seam_cells"] = figures.seamCells;
+  st["peak_held_seam_cells"] = figures.peakHeldCells;
+  st["edges"] = figures.edges;
+  if (stitcher_.settings().contoursByMinimalEdges()) st["fanned_edges"] = figures.fannedEdges;
+  st["missing_cells"] = figures.missingCells;
   (*stats)["stitch"] = st;
 }
 

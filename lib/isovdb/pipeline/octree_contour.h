@@ -50,22 +50,21 @@ class MetaCellConsumer {
 };
 
 /// Appends each meta-cell's mesh to a sink, its ids moved after the vertices already
-/// there, and keeps its seam; finish() stitches the seams into the sink. What one process
+/// there, and hands its seam to the stitcher (which stitches each layer's seams once the
+/// next layer is complete); finish() appends the stitched mesh to the sink. What one process
 /// does with its meta-cells, and what a distributed run's client does with the pieces its
 /// tasks return: the same calls in the same order, so the same bytes.
 class SeamedMeshAssembler final : public MetaCellConsumer {
  public:
   SeamedMeshAssembler(const cell::ContourSettings& settings, int metaCellSize, mesh::MeshSink& sink)
-      : settings_(settings), metaCellSize_(metaCellSize), sink_(sink) {}
+      : sink_(sink), stitcher_(settings, metaCellSize) {}
   void add(const volume::MetaCellIndex& index, contour::MetaCellMesh&& block) override;
   /// Stitches every seam kept (stage "stitch"; figures under "stitch").
   void finish(Interrupter* interrupter = nullptr, Statistics* stats = nullptr);
 
  private:
-  cell::ContourSettings settings_;
-  int metaCellSize_;
   mesh::MeshSink& sink_;
-  stitch::SeamStore seams_;
+  stitch::SeamStitcher stitcher_;  ///< stitches as layers complete; its mesh goes last
 };
 
 /// Contours a DistanceField (inside = value <= iso) or a Scalar volume (inside =

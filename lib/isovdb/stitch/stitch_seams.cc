@@ -2,10 +2,14 @@
 // Copyright Contributors to the isovdb project.
 #include "isovdb/stitch/stitch_seams.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <limits>
 #include <vector>
 
 #include "isovdb/contour/adaptive_edges.h"
+#include "isovdb/errors.h"
 #include "isovdb/cell/dmc_table.h"
 #include "isovdb/contour/regular_contour.h"
 #include "isovdb/contour/voxel_dmc.h"
@@ -133,7 +137,10 @@ void stitchAdaptive(const Seam& seam, const EdgeOctree& edgeTree, int s, bool in
 
 void SeamStore::add(const MetaCellIndex& index, contour::MetaCellSeam seam) {
   cells_ += seam.cells.size();
-  seams_[{index[2], index[1], index[0]}] = std::move(seam);
+  held_ += seam.cells.size();
+  contour::MetaCellSeam& slot = seams_[{index[2], index[1], index[0]}];
+  held_ -= slot.cells.size();  // a meta-cell added again replaces its seam
+  slot = std::move(seam);
 }
 
 contour::MetaCellSeam* SeamStore::find(const MetaCellIndex& index) {
@@ -141,45 +148,89 @@ contour::MetaCellSeam* SeamStore::find(const MetaCellIndex& index) {
   return it == seams_.end() ? nullptr : &it->second;
 }
 
-void stitchSeams(SeamStore& store, const cell::ContourSettings& options, int metaCellSize, std::uint32_t vertexBase,
-                 mesh::Mesh& out, StitchStats* stats, Interrupter* interrupter) {
-  ProgressStage progress(interrupter, "stitching seams");
-  StitchStats local;
-  local.seamCells = static_cast<std::int64_t>(store.cellCount());
-  const int s = metaCellSize;
-  const contour::VertexAdder addVertex = contour::appendingTo(out, vertexBase);
-  contour::FaceVertexMap faceVertices;
-  for (const auto& [zyx, seam] : store.byZyx())
-    for (const contour::SeamFace& face : seam.faces) faceVertices.emplace(face.face, face.vertex);
+void SeamStore::dropBelow(int z) {
+  const auto end = seams_.lower_bound({z, std::numeric_limits<int>::min(), std::numeric_limits<int>::min()});
+  for (auto it = seams_.begin(); it != end; ++it) held_ -= it->second.cells.size();
+  seams_.erase(seams_.begin(), end);
+}
 
+namespace {
+
+/// Provisional ids of the stitcher's vertices until the output's vertex count is known.
+constexpr std::uint32_t kProvisionalBase = std::uint32_t{1} << 31;
+
+}  // namespace
+
+SeamStitcher::SeamStitcher(const cell::ContourSettings& settings, int metaCellSize)
+    : settings_(settings),
+      metaCellSize_(metaCellSize),
+      stitchedBelow_(std::numeric_limits<int>::min()),
+      lastZ_(std::numeric_limits<int>::min()) {}
+
+void SeamStitcher::add(const MetaCellIndex& index, contour::MetaCellSeam seam) {
+  if (index[2] > lastZ_) {
+    // Every layer below this one is complete: the seams whose reference lies below the
+    // previous layer read nothing more to come, and their cells nothing later reads.
+    if (lastZ_ != std::numeric_limits<int>::min()) {
+      stitchBelow(index[2] - 1, nullptr);
+      store_.dropBelow(index[2] - 1);
+    }
+    lastZ_ = index[2];
+  }
+  for (const contour::SeamFace& face : seam.faces) faceVertices_.emplace(face.face, face.vertex);
+  stats_.seamCells += static_cast<std::int64_t>(seam.cells.size());
+  store_.add(index, std::move(seam));
+  stats_.peakHeldCells = std::max(stats_.peakHeldCells, static_cast<std::int64_t>(store_.heldCellCount()));
+}
+
+void SeamStitcher::stitchBelow(int z, Interrupter* interrupter) {
+  const int s = metaCellSize_;
+  const contour::VertexAdder addVertex = contour::appendingTo(tail_, kProvisionalBase);
   auto stitch = [&](const Seam& seam) {
     const std::vector<int> octants = seam.octants();
     std::vector<std::vector<SeamCell>*> around;
     for (const int o : octants) {
       const MetaCellIndex index{seam.reference[0] + (o & 1), seam.reference[1] + ((o >> 1) & 1),
                                 seam.reference[2] + ((o >> 2) & 1)};
-      contour::MetaCellSeam* m = store.find(index);
+      contour::MetaCellSeam* m = store_.find(index);
       if (!m || m->cells.empty()) return;  // a sign change on the seam would have made it a contoured meta-cell
       around.push_back(&m->cells);
     }
     const EdgeOctree edgeTree = buildEdgeOctree(seam, around, s);
-    if (!options.contoursByMinimalEdges())
-      stitchRegular(seam, edgeTree, s, options.topology == cell::RegularTopology::Voxels, out, local);
+    if (!settings_.contoursByMinimalEdges())
+      stitchRegular(seam, edgeTree, s, settings_.topology == cell::RegularTopology::Voxels, tail_, stats_);
     else
-      stitchAdaptive(seam, edgeTree, s, options.intersectionFree, addVertex, faceVertices, out, local);
-    ++(seam.kind == Seam::Kind::Face ? local.metaFaces : local.metaEdges);
+      stitchAdaptive(seam, edgeTree, s, settings_.intersectionFree, addVertex, faceVertices_, tail_, stats_);
+    ++(seam.kind == Seam::Kind::Face ? stats_.metaFaces : stats_.metaEdges);
   };
-
   // Stitching only changes kept cells (adaptive vertex ids), never the store's map.
-  std::size_t visited = 0;
-  const std::size_t total = store.metaCellCount();
-  for (const auto& [zyx, seam] : store.byZyx()) {
-    const MetaCellIndex reference{zyx[2], zyx[1], zyx[0]};
+  ProgressStage progress(interrupter, "stitching seams");
+  const auto& seams = store_.byZyx();
+  const auto first =
+      seams.lower_bound({stitchedBelow_, std::numeric_limits<int>::min(), std::numeric_limits<int>::min()});
+  const auto end = seams.lower_bound({z, std::numeric_limits<int>::min(), std::numeric_limits<int>::min()});
+  const auto total = static_cast<double>(std::distance(first, end));
+  double visited = 0;
+  for (auto it = first; it != end; ++it) {
+    const MetaCellIndex reference{it->first[2], it->first[1], it->first[0]};
     for (int axis = 0; axis < 3; ++axis) stitch(Seam{Seam::Kind::Face, reference, axis});
     for (int axis = 0; axis < 3; ++axis) stitch(Seam{Seam::Kind::Edge, reference, axis});
-    progress.update(static_cast<double>(++visited), static_cast<double>(total));
+    progress.update(++visited, total);
   }
-  if (stats) *stats = local;
+  stitchedBelow_ = std::max(stitchedBelow_, z);
+}
+
+void SeamStitcher::finish(std::uint32_t vertexBase, mesh::Mesh& out, Interrupter* interrupter) {
+  stitchBelow(std::numeric_limits<int>::max(), interrupter);
+  if (vertexBase > kProvisionalBase || tail_.positions.size() > kProvisionalBase - vertexBase)
+    throw InputError("the mesh has more than 2^31 vertices; use a larger --max-error or --meta-cell");
+  for (mesh::Triangle& t : tail_.triangles)
+    for (std::uint32_t& v : t)
+      if (v >= kProvisionalBase) v = v - kProvisionalBase + vertexBase;
+  out.positions.insert(out.positions.end(), tail_.positions.begin(), tail_.positions.end());
+  out.triangles.insert(out.triangles.end(), tail_.triangles.begin(), tail_.triangles.end());
+  tail_ = {};
+  store_.dropBelow(std::numeric_limits<int>::max());
 }
 
 }  // namespace isovdb::stitch
