@@ -75,7 +75,8 @@ def run_dask(client, volume, out, method, meta_cell, slab_layers):
             "client_rss": isovdb.distributed._peak_rss(),
             "seam_bytes": seam, "bytes": sum(s["bytes"] for s in slabs), "meta_cells": meta_cells,
             "slabs": len(slabs), "stitch": stats["timings_s"].get("stitch", 0.0),
-            "task_seconds": sum(s["seconds"] for s in slabs), "triangles": stats["contour"]["triangles"]}
+            "task_seconds": sum(s["seconds"] for s in slabs), "triangles": stats["contour"]["triangles"],
+            "per_slab": slabs, "client_timings": stats["timings_s"], "output_bytes": os.path.getsize(out)}
 
 
 def main():
@@ -89,6 +90,8 @@ def main():
     parser.add_argument("--repeat", type=int, default=1)
     parser.add_argument("--build", default="build")
     parser.add_argument("--work", default=tempfile.gettempdir())
+    parser.add_argument("--per-slab", action="store_true",
+                        help="also print each task's figures (the inputs of a scaling model) for the last run")
     args = parser.parse_args()
     build = args.build if os.path.isabs(args.build) else os.path.join(ROOT, args.build)
     sys.path.insert(0, os.path.join(build, "python"))
@@ -138,6 +141,14 @@ def main():
                       f"{last['seam_bytes'] / MIB:.1f} MiB, {last['seam_bytes'] / max(1, last['meta_cells']) / 1024:.0f} KiB | "
                       f"{statistics.median(r['stitch'] for r in dask_runs):.2f} | "
                       f"{'yes' if all(r['same'] for r in dask_runs) else 'NO'} |")
+                if args.per_slab:
+                    print(f"<!-- {shape} {size}, {w} worker(s): output {last['output_bytes'] / MIB:.1f} MiB, "
+                          f"task seconds {last['task_seconds']:.2f}, client timings {last['client_timings']} -->")
+                    for slab in last["per_slab"]:
+                        print(f"<!--   layers {slab['layers']}: {slab['meta_cells']} meta-cells, "
+                              f"{slab['bytes'] / MIB:.2f} MiB ({slab['seam_bytes'] / MIB:.2f} seam), "
+                              f"read {slab['read_s']:.2f} s of {slab['seconds']:.2f} s, "
+                              f"peak {slab['peak_rss_bytes'] / MIB:.0f} MiB -->")
             sys.stdout.flush()
     for cluster, client, _ in clusters.values():
         client.close()

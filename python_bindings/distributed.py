@@ -148,10 +148,17 @@ def _peak_rss():
 
 
 def _layers_of(header, meta_cell, slab_layers):
-    """Slabs [begin, end) of meta-cell layers covering the sampled box along z, one layer
-    beyond each face (caps made beyond the data lie there)."""
+    """Slabs [begin, end) of meta-cell layers covering the sampled box along z (a .vdb
+    grid's recorded active box when it has none), one layer beyond each face (caps made
+    beyond the data lie there)."""
     info = header.info()
-    lo, hi = info["sampled_min"][2], info["sampled_max"][2]
+    if "sampled_min" in info:
+        lo, hi = info["sampled_min"][2], info["sampled_max"][2]
+    elif "file_bbox_min" in info["input"]:
+        lo, hi = info["input"]["file_bbox_min"][2], info["input"]["file_bbox_max"][2]
+    else:
+        raise ValueError(f"'{info['name']}': the file records neither its sampled box nor its grid's active box, "
+                         "so its slabs are unknown (write it again with OpenVDB or isovdb)")
     first = math.floor((lo - 1) / meta_cell)
     end = math.floor(hi / meta_cell) + 1
     return [(k, min(k + slab_layers, end)) for k in range(first, end, slab_layers)]
@@ -188,8 +195,6 @@ def extract(source, output, client=None, *, read=None, slab_layers=1, progress=N
         raise ValueError("meta_cell: a distributed run needs meta-cells (16..512), not 0")
     source = _Source(source, read)
     header = source.volume((0, 0))
-    if header.kind == "distance field":
-        raise ValueError(f"'{source.path}': a distributed run meshes masks and scalar fields, not distance fields")
     slabs = _layers_of(header, meta_cell, slab_layers)
     halo = isovdb._slab_halo(settings)
     if client is None:
@@ -204,7 +209,7 @@ def _run(client, source, header, settings, slabs, halo, output, progress):
     run = uuid.uuid4().hex[:12]
     meta_cell = settings.get("meta_cell", 128)
     value_range = None
-    if header.kind == "scalar":
+    if header.kind != "mask":
         ranges = client.gather([client.submit(_range_task, source, (b * meta_cell, e * meta_cell), pure=False,
                                               key=f"isovdb-range-{run}-{b}") for b, e in slabs])
         value_range = isovdb._value_range(header, ranges)

@@ -478,7 +478,8 @@ progress: callable(stage: str, percent: int) called as the reading advances; if 
   raises, the reading stops and its exception propagates.
 window=(begin, end): read only the samples whose grid z lies in [begin, end) (one slab of
   a distributed run, isovdb.distributed); the others read as holes (outside a mask). The
-  Volume keeps the file's whole index space, geometry and box. Not for .vdb files.
+  Volume keeps the file's whole index space, geometry and box (a .vdb: only the slab's
+  leaves are read; info()["input"] gives the grid's recorded box, file_bbox_min/max).
 
 Raises OSError for a missing or unreadable file, ValueError for a bad header, bad data or
 contradicting keywords (the message names the file and the problem).)doc");

@@ -170,13 +170,13 @@ int slabHalo(const ExtractOptions& options) {
 
 void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::MeshSink& sink, Interrupter* interrupter,
                  Statistics* stats, const ExtractPart* part) {
-  if (part && (volume.kind() == volume::VolumeKind::DistanceField || options.contour.method == ContourMethod::Vdb ||
-               options.metaCellSize == 0 || options.distance.method != volume::DistanceMethod::Interface))
+  if (part && (options.contour.method == ContourMethod::Vdb || options.metaCellSize == 0 ||
+               options.distance.method != volume::DistanceMethod::Interface))
     throw InputError("'" + volume.name() +
-                     "': a distributed run contours masks and scalar fields in meta-cells with the regular or "
-                     "adaptive method (and a mask's interface distance field)");
-  if (part && volume.kind() == volume::VolumeKind::Scalar && !part->valueRange)
-    throw InputError("'" + volume.name() + "': a part of a scalar field's run needs the whole field's value range");
+                     "': a distributed run contours in meta-cells with the regular or adaptive method (and a mask's "
+                     "interface distance field)");
+  if (part && volume.kind() != volume::VolumeKind::Mask && !part->valueRange)
+    throw InputError("'" + volume.name() + "': a part of a field's run needs the whole field's value range");
   if (options.threads < 0)
     throw InputError("--threads: expected 0 (every core) or more, got " + std::to_string(options.threads));
   std::optional<tbb::global_control> threads;

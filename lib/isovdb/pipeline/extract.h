@@ -105,9 +105,9 @@ struct ExtractPart {
   MetaCellConsumer* pieces = nullptr;    ///< task: where its meta-cells go
   /// Client: the next meta-cell of the run, in meta-cell order; false after the last.
   std::function<bool(volume::MetaCellIndex&, contour::MetaCellMesh&)> received;
-  /// Scalar fields, task and client alike: the whole volume's value range (valueRangeOf
-  /// the slabs' SampleRanges), which neither holds: the default iso, the iso's check and
-  /// the far-outside value beyond the box derive from it.
+  /// Fields (scalar, distance), task and client alike: the whole volume's value range
+  /// (valueRangeOf the slabs' SampleRanges), which neither holds: the default iso, the
+  /// iso's check and the far-outside value beyond the box derive from it.
   std::optional<std::pair<float, float>> valueRange;
 };
 
@@ -145,7 +145,7 @@ mesh::Mesh extractMesh(volume::Volume volume, const ExtractOptions& options, Int
 /// The same, streamed into `sink` in voxel INDEX space (the octree methods hand
 /// it one meta-cell at a time; apply volume.geometry() in the sink, e.g.
 /// io::PlyStreamWriter's transform).
-/// `part`: one side of a distributed run (see ExtractPart); masks and scalar fields.
+/// `part`: one side of a distributed run (see ExtractPart).
 void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::MeshSink& sink,
                  Interrupter* interrupter = nullptr, Statistics* stats = nullptr, const ExtractPart* part = nullptr);
 

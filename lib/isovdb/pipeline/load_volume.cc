@@ -131,12 +131,18 @@ volume::Volume loadVolume(const std::filesystem::path& path, const InputOptions&
   Statistics::Json input = Statistics::Json::object();
   input["path"] = path.string();
   if (isVdbPath(path)) {
-    if (options.window)
-      throw InputError("'" + path.string() +
-                       "': a .vdb file is read whole; slabs of a distributed run read raw, NRRD, MetaImage and "
-                       "SEG-Y files (or arrays)");
     input["format"] = "vdb";
-    result = store::readVdb(path, options.gridName);
+    if (options.window) {
+      std::optional<volume::IndexBox> fileBox;
+      result = store::readVdb(path, options.gridName, {options.window->begin, options.window->end}, &fileBox);
+      input["window_z"] = {options.window->begin, options.window->end};
+      if (fileBox) {
+        input["file_bbox_min"] = fileBox->min;
+        input["file_bbox_max"] = fileBox->max;
+      }
+    } else {
+      result = store::readVdb(path, options.gridName);
+    }
   } else if (options.segy || io::isSegyPath(path)) {
     const std::unique_ptr<io::SegyStream> stream = io::openSegy(path, options.segy.value_or(io::SegyOptions{}));
     input["format"] = "segy";

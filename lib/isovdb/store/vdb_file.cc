@@ -6,6 +6,7 @@
 #include <openvdb/tools/ChangeBackground.h>
 #include <openvdb/tools/ValueTransformer.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "isovdb/errors.h"
@@ -131,8 +132,51 @@ Volume toVolume(openvdb::GridBase::Ptr base, const std::filesystem::path& path) 
                    " values, expected a float, double, bool or mask grid");
 }
 
-/// readVdb's work, inside guardedRead.
-Volume readVdbGrid(const std::filesystem::path& path, const std::string& gridName) {
+/// The grid's active box as the file records it, if it does.
+std::optional<volume::IndexBox> recordedBox(openvdb::io::File& file, const std::string& name) {
+  const openvdb::GridBase::ConstPtr meta = file.readGridMetadata(name);
+  const auto lo = meta->getMetadata<openvdb::Vec3IMetadata>(openvdb::GridBase::META_FILE_BBOX_MIN);
+  const auto hi = meta->getMetadata<openvdb::Vec3IMetadata>(openvdb::GridBase::META_FILE_BBOX_MAX);
+  if (!lo || !hi) return std::nullopt;
+  return volume::IndexBox{{lo->value().x(), lo->value().y(), lo->value().z()},
+                          {hi->value().x(), hi->value().y(), hi->value().z()}};
+}
+
+/// The voxels of index z in [z0, z1): read clipped to their world box (a voxel wider; the
+/// clipped read keeps whole leaves), then clipped exactly in index space. Across x and y
+/// the box is the grid's recorded one (OpenVDB's clipping walks the box's extent); a file
+/// that records none is read whole, then clipped.
+openvdb::GridBase::Ptr readZWindow(openvdb::io::File& file, const std::string& name,
+                                   const std::array<std::int64_t, 2>& window,
+                                   const std::optional<volume::IndexBox>& box) {
+  constexpr int kFar = 1 << 29;
+  const auto z0 = static_cast<int>(std::clamp<std::int64_t>(window[0], -kFar, kFar));
+  const auto z1 = static_cast<int>(std::clamp<std::int64_t>(window[1], -kFar, kFar));
+  openvdb::GridBase::Ptr grid;
+  openvdb::CoordBBox across;
+  if (box) {
+    across =
+        openvdb::CoordBBox(openvdb::Coord(box->min[0], box->min[1], 0), openvdb::Coord(box->max[0], box->max[1], 0));
+    const openvdb::GridBase::ConstPtr meta = file.readGridMetadata(name);
+    openvdb::BBoxd world;
+    for (int corner = 0; corner < 8; ++corner)
+      world.expand(meta->transform().indexToWorld(openvdb::Vec3d((corner & 1) ? box->max[0] + 1 : box->min[0] - 1,
+                                                                 (corner & 2) ? box->max[1] + 1 : box->min[1] - 1,
+                                                                 (corner & 4) ? z1 + 1 : z0 - 1)));
+    grid = file.readGrid(name, world);
+  } else {
+    grid = file.readGrid(name);
+    across = grid->evalActiveVoxelBoundingBox();
+  }
+  grid->clip(openvdb::CoordBBox(openvdb::Coord(across.min().x() - 1, across.min().y() - 1, z0),
+                                openvdb::Coord(across.max().x() + 1, across.max().y() + 1, z1 - 1)));
+  return grid;
+}
+
+/// readVdb's work, inside guardedRead; `window` (optional): only those index z.
+Volume readVdbGrid(const std::filesystem::path& path, const std::string& gridName,
+                   const std::array<std::int64_t, 2>* window = nullptr,
+                   std::optional<volume::IndexBox>* fileBox = nullptr) {
   const auto file = openFile(path);
   std::string name = gridName;
   if (name.empty()) {
@@ -155,7 +199,13 @@ Volume readVdbGrid(const std::filesystem::path& path, const std::string& gridNam
   }
   openvdb::GridBase::Ptr grid;
   try {
-    grid = file->readGrid(name);
+    if (window) {
+      const std::optional<volume::IndexBox> box = recordedBox(*file, name);
+      if (fileBox) *fileBox = box;
+      grid = readZWindow(*file, name, *window, box);
+    } else {
+      grid = file->readGrid(name);
+    }
   } catch (const openvdb::Exception& e) {
     throw InputError(quoted(path) + ": cannot read grid '" + name + "' (" + std::string(e.what()) + ")");
   }
@@ -179,6 +229,11 @@ std::vector<VdbGridInfo> listVdbGrids(const std::filesystem::path& path) {
 
 Volume readVdb(const std::filesystem::path& path, const std::string& gridName) {
   return guardedRead(path, [&] { return readVdbGrid(path, gridName); });
+}
+
+Volume readVdb(const std::filesystem::path& path, const std::string& gridName,
+               const std::array<std::int64_t, 2>& zWindow, std::optional<volume::IndexBox>* fileBox) {
+  return guardedRead(path, [&] { return readVdbGrid(path, gridName, &zWindow, fileBox); });
 }
 
 void writeVdb(const std::filesystem::path& path, const Volume& volume, const VdbWriteOptions& options) {

@@ -10,10 +10,14 @@
 /// On write, the reverse happens, so VFX tools see world units.
 #pragma once
 
+#include <array>
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "isovdb/volume/sampled_box.h"
 #include "isovdb/volume/volume.h"
 
 namespace isovdb::store {
@@ -35,6 +39,14 @@ std::vector<VdbGridInfo> listVdbGrids(const std::filesystem::path& path);
 /// @throw InputError naming the file when the grid is missing, of an unsupported
 ///        type, or has a transform that is not an axis-aligned scale + translation.
 volume::Volume readVdb(const std::filesystem::path& path, const std::string& gridName = {});
+
+/// The same grid, only the voxels whose index z lies in [zWindow[0], zWindow[1]) (one
+/// slab of a distributed run): the leaves' buffers outside are not read (OpenVDB's
+/// clipped read), the rest is clipped exactly in index space. `fileBox` (optional)
+/// receives the whole grid's active box as the file records it (OpenVDB's
+/// file_bbox_min/max), or stays empty when it records none.
+volume::Volume readVdb(const std::filesystem::path& path, const std::string& gridName,
+                       const std::array<std::int64_t, 2>& zWindow, std::optional<volume::IndexBox>* fileBox);
 
 struct VdbWriteOptions {
   std::string gridName;  ///< empty: "sdf", "mask" or "field" by kind
