@@ -98,7 +98,7 @@ def _is_zarr(source):
 
 
 def _range_task(source, window):
-    """A scalar field's first pass: the samples of one slab (no halo: slabs tile z once)."""
+    """A field's first pass: the samples of one slab (no halo: the slabs tile z once)."""
     return isovdb._sample_range(source.volume(window))
 
 
@@ -108,7 +108,7 @@ def _slab_task(source, settings, layers, halo, value_range):
     if "threads" not in settings:
         try:
             from distributed import get_worker
-            settings["threads"] = get_worker().state.nthreads
+            settings["threads"] = get_worker().nthreads
         except (ImportError, ValueError, AttributeError):
             pass
     meta_cell = settings.get("meta_cell", 128)
