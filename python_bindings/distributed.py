@@ -53,10 +53,12 @@ class _Source:
             if root is None:
                 raise ValueError("isovdb.distributed: a Zarr array must live in a directory store (zarr.open(PATH)) "
                                  "so that every worker can open it")
-            self.zarr = (os.fspath(root), source.path)
-            self.path = os.fspath(root)
+            self.zarr = (os.path.abspath(os.fspath(root)), source.path)
+            self.path = self.zarr[0]
         else:
-            self.path = os.fspath(source)
+            # Absolute: the workers run elsewhere (another folder, another machine with the
+            # same shared storage), and open the file at this path.
+            self.path = os.path.abspath(os.fspath(source))
             if os.path.isdir(self.path):
                 self.zarr = (self.path, "")
         if self.zarr:
