@@ -172,6 +172,17 @@ def test_a_worker_killed_mid_run_changes_no_byte(client, cli, data_dir, tmp_path
     assert victim not in client.run(os.getpid).values()
 
 
+def test_a_relative_path_is_the_clients(client, cli, data_dir, tmp_path, monkeypatch):
+    # The workers stay in the folder they started in (or on another machine): the client
+    # resolves the path before sending it.
+    frog = data_dir / "frog" / "frogtissue.mhd"
+    expected = cli_mesh(cli, tmp_path, frog, "--labels", "13", "--method", "regular")
+    monkeypatch.chdir(frog.parent)
+    out = tmp_path / "relative.ply"
+    isovdb.distributed.extract("frogtissue.mhd", out, client, read=dict(labels=[13]), method="regular")
+    assert same_file(out, expected)
+
+
 def test_bad_input_fails_the_run_with_the_readers_message_and_leaves_no_file(client, tmp_path):
     stack = blobs_zyx((64, 40, 40), seed=2)
     short = tmp_path / "short.raw"
