@@ -7,6 +7,10 @@ on a synthetic corner-point grid (default 150 x 100 x 100 = 1.5 M cells: undulat
 dipping layers, a fault throw across the middle pillars, a porosity field with many
 folds of its iso-surface) and on any GRDECL decks given with --deck (e.g. ResInsight's
 Reek: TestModels/reek/reek_box_grid_w_props.grdecl, PORO 0.2). Target (#23): 10 M cells/s.
+Two figures per grid: the stage as `isovdb reservoir` runs it (once per process, on fresh
+memory), and the median of --repeats runs in one process (build/bench/isovdb-reservoir-mc,
+where the stage's memory is warm: a small deck's milliseconds are below the noise of
+whole runs).
 
 Run on demand, never in CI:
     /usr/bin/python3 bench/reservoir_speed.py [--nx 150 --ny 100 --nz 100] [--runs 5]
@@ -78,12 +82,19 @@ def marching_cubes_rate(isovdb, deck_files, prop, iso, runs, work):
     return cells, triangles, median, cells / median if median > 0 else float("inf")
 
 
+def in_process_rate(tool, deck_files, prop, iso, repeats):
+    out = subprocess.run([tool, *deck_files, "--property", prop, "--iso", str(iso), "--repeats", str(repeats)],
+                         check=True, capture_output=True, text=True).stdout
+    return json.loads(out.strip().splitlines()[-1])
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--nx", type=int, default=150)
     parser.add_argument("--ny", type=int, default=100)
     parser.add_argument("--nz", type=int, default=100)
     parser.add_argument("--runs", type=int, default=5)
+    parser.add_argument("--repeats", type=int, default=50, help="in-process runs (isovdb-reservoir-mc)")
     parser.add_argument("--deck", nargs="+", action="append", default=[], help="GRDECL deck (+ property files)")
     parser.add_argument("--property", default="PORO")
     parser.add_argument("--iso", type=float, default=0.2)
@@ -101,10 +112,14 @@ def main():
     rows.append((f"synthetic {args.nx}x{args.ny}x{args.nz}", [synthetic], "PORO", 0.2))
     for files in args.deck:
         rows.append((os.path.basename(files[0]), files, args.property, args.iso))
-    print(f"{'grid':<36} {'cells':>10} {'triangles':>10} {'MC s (median)':>14} {'M cells/s':>10}")
+    tool = os.path.join(args.build, "bench", "isovdb-reservoir-mc")
+    print(f"{'grid':<36} {'cells':>10} {'triangles':>10} {'MC s (median)':>14} {'M cells/s':>10}"
+          f" {'in-process s':>13} {'M cells/s':>10}")
     for name, files, prop, iso in rows:
         cells, triangles, median, rate = marching_cubes_rate(isovdb, files, prop, iso, args.runs, args.work)
-        print(f"{name:<36} {cells:>10,} {triangles:>10,} {median:>14.4f} {rate / 1e6:>10.2f}", flush=True)
+        warm = in_process_rate(tool, files, prop, iso, args.repeats) if os.access(tool, os.X_OK) else None
+        warm_cols = f" {warm['median_s']:>13.4f} {warm['m_cells_per_s']:>10.2f}" if warm else ""
+        print(f"{name:<36} {cells:>10,} {triangles:>10,} {median:>14.4f} {rate / 1e6:>10.2f}{warm_cols}", flush=True)
 
 
 if __name__ == "__main__":

@@ -28,7 +28,7 @@ using hex::ThreadOutput;
 
 /// Cells per block: blocks are the unit of parallel work and their outputs are merged in
 /// order, so the mesh does not depend on the thread count.
-constexpr std::size_t kBlockCells = 4096;
+constexpr std::size_t kBlockCells = 1024;
 
 /// A crossing on a fault face moved into its own side (`side`: the sum of its cells' vectors
 /// from the face's centre to the cell's) by a hundredth of that, and at least 16 float
@@ -191,9 +191,15 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
   resizeHuge(m.positions, vertices);
   std::vector<Vec3d> gradients;
   if (options.normals) resizeHuge(gradients, vertices);
-  const auto blockOf = [&](std::uint32_t slot) {
-    return static_cast<std::size_t>(std::upper_bound(firstSlot.begin(), firstSlot.end(), slot) - firstSlot.begin() - 1);
-  };
+  // Each slot's gradient, found without a search for its block.
+  std::vector<const Vec3d*> gradientOfSlot;
+  if (options.normals) {
+    resizeHuge(gradientOfSlot, slots);
+    tbb::parallel_for(std::size_t{0}, outputs.size(), [&](std::size_t block) {
+      const Vec3d* first = outputs[block].gradients().data();
+      for (std::size_t n = 0; n < outputs[block].keyCount; ++n) gradientOfSlot[firstSlot[block] + n] = first + n;
+    });
+  }
   tbb::parallel_for(std::size_t{0}, vertices, [&](std::size_t v) {
     const std::uint64_t key = records[runStart[v]].key;
     Eigen::Vector3f position;
@@ -215,11 +221,7 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
     m.positions[v] = {position.x(), position.y(), position.z()};
     if (!options.normals) return;
     Vec3d sum = Vec3d::Zero();
-    for (std::uint32_t n = runStart[v]; n < runStart[v + 1]; ++n) {
-      const std::uint32_t slot = records[n].slot;
-      const std::size_t block = blockOf(slot);
-      sum += outputs[block].gradients()[slot - firstSlot[block]];
-    }
+    for (std::uint32_t n = runStart[v]; n < runStart[v + 1]; ++n) sum += *gradientOfSlot[records[n].slot];
     gradients[v] = sum;
   });
 

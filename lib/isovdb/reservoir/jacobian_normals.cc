@@ -6,14 +6,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 
 namespace isovdb::reservoir {
 
-Vec3d cornerGradient(const CornerPointGrid& grid, const CornerField& field, std::size_t cell,
-                     const std::array<int, 3>& ijk, int corner) {
-  const auto& ids = grid.pointIds[cell];
-  const double v = field.pointValues[ids[corner]];
+Vec3d cornerGradient(const CornerPointGrid& grid, const CornerField& field, const HexCell& cell, int corner) {
+  const double v = cell.values[static_cast<std::size_t>(corner)];
   std::array<Vec3d, 3> jacobian;  // columns
   Vec3d gradientU;
   double largest = 0;
@@ -21,14 +18,14 @@ Vec3d cornerGradient(const CornerPointGrid& grid, const CornerField& field, std:
     const int bit = (corner >> a) & 1;
     const int other = corner ^ (1 << a);
     const double sign = bit ? 1.0 : -1.0;  // +u lies towards the neighbour when bit is 1
-    jacobian[a] = sign * (grid.points[ids[corner]] - grid.points[ids[other]]);
+    jacobian[a] = sign * (cell.points[static_cast<std::size_t>(corner)] - cell.points[static_cast<std::size_t>(other)]);
     largest = std::max(largest, jacobian[a].cwiseAbs().maxCoeff());
-    const double near = field.pointValues[ids[other]];
+    const double near = cell.values[static_cast<std::size_t>(other)];
     double derivative = sign * (v - near);
     // The neighbour cell along this axis on the side of the corner: its corner with the
     // same bits lies one cell further along the axis.
-    if (const std::optional<std::size_t> neighbour = field.usableNeighbour(grid, ijk, a, bit)) {
-      const double far = field.value(grid, *neighbour, corner);
+    if (const std::size_t neighbour = cell.neighbour(a, bit); neighbour != HexCell::kNone) {
+      const double far = field.value(grid, neighbour, corner);
       if (std::isfinite(far)) derivative = 0.5 * sign * (far - near);
     }
     gradientU[a] = derivative;

@@ -9,12 +9,12 @@
 #pragma once
 
 #include "isovdb/reservoir/corner_point_grid.h"
+#include "isovdb/reservoir/hex_cell.h"
 
 namespace isovdb::reservoir {
 
-/// World-space gradient of `field` at corner `corner` of `cell`, whose grid indices are
-/// `ijk`; zero when the cell's Jacobian is singular there (a collapsed cell).
-Vec3d cornerGradient(const CornerPointGrid& grid, const CornerField& field, std::size_t cell,
-                     const std::array<int, 3>& ijk, int corner);
+/// World-space gradient of `field` at corner `corner` of `cell`; zero when the cell's
+/// Jacobian is singular there (a collapsed cell).
+Vec3d cornerGradient(const CornerPointGrid& grid, const CornerField& field, const HexCell& cell, int corner);
 
 }  // namespace isovdb::reservoir
