@@ -31,6 +31,8 @@ void addReservoirCommand(CLI::App& app, Context& context) {
       ->required();
   command->add_option("--tessellate", state->tessellate, "max=K: curved PN triangles, per-edge factors up to K");
   command->add_option("--stats", state->statsPath, "Also write the figures as JSON");
+  command->add_option("--threads", state->options.threads, "Worker threads (0 = every core); the output is the same")
+      ->capture_default_str();
   command
       ->add_option("--max-values", state->options.limits.maxValues,
                    "Most values the deck's keywords may hold together (n*value repeats counted); a guard "

@@ -6,6 +6,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -20,7 +21,7 @@ namespace {
 
 PyMesh extractReservoir(const std::variant<std::filesystem::path, std::vector<std::filesystem::path>>& grid,
                         const std::string& property, double iso, int tessellate, long long maxValues,
-                        const py::object& progress) {
+                        std::optional<int> threads, const py::object& progress) {
   pipeline::ReservoirOptions options;
   if (const auto* one = std::get_if<std::filesystem::path>(&grid))
     options.inputs = {*one};
@@ -30,6 +31,7 @@ PyMesh extractReservoir(const std::variant<std::filesystem::path, std::vector<st
   options.iso = iso;
   options.maxTessellation = tessellate;
   options.limits.maxValues = maxValues;
+  options.threads = threads.value_or(0);
   pipeline::Statistics stats;
   PyMesh result;
   CallbackProgress callback(progress);
@@ -44,7 +46,7 @@ void bindReservoir(py::module_& m) {
   const pipeline::ReservoirOptions defaults;
   m.def("extract_reservoir", &extractReservoir, py::arg("grid"), py::kw_only(), py::arg("property"), py::arg("iso"),
         py::arg("tessellate") = defaults.maxTessellation, py::arg("max_values") = defaults.limits.maxValues,
-        py::arg("progress") = py::none(), R"doc(
+        py::arg("threads") = py::none(), py::arg("progress") = py::none(), R"doc(
 Isosurface of a cell property of an Eclipse corner-point grid (the `isovdb reservoir` job,
 paper 003): GRDECL deck -> corner-point grid -> cell values averaged to the cell corners
 over the active cells -> Marching Cubes on each hexahedron (asymptotic decider on faces),
@@ -57,6 +59,7 @@ tessellate: 0 keeps the flat triangles; K > 0 refines them as PN triangles (cubi
   envelope normals) with per-edge factors up to K, crack-free.
 max_values: most values the deck's keywords may hold together, n*value repeats counted (a
   guard against hostile decks; each array is also bounded by the grid's size).
+threads: worker threads (None = every core); the mesh is the same.
 progress: callable(stage: str, percent: int) per stage (read grdecl, corner-point grid,
   marching cubes, pn triangles); if it raises, the work stops and its exception propagates
   (Ctrl-C too).

@@ -33,6 +33,16 @@ def test_same_bytes_as_the_cli(cli, data_dir, tmp_path):
     assert (tmp_path / "cli.ply").read_bytes() == (tmp_path / "py.ply").read_bytes()
 
 
+def test_threads_do_not_change_the_mesh(data_dir):
+    deck = data_dir / "reservoir" / "spe9" / "SPE9_CP.DATA"
+    one = isovdb.extract_reservoir(deck, property="PERMX", iso=100, threads=1)
+    every = isovdb.extract_reservoir(deck, property="PERMX", iso=100, threads=None)
+    assert np.array_equal(one.vertices, every.vertices) and np.array_equal(one.triangles, every.triangles)
+    assert np.array_equal(one.normals, every.normals)
+    with pytest.raises(ValueError, match=r"^threads: expected 0 \(every core\) or more, got -1"):
+        isovdb.extract_reservoir(deck, property="PERMX", iso=100, threads=-1)
+
+
 def test_bad_decks(tmp_path):
     with pytest.raises(OSError):
         isovdb.extract_reservoir(tmp_path / "missing.grdecl", property="PORO", iso=0.1)

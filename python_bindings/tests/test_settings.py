@@ -152,7 +152,7 @@ def test_an_argument_of_the_wrong_type_is_named_by_its_type_not_printed():
         isovdb.extract_reservoir(array, property="PORO", iso=0.2)
     message = str(raised.value)
     assert "called with (numpy.ndarray, property=str, iso=float)" in message and "grid: Union[" in message
-    assert "0." not in message and len(message) < 300
+    assert "0." not in message and len(message) < 400  # the signature line, not numpy's repr
     with pytest.raises(TypeError, match=r"read_mesh\(\): an argument has the wrong type: called with \(int\)"):
         isovdb.read_mesh(3)
 

@@ -60,6 +60,28 @@ TEST(CliReservoir, MapAxesAreStatedInEveryMeshHeader) {
   EXPECT_NE(output.find("mesh: NOT closed, manifold"), std::string::npos) << output;
 }
 
+TEST(CliReservoir, ThreadsDoNotChangeTheBytes) {
+  // SPE9's 9,000 cells are nine blocks of Marching Cubes, merged in order whatever thread
+  // made each.
+  const auto deck = dataDir() / "reservoir/spe9/SPE9_CP.DATA";
+  TempDir dir;
+  std::string output;
+  for (const std::string threads : {"1", "2", "0"})
+    ASSERT_EQ(runCommand(cliPath().string() + " -q reservoir " + deck.string() + " --property PERMX --iso 100 -o " +
+                             (dir / ("t" + threads + ".ply")).string() + " --threads " + threads,
+                         &output),
+              0)
+        << output;
+  EXPECT_EQ(readFile(dir / "t1.ply"), readFile(dir / "t2.ply"));
+  EXPECT_EQ(readFile(dir / "t1.ply"), readFile(dir / "t0.ply"));
+  EXPECT_EQ(runCommand(cliPath().string() + " -q reservoir " + deck.string() + " --property PERMX --iso 100 -o " +
+                           (dir / "bad.ply").string() + " --threads -1",
+                       &output),
+            2);
+  EXPECT_NE(output.find("--threads: expected 0 (every core) or more, got -1"), std::string::npos) << output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad.ply"));
+}
+
 TEST(CliReservoir, BadDeckFailsNamingTheFile) {
   TempDir dir;
   writeFile(dir / "bad.grdecl", "SPECGRID\n 1 1 1 1 F /\nCOORD\n 24*0 /\nZCORN\n 7*0 /\nPORO\n 1 /\n");

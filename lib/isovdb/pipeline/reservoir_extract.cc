@@ -2,6 +2,10 @@
 // Copyright Contributors to the isovdb project.
 #include "isovdb/pipeline/reservoir_extract.h"
 
+#include <tbb/global_control.h>
+
+#include "isovdb/errors.h"
+
 #include "isovdb/reservoir/corner_point_grid.h"
 #include "isovdb/reservoir/grdecl_reader.h"
 #include "isovdb/reservoir/hex_marching_cubes.h"
@@ -9,6 +13,7 @@
 
 #include <algorithm>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -39,6 +44,10 @@ std::vector<std::string> meshComments(const reservoir::GrdeclDeck& deck, const R
 }  // namespace
 
 mesh::Mesh extractReservoir(const ReservoirOptions& options, Statistics& stats, Interrupter* interrupter) {
+  if (options.threads < 0)
+    throw InputError("--threads: expected 0 (every core) or more, got " + std::to_string(options.threads));
+  std::optional<tbb::global_control> threads;
+  if (options.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, options.threads);
   reservoir::GrdeclDeck deck;
   reservoir::CornerPointGrid grid;
   reservoir::CornerField field;

@@ -21,6 +21,8 @@ struct ReservoirOptions {
   double iso = 0.0;
   int maxTessellation = 0;         ///< 0: flat MC triangles; K: PN triangles, factors up to K
   reservoir::GrdeclLimits limits;  ///< guards against hostile sizes in the deck
+  /// Worker threads (TBB); 0 = every core. The mesh does not depend on it.
+  int threads = 0;
 };
 
 /// Runs the reservoir stages; figures (cells, triangles, warnings, timings) go to `stats`.
