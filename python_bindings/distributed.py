@@ -27,6 +27,7 @@ Masks and scalar fields; a scalar field's value range (its default iso is the mi
 the caps beyond the data derive from it) is measured first by one task per slab.
 """
 import argparse
+import inspect
 import math
 import os
 import sys
@@ -113,7 +114,7 @@ def _slab_task(source, settings, layers, halo, value_range):
             settings["threads"] = get_worker().nthreads
         except (ImportError, ValueError, AttributeError):
             pass
-    meta_cell = settings.get("meta_cell", 128)
+    meta_cell = settings["meta_cell"]
     _reset_peak_rss()
     start = time.perf_counter()
     volume = source.volume((layers[0] * meta_cell - halo, layers[1] * meta_cell + halo))
@@ -192,7 +193,10 @@ def extract(source, output, client=None, *, read=None, slab_layers=1, progress=N
     """
     if slab_layers < 1:
         raise ValueError(f"slab_layers: expected 1 or more, got {slab_layers}")
-    meta_cell = settings.get("meta_cell", 128)
+    # None is extract()'s default for every keyword; the slabs need the meta-cell size itself.
+    settings = {name: value for name, value in settings.items() if value is not None}
+    settings.setdefault("meta_cell", inspect.signature(isovdb.extract).parameters["meta_cell"].default)
+    meta_cell = settings["meta_cell"]
     if not meta_cell:
         raise ValueError("meta_cell: a distributed run needs meta-cells (16..512), not 0")
     source = _Source(source, read)
@@ -209,7 +213,7 @@ def extract(source, output, client=None, *, read=None, slab_layers=1, progress=N
 
 def _run(client, source, header, settings, slabs, halo, output, progress):
     run = uuid.uuid4().hex[:12]
-    meta_cell = settings.get("meta_cell", 128)
+    meta_cell = settings["meta_cell"]
     value_range = None
     if header.kind != "mask":
         ranges = client.gather([client.submit(_range_task, source, (b * meta_cell, e * meta_cell), pure=False,

@@ -183,6 +183,16 @@ def test_a_relative_path_is_the_clients(client, cli, data_dir, tmp_path, monkeyp
     assert same_file(out, expected)
 
 
+def test_none_is_the_default_as_in_extract(client, cli, data_dir, tmp_path):
+    # extract() reads None as the default of any keyword; so does a distributed run
+    # (meta_cell=None once failed as "not 0", threads=None gave every task all cores).
+    sphere = data_dir / "vdb" / "sphere.vdb"
+    expected = cli_mesh(cli, tmp_path, sphere)
+    out = tmp_path / "dask.ply"
+    isovdb.distributed.extract(sphere, out, client, meta_cell=None, threads=None, max_error=None, method=None)
+    assert same_file(out, expected)
+
+
 def test_bad_input_fails_the_run_with_the_readers_message_and_leaves_no_file(client, tmp_path):
     stack = blobs_zyx((64, 40, 40), seed=2)
     short = tmp_path / "short.raw"
