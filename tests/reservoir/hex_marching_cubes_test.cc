@@ -302,6 +302,28 @@ TEST(HexMarchingCubes, CornersAtTheIsoValueNeitherFoldNorCollapse) {
   EXPECT_EQ(distinct.size(), r.mesh.positions.size()) << "vertices at the same place, not welded";
 }
 
+TEST(HexMarchingCubes, OpposedTrianglesInAFaceCancel) {
+  // Reek PORO 0.22: a corner at the iso-value on a short pinched edge becomes the grid
+  // point's own vertex, and the cells on both sides of a face each made the triangle
+  // through it and the face's two crossings, wound opposite ways: three edges of four
+  // triangles each (two non-manifold edges in the validator's count).
+  const auto dir = test::sharedDataDir() / "reservoir/reek";
+  if (!std::filesystem::exists(dir)) GTEST_SKIP() << "no " << dir;
+  const GrdeclDeck deck = readGrdecl({dir / "reek_sim_grid.grdecl", dir / "reek_sim_poro.grdecl"});
+  const CornerPointGrid grid = buildCornerPointGrid(deck);
+  const HexContourResult r = contourHexahedra(grid, averageToCorners(grid, deck, "PORO"), {.iso = 0.22});
+  ASSERT_GE(r.cancelledTwins, 1) << "the deck no longer makes the opposed pair at 0.22";
+  const mesh::MeshReport report = mesh::validateMesh(r.mesh);
+  EXPECT_EQ(report.nonManifoldEdges, 0);
+  EXPECT_EQ(report.nonManifoldVertices, 0);
+  EXPECT_EQ(report.inconsistentlyOrientedEdges, 0);
+  std::set<std::array<std::uint32_t, 3>> faces;
+  for (auto t : r.mesh.triangles) {
+    std::sort(t.begin(), t.end());
+    EXPECT_TRUE(faces.insert(t).second) << "two triangles on the same three vertices";
+  }
+}
+
 TEST(HexMarchingCubes, Spe9PermeabilityIsManifold) {
   // PERMX at 100 mD crosses faces with four crossings whose fans, from a vertex on
   // that face, used to put one edge in four triangles (two per cell).

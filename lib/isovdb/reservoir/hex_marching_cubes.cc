@@ -99,6 +99,62 @@ std::vector<Record> weldOrder(const std::vector<BlockOutput>& outputs, const std
   return records;
 }
 
+/// Drops each pair of triangles with the same three vertices wound opposite ways, keeping
+/// the order of the others; returns the pairs dropped. Such a pair lies in a face of two
+/// cells: where a corner at the iso-value became the grid point's own vertex (crossEdge),
+/// the loops of both cells can run through it and the face's two crossings, each cell
+/// making the face's triangle facing out of it (Reek PORO 0.22: one pair, whose three
+/// edges had four triangles each). The two cancel: without them, each edge keeps one
+/// triangle of each cell, wound consistently. Only triangles at such a vertex
+/// (`atCorner`) can pair, so only those are compared.
+std::size_t cancelOpposedTwins(std::vector<mesh::Triangle>& triangles, const std::vector<std::uint8_t>& atCorner) {
+  struct Candidate {
+    std::array<std::uint32_t, 3> sorted;
+    bool even;  // the triangle's order is a rotation of the sorted one
+    std::uint32_t index;
+  };
+  std::vector<Candidate> candidates;
+  for (std::size_t n = 0; n < triangles.size(); ++n) {
+    const mesh::Triangle& t = triangles[n];
+    if (!(atCorner[t[0]] || atCorner[t[1]] || atCorner[t[2]])) continue;
+    Candidate c{{t[0], t[1], t[2]}, true, static_cast<std::uint32_t>(n)};
+    // Three compare-and-swaps sort the triple; each swap flips the permutation's parity.
+    for (const auto& [i, j] : {std::pair{0, 1}, std::pair{1, 2}, std::pair{0, 1}})
+      if (c.sorted[i] > c.sorted[j]) {
+        std::swap(c.sorted[i], c.sorted[j]);
+        c.even = !c.even;
+      }
+    candidates.push_back(c);
+  }
+  std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+    return a.sorted != b.sorted ? a.sorted < b.sorted : a.index < b.index;
+  });
+  std::vector<std::uint8_t> dropped(triangles.size(), 0);
+  std::size_t pairs = 0;
+  for (std::size_t first = 0; first < candidates.size();) {
+    std::size_t end = first + 1;
+    while (end < candidates.size() && candidates[end].sorted == candidates[first].sorted) ++end;
+    // In index order, each triangle pairs with the first unpaired one of the other winding.
+    for (std::size_t a = first; a < end; ++a) {
+      if (dropped[candidates[a].index]) continue;
+      for (std::size_t b = a + 1; b < end; ++b)
+        if (!dropped[candidates[b].index] && candidates[b].even != candidates[a].even) {
+          dropped[candidates[a].index] = dropped[candidates[b].index] = 1;
+          ++pairs;
+          break;
+        }
+    }
+    first = end;
+  }
+  if (pairs > 0) {
+    std::size_t kept = 0;
+    for (std::size_t n = 0; n < triangles.size(); ++n)
+      if (!dropped[n]) triangles[kept++] = triangles[n];
+    triangles.resize(kept);
+  }
+  return pairs;
+}
+
 }  // namespace
 
 HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField& field,
@@ -242,6 +298,11 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
     for (const auto& t : outputs[block].triangles())
       if (const mesh::Triangle tri = welded(block, t); kept(tri)) m.triangles[next++] = tri;
   });
+  {
+    std::vector<std::uint8_t> atCorner(vertices);
+    for (std::size_t v = 0; v < vertices; ++v) atCorner[v] = (records[runStart[v]].key & kCornerKey) != 0;
+    result.cancelledTwins = static_cast<std::int64_t>(cancelOpposedTwins(m.triangles, atCorner));
+  }
   if (options.normals) {
     // Fallback for vertices without a usable gradient (collapsed cells): area-weighted face
     // normals, summed only when some vertex needs them.

@@ -40,6 +40,7 @@ struct HexContourResult {
   std::int64_t cutCells = 0;        ///< usable cells the surface crosses
   std::int64_t ambiguousFaces = 0;  ///< faces resolved by the asymptotic decider (counted per cell)
   std::int64_t faultVertices = 0;   ///< vertices moved off fault faces into their own side
+  std::int64_t cancelledTwins = 0;  ///< pairs of opposed triangles in a face, dropped (cancelOpposedTwins)
 };
 
 /// @param interrupter  progress per group of cell blocks ("marching cubes") and cancellation
