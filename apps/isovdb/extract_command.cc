@@ -10,12 +10,10 @@
 #include "isovdb/io/mesh_file.h"
 #include "isovdb/io/path_util.h"
 #include "isovdb/io/ply.h"
-#include "isovdb/io/png_file.h"
-#include "isovdb/mesh/preview.h"
 #include "isovdb/pipeline/extract.h"
 #include "isovdb/pipeline/extract_to_file.h"
 #include "isovdb/pipeline/load_volume.h"
-#include "isovdb/pipeline/mesh_report.h"
+#include "mesh_follow_ups.h"
 #include "setting_flags.h"
 
 namespace isovdb::cli {
@@ -25,9 +23,7 @@ void addExtractCommand(CLI::App& app, Context& context) {
     std::string input, output, statsPath;
     InputFlags flags;
     pipeline::ExtractChoices choices;
-    std::string previewPath;
-    bool check = false;
-    bool noSelfIntersections = false;
+    MeshFollowUps followUps;
   };
   auto state = std::make_shared<State>();
   CLI::App* command = app.add_subcommand("extract", "Volume -> triangle mesh (.ply, .obj, .stl or .glb)");
@@ -35,22 +31,17 @@ void addExtractCommand(CLI::App& app, Context& context) {
       ->required();
   command->add_option("-o,--output", state->output, "Output mesh (.ply binary, .obj, .stl or .glb)")->required();
   addSettingFlags(*command, pipeline::extractSettings(state->choices));
-  command->add_flag("--check", state->check, "Validate the mesh (closed, manifold, self-intersections, Euler)");
-  command->add_flag("--no-self-intersections", state->noSelfIntersections,
-                    "With --check: skip the self-intersection test");
+  state->followUps.addFlags(*command);
   command->add_option("--stats", state->statsPath, "Write every figure shown as JSON");
-  command->add_option("--preview", state->previewPath,
-                      "Draw the mesh into this .png (oblique view; outside faces bone-coloured, faces seen from "
-                      "behind red)");
   state->flags.add(*command);
   command->callback([state, &context] {
     mesh::Mesh mesh;
     const pipeline::ExtractOptions options = state->choices.resolve();
+    const MeshFollowUps& followUps = state->followUps;
     io::checkMeshPath(state->output);
-    if (!state->previewPath.empty() && std::filesystem::path(state->previewPath).extension() != ".png")
-      throw InputError("'" + state->previewPath + "': --preview writes a .png");
+    followUps.checkPreviewPath();
     checkFilesBeforeWork({{"the input", state->input}},
-                         {{"-o", state->output}, {"--stats", state->statsPath}, {"--preview", state->previewPath}});
+                         {{"-o", state->output}, {"--stats", state->statsPath}, {"--preview", followUps.previewPath}});
 
     pipeline::Statistics stats;
     volume::Volume input =
@@ -60,7 +51,8 @@ void addExtractCommand(CLI::App& app, Context& context) {
     // that a mask is freed once its distance field exists.
     std::uint64_t triangles = 0;
     // A picture of a streamed .ply reads it back; an .obj with a picture is held like --check.
-    const bool holdMesh = state->check || (!state->previewPath.empty() && io::lowerExtension(state->output) != ".ply");
+    const bool holdMesh =
+        followUps.check || (!followUps.previewPath.empty() && io::lowerExtension(state->output) != ".ply");
     if (!holdMesh) {
       triangles = pipeline::extractToFile(std::move(input), options, state->output, context.interrupter(), &stats);
     } else {
@@ -73,25 +65,12 @@ void addExtractCommand(CLI::App& app, Context& context) {
       std::fprintf(stderr, "isovdb: warning: '%s': no surface at iso %g (empty mesh)\n", state->input.c_str(),
                    stats["contour"].value("iso", 0.0));
     stats["output"]["path"] = state->output;
-    bool passed = true;
-    if (state->check) {
-      pipeline::Statistics::StageTimer timer(&stats, "check");
-      const mesh::MeshReport report = mesh::validateMesh(mesh, {.selfIntersections = !state->noSelfIntersections});
-      stats["check"] = pipeline::toJson(report);
-      // --boundary open asks for a mesh that ends on the data boundary: not closed by design.
-      passed = pipeline::passesGuarantees(report) || (options.boundary == pipeline::BoundaryMode::Open &&
-                                                      report.manifold && report.selfIntersectingPairs <= 0);
-      stats["passed"] = passed;
-    }
-    if (!state->previewPath.empty()) {
-      pipeline::Statistics::StageTimer timer(&stats, "preview");
-      // A streamed mesh was never held whole: the picture reads it back (from its temporary:
-      // the outputs are renamed together at the end, io::CommitGroup).
-      const mesh::PreviewImage image =
-          mesh::renderPreview(holdMesh ? mesh : io::readPly(io::CommitGroup::readablePath(state->output)));
-      io::writePng(state->previewPath, image.width, image.height, 3, image.rgb);
-      stats["preview"]["path"] = state->previewPath;
-    }
+    // --boundary open asks for a mesh that ends on the data boundary: not closed by design.
+    const bool passed = followUps.checkMesh(mesh, options.boundary == pipeline::BoundaryMode::Open, stats);
+    // A streamed mesh was never held whole: the picture reads it back (from its temporary:
+    // the outputs are renamed together at the end, io::CommitGroup).
+    if (!followUps.previewPath.empty())
+      followUps.drawPreview(holdMesh ? mesh : io::readPly(io::CommitGroup::readablePath(state->output)), stats);
     reportStatistics(stats, state->statsPath, context);
     // Like `isovdb check`: a mesh that fails the check is written, and the run exits 1.
     context.exitCode = passed ? 0 : 1;

@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include "mesh_follow_ups.h"
 #include "isovdb/errors.h"
 #include "isovdb/io/mesh_file.h"
 #include "isovdb/pipeline/reservoir_extract.h"
@@ -16,6 +17,7 @@ void addReservoirCommand(CLI::App& app, Context& context) {
     std::vector<std::string> inputs;
     std::string output, statsPath, tessellate;
     pipeline::ReservoirOptions options;
+    MeshFollowUps followUps;
   };
   auto state = std::make_shared<State>();
   CLI::App* command =
@@ -31,6 +33,7 @@ void addReservoirCommand(CLI::App& app, Context& context) {
       ->required();
   command->add_option("--tessellate", state->tessellate, "max=K: curved PN triangles, per-edge factors up to K");
   command->add_option("--stats", state->statsPath, "Also write the figures as JSON");
+  state->followUps.addFlags(*command);
   command->add_option("--threads", state->options.threads, "Worker threads (0 = every core); the output is the same")
       ->capture_default_str();
   command
@@ -55,7 +58,9 @@ void addReservoirCommand(CLI::App& app, Context& context) {
     std::vector<NamedFile> inputs;
     for (const auto& input : state->inputs) inputs.push_back({"the input", input});
     io::checkMeshPath(state->output);
-    checkFilesBeforeWork(inputs, {{"-o", state->output}, {"--stats", state->statsPath}});
+    state->followUps.checkPreviewPath();
+    checkFilesBeforeWork(
+        inputs, {{"-o", state->output}, {"--stats", state->statsPath}, {"--preview", state->followUps.previewPath}});
     pipeline::Statistics stats;
     const mesh::Mesh mesh = pipeline::extractReservoir(state->options, stats, context.interrupter());
     {
@@ -67,8 +72,12 @@ void addReservoirCommand(CLI::App& app, Context& context) {
     stats["output"]["path"] = state->output;
     stats["output"]["triangles"] = mesh.triangleCount();
     stats["output"]["vertices"] = mesh.vertexCount();
+    // A reservoir surface ends where the grid, its active cells or the property do: open by design.
+    const bool passed = state->followUps.checkMesh(mesh, /*openByDesign=*/true, stats);
+    state->followUps.drawPreview(mesh, stats);
     reportStatistics(stats, state->statsPath, context);
-    context.exitCode = 0;
+    // Like `isovdb check`: a mesh that fails the check is written, and the run exits 1.
+    context.exitCode = passed ? 0 : 1;
   });
 }
 

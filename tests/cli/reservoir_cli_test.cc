@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
+#include <stb_image.h>
+
+#include "isovdb/mesh/preview.h"
 
 #include "support/test_support.h"
 
@@ -80,6 +83,51 @@ TEST(CliReservoir, ThreadsDoNotChangeTheBytes) {
             2);
   EXPECT_NE(output.find("--threads: expected 0 (every core) or more, got -1"), std::string::npos) << output;
   EXPECT_FALSE(std::filesystem::exists(dir / "bad.ply"));
+}
+
+TEST(CliReservoir, CheckAndPreviewAsInExtract) {
+  // --check: an open sheet passes when manifold and free of self-intersections (a reservoir
+  // surface ends at the grid's border and inactive cells); --preview draws it.
+  const auto deck = dataDir() / "reservoir/spe9/SPE9_CP.DATA";
+  TempDir dir;
+  const auto png = dir / "spe9.png";
+  std::string output;
+  ASSERT_EQ(runCommand(cliPath().string() + " -q reservoir " + deck.string() + " --property PERMX --iso 100 -o " +
+                           (dir / "k.ply").string() + " --check --preview " + png.string() + " --stats " +
+                           (dir / "k.json").string(),
+                       &output),
+            0)
+      << output;
+  const auto stats = nlohmann::json::parse(readFile(dir / "k.json"));
+  EXPECT_EQ(stats["check"]["self_intersecting_pairs"], 0);
+  EXPECT_EQ(stats["check"]["manifold"], true);
+  EXPECT_EQ(stats["passed"], true);
+  EXPECT_NE(output.find("preview: " + png.string()), std::string::npos) << output;
+  int width = 0, height = 0, channels = 0;
+  unsigned char* pixels = stbi_load(png.c_str(), &width, &height, &channels, 3);
+  ASSERT_NE(pixels, nullptr);
+  std::size_t object = 0;
+  for (int i = 0; i < width * height; ++i) object += pixels[3 * i] != mesh::kPreviewBackground;
+  stbi_image_free(pixels);
+  EXPECT_GT(object, std::size_t(width * height / 20));
+  EXPECT_EQ(runCommand(cliPath().string() + " -q reservoir " + deck.string() + " --property PERMX --iso 100 -o " +
+                           (dir / "u.ply").string() + " --preview " + (dir / "spe9.jpg").string(),
+                       &output),
+            2);
+  EXPECT_NE(output.find("--preview writes a .png"), std::string::npos) << output;
+  EXPECT_FALSE(std::filesystem::exists(dir / "u.ply"));
+  // A mesh that fails the check is written, and the run exits 1 (Reek PORO 0.21 has
+  // self-intersecting pairs between thin twisted cells; ARCHITECTURE.md, not reached yet).
+  const auto reek = sharedDataDir() / "reservoir/reek";
+  if (!std::filesystem::exists(reek)) GTEST_SKIP() << "no " << reek;
+  EXPECT_EQ(runCommand(cliPath().string() + " -q reservoir " + (reek / "reek_sim_grid.grdecl").string() + " " +
+                           (reek / "reek_sim_poro.grdecl").string() + " --property PORO --iso 0.21 -o " +
+                           (dir / "r.ply").string() + " --check",
+                       &output),
+            1)
+      << output;
+  EXPECT_NE(output.find("passed: NO"), std::string::npos) << output;
+  EXPECT_TRUE(std::filesystem::exists(dir / "r.ply"));
 }
 
 TEST(CliReservoir, BadDeckFailsNamingTheFile) {
