@@ -121,6 +121,13 @@ void printSummary(const Json& json) {
       .add(part(reservoir, "warnings",
                 [](const Json& v) { return v.empty() ? std::string() : count(Json(v.size())) + " warnings"; }))
       .print();
+  Line("self-intersecting pairs")
+      .add(part(reservoir, "self_intersecting_pairs",
+                [](const Json& v) {
+                  return count(v["total"]) + " (" + count(v["at_inverted_cells"]) + " at inverted cells, " +
+                         count(v["at_pinched_cells"]) + " at pinched cells, " + count(v["elsewhere"]) + " elsewhere)";
+                }))
+      .print();
   Line("octree")
       .add(part(section("octree"), "leaves", [](const Json& v) { return count(v) + " leaves"; }))
       .add(

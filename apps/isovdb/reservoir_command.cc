@@ -62,6 +62,9 @@ void addReservoirCommand(CLI::App& app, Context& context) {
     checkFilesBeforeWork(
         inputs, {{"-o", state->output}, {"--stats", state->statsPath}, {"--preview", state->followUps.previewPath}});
     pipeline::Statistics stats;
+    // With the check, the Marching Cubes mesh's self-intersecting pairs are told apart by the
+    // cells that made them (statistics reservoir.self_intersecting_pairs).
+    state->options.attributeSelfIntersections = state->followUps.check && !state->followUps.noSelfIntersections;
     const mesh::Mesh mesh = pipeline::extractReservoir(state->options, stats, context.interrupter());
     {
       pipeline::Statistics::StageTimer timer(&stats, "write");

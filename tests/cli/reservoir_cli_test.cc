@@ -100,6 +100,7 @@ TEST(CliReservoir, CheckAndPreviewAsInExtract) {
       << output;
   const auto stats = nlohmann::json::parse(readFile(dir / "k.json"));
   EXPECT_EQ(stats["check"]["self_intersecting_pairs"], 0);
+  EXPECT_EQ(stats["reservoir"]["self_intersecting_pairs"]["total"], 0);
   EXPECT_EQ(stats["check"]["manifold"], true);
   EXPECT_EQ(stats["passed"], true);
   EXPECT_NE(output.find("preview: " + png.string()), std::string::npos) << output;
@@ -122,12 +123,23 @@ TEST(CliReservoir, CheckAndPreviewAsInExtract) {
   if (!std::filesystem::exists(reek)) GTEST_SKIP() << "no " << reek;
   EXPECT_EQ(runCommand(cliPath().string() + " -q reservoir " + (reek / "reek_sim_grid.grdecl").string() + " " +
                            (reek / "reek_sim_poro.grdecl").string() + " --property PORO --iso 0.21 -o " +
-                           (dir / "r.ply").string() + " --check",
+                           (dir / "r.ply").string() + " --check --stats " + (dir / "r.json").string(),
                        &output),
             1)
       << output;
   EXPECT_NE(output.find("passed: NO"), std::string::npos) << output;
   EXPECT_TRUE(std::filesystem::exists(dir / "r.ply"));
+  // The pairs told apart by the cells that made them: Reek has pinch-outs (cells of zero
+  // thickness at some pillars) and no inverted cell.
+  const auto reek21 = nlohmann::json::parse(readFile(dir / "r.json"));
+  const auto& pairs = reek21["reservoir"]["self_intersecting_pairs"];
+  EXPECT_EQ(pairs["total"], reek21["check"]["self_intersecting_pairs"]);
+  EXPECT_EQ(pairs["at_inverted_cells"], 0);
+  EXPECT_GT(pairs["at_pinched_cells"].get<int>(), 0);
+  EXPECT_EQ(
+      pairs["at_inverted_cells"].get<int>() + pairs["at_pinched_cells"].get<int>() + pairs["elsewhere"].get<int>(),
+      pairs["total"].get<int>());
+  EXPECT_NE(output.find("self-intersecting pairs: "), std::string::npos) << output;
 }
 
 TEST(CliReservoir, BadDeckFailsNamingTheFile) {

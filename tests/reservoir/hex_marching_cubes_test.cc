@@ -324,6 +324,36 @@ TEST(HexMarchingCubes, OpposedTrianglesInAFaceCancel) {
   }
 }
 
+TEST(HexMarchingCubes, TriangleCellsNameTheCellThatMadeEachTriangle) {
+  // A ball in a box grid: each triangle's vertices lie in (or on) the cell named for it.
+  test::BoxGrid box{.nx = 10, .ny = 10, .nz = 10};
+  box.field = [](const Vector3d& p) { return (p - Vector3d(5, 5, 5)).norm(); };
+  test::TempDir dir;
+  test::writeFile(dir / "box.grdecl", test::boxGrdecl(box));
+  const GrdeclDeck deck = readGrdecl(dir / "box.grdecl");
+  const CornerPointGrid grid = buildCornerPointGrid(deck);
+  const CornerField field = averageToCorners(grid, deck, "PROP");
+  const HexContourResult with = contourHexahedra(grid, field, {.iso = 3.2, .triangleCells = true});
+  const HexContourResult without = contourHexahedra(grid, field, {.iso = 3.2});
+  EXPECT_TRUE(without.triangleCells.empty());
+  EXPECT_EQ(with.mesh.triangles, without.mesh.triangles);
+  ASSERT_EQ(with.triangleCells.size(), with.mesh.triangleCount());
+  EXPECT_EQ(std::count(grid.cellShape.begin(), grid.cellShape.end(), 0), static_cast<long>(grid.cellCount()));
+  for (std::size_t t = 0; t < with.mesh.triangleCount(); ++t) {
+    const auto& corners = grid.corners[with.triangleCells[t]];
+    Vector3d lo = corners[0], hi = corners[0];
+    for (const Vector3d& c : corners) {
+      lo = lo.cwiseMin(c);
+      hi = hi.cwiseMax(c);
+    }
+    for (const std::uint32_t v : with.mesh.triangles[t]) {
+      const Vector3d p = at(with.mesh, v);
+      EXPECT_TRUE((p.array() >= lo.array() - 1e-4).all() && (p.array() <= hi.array() + 1e-4).all())
+          << "triangle " << t << " vertex " << p.transpose() << " outside its cell";
+    }
+  }
+}
+
 TEST(HexMarchingCubes, Spe9PermeabilityIsManifold) {
   // PERMX at 100 mD crosses faces with four crossings whose fans, from a vertex on
   // that face, used to put one edge in four triangles (two per cell).

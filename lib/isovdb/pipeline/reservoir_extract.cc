@@ -5,6 +5,7 @@
 #include <tbb/global_control.h>
 
 #include "isovdb/errors.h"
+#include "isovdb/mesh/self_intersection.h"
 
 #include "isovdb/reservoir/corner_point_grid.h"
 #include "isovdb/reservoir/grdecl_reader.h"
@@ -41,6 +42,28 @@ std::vector<std::string> meshComments(const reservoir::GrdeclDeck& deck, const R
   return comments;
 }
 
+/// The mesh's self-intersecting pairs by the cells that made their triangles: a pair with
+/// a triangle of an inverted cell counts there, else with one of a pinched cell there.
+Statistics::Json attributedSelfIntersections(const reservoir::HexContourResult& contour,
+                                             const reservoir::CornerPointGrid& grid) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  mesh::countSelfIntersections(contour.mesh, &pairs);
+  std::int64_t inverted = 0, pinched = 0;
+  for (const auto& [a, b] : pairs) {
+    const auto shape =
+        static_cast<std::uint8_t>(grid.cellShape[contour.triangleCells[a]] | grid.cellShape[contour.triangleCells[b]]);
+    if (shape & reservoir::CornerPointGrid::kInvertedCell)
+      ++inverted;
+    else if (shape & reservoir::CornerPointGrid::kPinchedCell)
+      ++pinched;
+  }
+  const auto total = static_cast<std::int64_t>(pairs.size());
+  return {{"total", total},
+          {"at_inverted_cells", inverted},
+          {"at_pinched_cells", pinched},
+          {"elsewhere", total - inverted - pinched}};
+}
+
 }  // namespace
 
 mesh::Mesh extractReservoir(const ReservoirOptions& options, Statistics& stats, Interrupter* interrupter) {
@@ -69,7 +92,12 @@ mesh::Mesh extractReservoir(const ReservoirOptions& options, Statistics& stats, 
   reservoir::HexContourResult contour;
   {
     Statistics::StageTimer timer(&stats, "marching_cubes");
-    contour = reservoir::contourHexahedra(grid, field, {.iso = options.iso}, interrupter);
+    contour = reservoir::contourHexahedra(
+        grid, field, {.iso = options.iso, .triangleCells = options.attributeSelfIntersections}, interrupter);
+  }
+  if (options.attributeSelfIntersections) {
+    Statistics::StageTimer timer(&stats, "self_intersections");
+    stats["reservoir"]["self_intersecting_pairs"] = attributedSelfIntersections(contour, grid);
   }
   auto& section = stats["reservoir"];
   section["dims"] = grid.dims;

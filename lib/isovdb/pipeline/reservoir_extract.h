@@ -23,6 +23,10 @@ struct ReservoirOptions {
   reservoir::GrdeclLimits limits;  ///< guards against hostile sizes in the deck
   /// Worker threads (TBB); 0 = every core. The mesh does not depend on it.
   int threads = 0;
+  /// The Marching Cubes mesh's self-intersecting pairs found (exact predicates) and told
+  /// apart by the cells that made them: at folded (inverted) cells, at pinch-outs, elsewhere
+  /// (statistics reservoir.self_intersecting_pairs).
+  bool attributeSelfIntersections = false;
 };
 
 /// Runs the reservoir stages; figures (cells, triangles, warnings, timings) go to `stats`.

@@ -157,6 +157,7 @@ CornerPointGrid buildCornerPointGrid(const GrdeclDeck& deck, const GridOptions& 
   }
 
   // Orientation and inverted cells.
+  assignHuge(grid.cellShape, cells, std::uint8_t{0});
   std::vector<double> minDet, maxDet;
   resizeHuge(minDet, cells);
   resizeHuge(maxDet, cells);
@@ -176,7 +177,10 @@ CornerPointGrid buildCornerPointGrid(const GrdeclDeck& deck, const GridOptions& 
     maxDet[cell] = hi;
     // A pinch-out: the cell's thickness (or another extent) is zero at some corners only.
     const double scale = std::max(std::abs(lo), std::abs(hi));
-    grid.pinchedCells += scale > 0 && smallest <= 1e-9 * scale;
+    if (scale > 0 && smallest <= 1e-9 * scale) {
+      ++grid.pinchedCells;
+      grid.cellShape[cell] |= CornerPointGrid::kPinchedCell;
+    }
   }
   grid.orientation = sum < 0 ? -1 : 1;
   std::size_t firstInverted = cells;
@@ -186,6 +190,7 @@ CornerPointGrid buildCornerPointGrid(const GrdeclDeck& deck, const GridOptions& 
     const bool inverted = grid.orientation > 0 ? minDet[cell] < -1e-9 * scale : maxDet[cell] > 1e-9 * scale;
     if (inverted) {
       ++grid.invertedCells;
+      grid.cellShape[cell] |= CornerPointGrid::kInvertedCell;
       if (firstInverted == cells) firstInverted = cell;
     }
   }

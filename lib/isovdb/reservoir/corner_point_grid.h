@@ -36,6 +36,10 @@ struct CornerPointGrid {
   /// pointCells[pointCellStart[p] .. pointCellStart[p + 1]) (one array, not a vector per point).
   std::vector<std::uint32_t> pointCellStart{0};
   std::vector<std::uint32_t> pointCells;
+  /// Per cell: kPinchedCell, kInvertedCell (both bits where both hold) or 0.
+  std::vector<std::uint8_t> cellShape;
+  static constexpr std::uint8_t kPinchedCell = 1;   ///< Jacobian zero at some corners, not all (a pinch-out)
+  static constexpr std::uint8_t kInvertedCell = 2;  ///< Jacobian of the other sign at some corner (folded)
   int orientation = 1;             ///< sign of the Jacobian of most active cells (-1: left-handed grid)
   std::int64_t invertedCells = 0;  ///< active cells whose Jacobian has the other sign at some corner
   std::int64_t pinchedCells = 0;   ///< active cells whose Jacobian is zero at some corners, not all (pinch-outs)

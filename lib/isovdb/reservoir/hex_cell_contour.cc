@@ -327,6 +327,10 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
     std::array<std::uint32_t, 3> tri{firstVertex + a, firstVertex + c, firstVertex + b};  // faces towards lower values
     if (flip) std::swap(tri[1], tri[2]);
     out.triangles.push_back(tri);
+    if (options.triangleCells) {
+      growHuge(out.triangleCells, 1);
+      out.triangleCells.push_back(static_cast<std::uint32_t>(cell));
+    }
   };
   std::array<bool, 12> visited{};
   int loopIndex = 0;

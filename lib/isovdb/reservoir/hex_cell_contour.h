@@ -30,6 +30,7 @@ struct ThreadOutput {
   std::vector<Vec3d> gradients;                                    // beside keys (with normals)
   std::vector<std::pair<std::uint64_t, Eigen::Vector3f>> centres;  // centre vertices' positions
   std::vector<std::array<std::uint32_t, 3>> triangles;             // into keys, from its block's first
+  std::vector<std::uint32_t> triangleCells;                        // beside triangles (HexContourOptions)
   std::vector<std::pair<std::uint64_t, Vec3d>> faultSides;  // crossings on fault faces (onFault), each with its side
 };
 
@@ -48,6 +49,9 @@ struct BlockOutput {
   }
   std::span<const std::array<std::uint32_t, 3>> triangles() const {
     return {thread->triangles.data() + firstTriangle, triangleCount};
+  }
+  std::span<const std::uint32_t> triangleCells() const {
+    return {thread->triangleCells.data() + firstTriangle, thread->triangleCells.empty() ? 0 : triangleCount};
   }
   std::span<const std::pair<std::uint64_t, Vec3d>> faultSides() const {
     return {thread->faultSides.data() + firstFaultSide, faultSideCount};

@@ -107,7 +107,8 @@ std::vector<Record> weldOrder(const std::vector<BlockOutput>& outputs, const std
 /// edges had four triangles each). The two cancel: without them, each edge keeps one
 /// triangle of each cell, wound consistently. Only triangles at such a vertex
 /// (`atCorner`) can pair, so only those are compared.
-std::size_t cancelOpposedTwins(std::vector<mesh::Triangle>& triangles, const std::vector<std::uint8_t>& atCorner) {
+std::size_t cancelOpposedTwins(std::vector<mesh::Triangle>& triangles, std::vector<std::uint32_t>& triangleCells,
+                               const std::vector<std::uint8_t>& atCorner) {
   struct Candidate {
     std::array<std::uint32_t, 3> sorted;
     bool even;  // the triangle's order is a rotation of the sorted one
@@ -148,9 +149,14 @@ std::size_t cancelOpposedTwins(std::vector<mesh::Triangle>& triangles, const std
   }
   if (pairs > 0) {
     std::size_t kept = 0;
+    const bool cells = !triangleCells.empty();
     for (std::size_t n = 0; n < triangles.size(); ++n)
-      if (!dropped[n]) triangles[kept++] = triangles[n];
+      if (!dropped[n]) {
+        if (cells) triangleCells[kept] = triangleCells[n];
+        triangles[kept++] = triangles[n];
+      }
     triangles.resize(kept);
+    if (cells) triangleCells.resize(kept);
   }
   return pairs;
 }
@@ -293,15 +299,21 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
   });
   for (std::size_t block = 0; block < outputs.size(); ++block) firstTriangle[block + 1] += firstTriangle[block];
   resizeHuge(m.triangles, firstTriangle.back());
+  if (options.triangleCells) resizeHuge(result.triangleCells, firstTriangle.back());
   tbb::parallel_for(std::size_t{0}, outputs.size(), [&](std::size_t block) {
     std::size_t next = firstTriangle[block];
-    for (const auto& t : outputs[block].triangles())
-      if (const mesh::Triangle tri = welded(block, t); kept(tri)) m.triangles[next++] = tri;
+    const auto triangles = outputs[block].triangles();
+    const auto cells = outputs[block].triangleCells();
+    for (std::size_t n = 0; n < triangles.size(); ++n)
+      if (const mesh::Triangle tri = welded(block, triangles[n]); kept(tri)) {
+        if (options.triangleCells) result.triangleCells[next] = cells[n];
+        m.triangles[next++] = tri;
+      }
   });
   {
     std::vector<std::uint8_t> atCorner(vertices);
     for (std::size_t v = 0; v < vertices; ++v) atCorner[v] = (records[runStart[v]].key & kCornerKey) != 0;
-    result.cancelledTwins = static_cast<std::int64_t>(cancelOpposedTwins(m.triangles, atCorner));
+    result.cancelledTwins = static_cast<std::int64_t>(cancelOpposedTwins(m.triangles, result.triangleCells, atCorner));
   }
   if (options.normals) {
     // Fallback for vertices without a usable gradient (collapsed cells): area-weighted face

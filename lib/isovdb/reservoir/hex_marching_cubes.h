@@ -33,14 +33,17 @@ struct HexContourOptions {
   double iso = 0.0;
   /// Per-vertex normals from the Jacobian-mapped gradient (jacobian_normals.h).
   bool normals = true;
+  /// HexContourResult::triangleCells: the cell that made each triangle.
+  bool triangleCells = false;
 };
 
 struct HexContourResult {
-  mesh::Mesh mesh;                  ///< world (file) coordinates
-  std::int64_t cutCells = 0;        ///< usable cells the surface crosses
-  std::int64_t ambiguousFaces = 0;  ///< faces resolved by the asymptotic decider (counted per cell)
-  std::int64_t faultVertices = 0;   ///< vertices moved off fault faces into their own side
-  std::int64_t cancelledTwins = 0;  ///< pairs of opposed triangles in a face, dropped (cancelOpposedTwins)
+  mesh::Mesh mesh;                           ///< world (file) coordinates
+  std::int64_t cutCells = 0;                 ///< usable cells the surface crosses
+  std::int64_t ambiguousFaces = 0;           ///< faces resolved by the asymptotic decider (counted per cell)
+  std::int64_t faultVertices = 0;            ///< vertices moved off fault faces into their own side
+  std::int64_t cancelledTwins = 0;           ///< pairs of opposed triangles in a face, dropped (cancelOpposedTwins)
+  std::vector<std::uint32_t> triangleCells;  ///< with HexContourOptions::triangleCells: per triangle, its cell
 };
 
 /// @param interrupter  progress per group of cell blocks ("marching cubes") and cancellation
