@@ -168,8 +168,8 @@ EdgeCrossing crossEdge(const CornerPointGrid& grid, const CornerField& field, do
   };
   // Most crossings lie well inside their edge: where one axis alone holds the offset
   // below kMaxCornerOffset (16 steps a good deal shorter than a fiftieth of the edge along
-  // it) and t is that far from both ends, nothing below changes t. This skips the three
-  // divisions, a sixth of the stage on Reek; the result is the same, bit for bit.
+  // it) and t is that far from both ends, nothing below changes t: the three divisions
+  // are skipped for most crossings, and the result is the same, bit for bit.
   if (t >= kMaxCornerOffset && t <= 1.0 - kMaxCornerOffset) {
     const int axis = std::abs(pb[1] - pa[1]) > std::abs(pb[0] - pa[0])
                          ? (std::abs(pb[2] - pa[2]) > std::abs(pb[1] - pa[1]) ? 2 : 1)

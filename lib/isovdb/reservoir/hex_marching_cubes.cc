@@ -127,6 +127,7 @@ std::size_t cancelOpposedTwins(std::vector<mesh::Triangle>& triangles, std::vect
       }
     candidates.push_back(c);
   }
+  if (candidates.size() < 2) return 0;
   std::sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
     return a.sorted != b.sorted ? a.sorted < b.sorted : a.index < b.index;
   });
