@@ -50,8 +50,10 @@ struct BlockOutput {
   std::span<const std::array<std::uint32_t, 3>> triangles() const {
     return {thread->triangles.data() + firstTriangle, triangleCount};
   }
+  /// Empty unless HexContourOptions::triangleCells.
   std::span<const std::uint32_t> triangleCells() const {
-    return {thread->triangleCells.data() + firstTriangle, thread->triangleCells.empty() ? 0 : triangleCount};
+    if (thread->triangleCells.empty()) return {};
+    return {thread->triangleCells.data() + firstTriangle, triangleCount};
   }
   std::span<const std::pair<std::uint64_t, Vec3d>> faultSides() const {
     return {thread->faultSides.data() + firstFaultSide, faultSideCount};
