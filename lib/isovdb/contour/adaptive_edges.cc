@@ -52,10 +52,30 @@ void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool
     std::array<int, 3> start = leaf.origin;
     for (int a = 0; a < 3; ++a) start[a] += ((c0 >> a) & 1) * s;
     if (source.inRegion && !source.inRegion(start, axis)) continue;
-    const std::array<std::int64_t, 4> around =
-        source.unitLeaves ? source.unitLeaves->leavesAroundEdge(start, axis) : tree.leavesAroundEdge(start, axis);
     // This leaf's quadrant: on the min side of the edge where the edge is on its max side.
     const int own = (1 - ((c0 >> uv[0]) & 1)) | ((1 - ((c0 >> uv[1]) & 1)) << 1);
+    // The leaves around the edge (LinearOctree::leavesAroundEdge's), this one's quadrant
+    // without a search. The quadrants before it are searched first: where one holds a leaf
+    // of this size, that leaf owns the edge, and the other searches are skipped (each edge
+    // between four equal leaves is met from all four; three of them stop here).
+    std::array<std::int64_t, 4> around{};
+    around[static_cast<std::size_t>(own)] = static_cast<std::int64_t>(leafIndex);
+    const auto search = [&](int q) {
+      std::array<int, 3> voxel = start;  // as LinearOctree::leavesAroundEdge finds quadrant q
+      voxel[static_cast<std::size_t>(uv[0])] += (q & 1) - 1;
+      voxel[static_cast<std::size_t>(uv[1])] += ((q >> 1) & 1) - 1;
+      const std::int64_t l =
+          source.unitLeaves ? source.unitLeaves->findLeafContainingVoxel(voxel) : tree.findLeafContainingVoxel(voxel);
+      around[static_cast<std::size_t>(q)] = l;
+      return l;
+    };
+    bool ownedBefore = false;
+    for (int q = 0; q < own && !ownedBefore; ++q) {
+      const std::int64_t l = search(q);
+      ownedBefore = l != LinearOctree::kNone && tree.leaf(static_cast<std::size_t>(l)).size == s;
+    }
+    if (ownedBefore) continue;
+    for (int q = own + 1; q < 4; ++q) search(q);
     // Minimal: no leaf around is smaller. Owner: the first quadrant holding a leaf of this size.
     bool minimal = true, owner = true, outside = false;
     for (int q = 0; q < 4; ++q) {
