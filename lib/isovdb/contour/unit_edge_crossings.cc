@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <bit>
 
+#include "isovdb/bit_count.h"
 #include "isovdb/octree/sample_phases.h"
 
 namespace isovdb::contour {
@@ -58,7 +59,7 @@ const cell::EdgeIntersection* UnitEdgeCrossings::find(const std::array<int, 3>& 
   const std::uint64_t bit = std::uint64_t{1} << (start[0] & 63);
   if ((bits & bit) == 0) return nullptr;
   const std::uint32_t index =
-      before_[static_cast<std::size_t>(axis)][word] + static_cast<std::uint32_t>(std::popcount(bits & (bit - 1)));
+      before_[static_cast<std::size_t>(axis)][word] + static_cast<std::uint32_t>(countBits(bits & (bit - 1)));
   return &crossings_[static_cast<std::size_t>(axis)][index];
 }
 

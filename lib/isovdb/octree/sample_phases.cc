@@ -3,7 +3,8 @@
 #include "isovdb/octree/sample_phases.h"
 
 #include <algorithm>
-#include <bit>
+
+#include "isovdb/bit_count.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -76,7 +77,7 @@ int SamplePhases::changesAlong(int i, int j, int k, int axis, int length) const 
     const int count = std::min(64, length - t);
     p[static_cast<std::size_t>(axis)] = first + t;
     const std::uint64_t bits = line(p[0], p[1], p[2], axis, count);
-    changes += std::popcount((bits ^ (bits >> 1)) & lowBits(count - 1));
+    changes += countBits((bits ^ (bits >> 1)) & lowBits(count - 1));
   }
   return changes;
 }

@@ -2,8 +2,7 @@
 // Copyright Contributors to the isovdb project.
 #include "isovdb/octree/unit_leaf_index.h"
 
-#include <bit>
-
+#include "isovdb/bit_count.h"
 #include "isovdb/cell/cell_geometry.h"
 
 namespace isovdb::octree {
@@ -28,7 +27,7 @@ UnitLeafIndex::UnitLeafIndex(const LinearOctree& tree)
   std::uint32_t total = 0;
   for (std::size_t w = 0; w < words; ++w) {
     before_[w] = total;
-    total += static_cast<std::uint32_t>(std::popcount(rows_[w]));
+    total += static_cast<std::uint32_t>(countBits(rows_[w]));
   }
   leafOfRank_.assign(count, 0);
   for (std::size_t i = 0; i < tree.leafCount(); ++i) {
@@ -36,8 +35,7 @@ UnitLeafIndex::UnitLeafIndex(const LinearOctree& tree)
     if (l.size != 1) continue;
     const std::size_t w = wordOf(l.origin);
     const std::uint64_t below = (std::uint64_t{1} << (l.origin[0] & 63)) - 1;
-    leafOfRank_[before_[w] + static_cast<std::uint32_t>(std::popcount(rows_[w] & below))] =
-        static_cast<std::uint32_t>(i);
+    leafOfRank_[before_[w] + static_cast<std::uint32_t>(countBits(rows_[w] & below))] = static_cast<std::uint32_t>(i);
   }
 }
 
@@ -50,7 +48,7 @@ std::int64_t UnitLeafIndex::findLeafContainingVoxel(const std::array<int, 3>& vo
       static_cast<std::size_t>(voxel[0] >> 6);
   const std::uint64_t bit = std::uint64_t{1} << (voxel[0] & 63);
   if ((rows_[w] & bit) == 0) return tree_.findLeafContainingVoxel(voxel);  // a larger leaf, or none
-  return leafOfRank_[before_[w] + static_cast<std::uint32_t>(std::popcount(rows_[w] & (bit - 1)))];
+  return leafOfRank_[before_[w] + static_cast<std::uint32_t>(countBits(rows_[w] & (bit - 1)))];
 }
 
 std::array<std::int64_t, 4> UnitLeafIndex::leavesAroundEdge(const std::array<int, 3>& start, int axis) const noexcept {
