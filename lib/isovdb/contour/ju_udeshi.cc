@@ -66,7 +66,7 @@ struct SmallPolygon {
 };
 
 /// Keeps the part of a convex polygon where plane >= 0 (Sutherland–Hodgman).
-void clip(const SmallPolygon& in, const Plane& plane, SmallPolygon& out) {
+[[gnu::always_inline]] inline void clip(const SmallPolygon& in, const Plane& plane, SmallPolygon& out) {
   out.size = 0;
   const std::size_t n = in.size;
   for (std::size_t i = 0; i < n; ++i) {
@@ -81,13 +81,16 @@ void clip(const SmallPolygon& in, const Plane& plane, SmallPolygon& out) {
   }
 }
 
-/// Distance from x to segment [p, q].
-double distanceToSegment(const Point& x, const Point& p, const Point& q) {
+/// Whether x lies within `reach` of the segment [p, q]. A clipped polygon's corners are
+/// mostly the segment's own ends (the cell and face points), found without a division or a
+/// root; the rest compare squared lengths.
+bool nearSegment(const Point& x, const Point& p, const Point& q, double reach) {
+  if (x == p || x == q) return true;
   const Point d = q - p;
   const double len2 = d.squaredNorm();
   double t = len2 > 0 ? (x - p).dot(d) / len2 : 0.0;
   t = std::clamp(t, 0.0, 1.0);
-  return (x - (p + d * t)).norm();
+  return (x - (p + d * t)).squaredNorm() <= reach * reach;
 }
 
 /// One tetrahedron conv(e0, e1, P, Q) of an envelope: the planes of its
@@ -154,7 +157,7 @@ bool insideSector(const Sector& sector, double touch, const SmallPolygon& triang
     const Point& x = inBoth.points[i];
     if (sector.outer0.eval(x) >= options.margin && sector.outer1.eval(x) >= options.margin) continue;
     // Allowed contact: the segment v_c v_f, which neighbouring edges share.
-    if (distanceToSegment(x, sector.P, sector.Q) <= touch) continue;
+    if (nearSegment(x, sector.P, sector.Q, touch)) continue;
     return false;
   }
   return true;
