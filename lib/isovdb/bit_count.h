@@ -6,8 +6,9 @@
 /// Debian builds for the x86-64 baseline, which has no POPCNT instruction, so
 /// std::popcount compiles to a call of libgcc's __popcountdi2 (a table walk): 2 % of an
 /// adaptive or regular run on 512³ blobs (perf), from the rank look-ups of the unit-leaf
-/// and unit-edge indexes and the sample phases' sign changes. The SWAR sum below is
-/// a dozen register operations with no call; where the build targets POPCNT, the instruction.
+/// and unit-edge indexes, the sample phases' sign changes and the voxel reading's split
+/// vertices. The SWAR sum below is a dozen register operations with no call; where the
+/// build targets POPCNT, the instruction. The engine counts bits with this only.
 #pragma once
 
 #include <bit>

@@ -6,6 +6,7 @@
 #include <bit>
 #include <cmath>
 
+#include "isovdb/bit_count.h"
 #include "isovdb/cell/dmc_table.h"
 #include "isovdb/octree/morton.h"
 
@@ -158,7 +159,7 @@ void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool
       int bit = -1, sideA = 0;
       for (int x = 0; x < 4 && bit < 0; ++x)
         for (int y = 0; y < 4 && bit < 0; ++y)
-          if (((qa >> x) & 1) && ((qb >> y) & 1) && std::popcount(static_cast<unsigned>(x ^ y)) == 1) {
+          if (((qa >> x) & 1) && ((qb >> y) & 1) && countBits(static_cast<unsigned>(x ^ y)) == 1) {
             bit = (x ^ y) == 1 ? 0 : 1;
             sideA = (x >> bit) & 1;
           }

@@ -7,8 +7,6 @@
 
 #include "isovdb/octree/criteria.h"
 
-#include <bit>
-
 namespace isovdb::contour {
 
 namespace {
@@ -71,7 +69,7 @@ LeafGroups groupLeaves(const cell::MetaCellSamples& samples, const octree::Linea
   if (manifoldFix) fixDoubledFaces(samples, tree, iso, groups, beyondApron);
   groups.firstVertex.assign(n + 1, 0);
   for (std::size_t i = 0; i < n; ++i) {
-    const int splits = groups.voxels ? 2 * std::popcount(static_cast<unsigned>(groups.splitFaces[i])) : 0;
+    const int splits = groups.voxels ? 2 * countBits(static_cast<unsigned>(groups.splitFaces[i])) : 0;
     groups.firstVertex[i + 1] = groups.firstVertex[i] + static_cast<std::uint32_t>(groups.cellVertexCount(i) + splits);
     groups.manifoldFixes += groups.alternative[i] + splits / 2;
     groups.fixesBeyondApron += beyondApron[i];

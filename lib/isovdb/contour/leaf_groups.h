@@ -24,10 +24,10 @@
 /// groups (or sectors), then its split vertices by axis of the split max face.
 #pragma once
 
-#include <bit>
 #include <cstdint>
 #include <vector>
 
+#include "isovdb/bit_count.h"
 #include "isovdb/cell/dmc_table.h"
 #include "isovdb/cell/dual_vertex.h"
 #include "isovdb/contour/unit_edge_crossings.h"
@@ -58,7 +58,7 @@ struct LeafGroups {
   /// Id of the leaf's split vertex `slot` on its max face along `axis` (that face must be split).
   std::uint32_t splitVertex(std::size_t leaf, int axis, int slot) const noexcept {
     const unsigned below = splitFaces[leaf] & ((1u << axis) - 1u);
-    return firstVertex[leaf] + static_cast<std::uint32_t>(cellVertexCount(leaf) + 2 * std::popcount(below) + slot);
+    return firstVertex[leaf] + static_cast<std::uint32_t>(cellVertexCount(leaf) + 2 * countBits(below) + slot);
   }
   std::uint32_t vertexCount(std::size_t leaf) const noexcept { return firstVertex[leaf + 1] - firstVertex[leaf]; }
   std::uint32_t totalVertices() const noexcept { return firstVertex.back(); }

@@ -5,6 +5,7 @@
 #include <bit>
 #include <cassert>
 
+#include "isovdb/bit_count.h"
 #include "isovdb/contour/regular_contour.h"
 #include "isovdb/octree/morton.h"
 
@@ -87,7 +88,7 @@ std::uint32_t vertexOnFace(const VoxelEdgeCell& cell, int edge, int face) noexce
 const cell::DmcEntry& voxelDmcEntry(std::uint8_t config) noexcept { return tables().entries[config]; }
 
 bool isTubeConfig(std::uint8_t config) noexcept {
-  if (std::popcount(static_cast<unsigned>(config)) != 2) return false;
+  if (countBits(static_cast<unsigned>(config)) != 2) return false;
   const int a = std::countr_zero(static_cast<unsigned>(config));
   return inside(config, a ^ 7);
 }

@@ -10,6 +10,7 @@
 #include <bit>
 #include <string>
 
+#include "isovdb/bit_count.h"
 #include "isovdb/cell/dmc_table.h"
 #include "isovdb/cell/dual_vertex.h"
 #include "isovdb/errors.h"
@@ -135,8 +136,8 @@ class Builder {
     ev.leaf.surface = topo.isHeterogeneous();
     ev.complex = topo.isComplex();
     ev.interiorOnly = ev.complex && topo.complexEdges == 0 && topo.complexFaces == 0;
-    ev.complexEdges = static_cast<std::uint8_t>(std::popcount(topo.complexEdges));
-    ev.complexFaces = static_cast<std::uint8_t>(std::popcount(topo.complexFaces));
+    ev.complexEdges = static_cast<std::uint8_t>(countBits(topo.complexEdges));
+    ev.complexFaces = static_cast<std::uint8_t>(countBits(topo.complexFaces));
     const bool canSplit = c.depth < depths_.maxDepth;
     if (!canSplit) {
       ev.leaf.complex = ev.complex;
