@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 
 namespace isovdb::cell {
@@ -20,6 +21,16 @@ namespace isovdb::cell {
 /// @brief The two axes other than `axis`, ascending.
 constexpr std::array<int, 2> otherAxes(int axis) noexcept {
   return axis == 0 ? std::array<int, 2>{1, 2} : axis == 1 ? std::array<int, 2>{0, 2} : std::array<int, 2>{0, 1};
+}
+
+/// @brief The voxel of quadrant q around the unit edge that starts at `start` along `axis`:
+///        bit 0 of q the side on u, bit 1 on v (u < v the other axes; clear = min side, where
+///        the edge lies on the voxel's max side).
+constexpr std::array<int, 3> edgeQuadrantVoxel(std::array<int, 3> start, int axis, int q) noexcept {
+  const auto uv = otherAxes(axis);
+  start[static_cast<std::size_t>(uv[0])] += (q & 1) - 1;
+  start[static_cast<std::size_t>(uv[1])] += ((q >> 1) & 1) - 1;
+  return start;
 }
 
 /// @brief Axis of cell edge e.

@@ -6,6 +6,7 @@
 #include <bit>
 #include <cassert>
 
+#include "isovdb/bit_count.h"
 #include "isovdb/cell/cell_geometry.h"
 
 namespace isovdb::cell {
@@ -41,7 +42,7 @@ void unite(std::array<int, 12>& parent, int a, int b) noexcept {
 
 /// Unites the two set bits of a 2-edge mask.
 void unitePair(std::array<int, 12>& parent, std::uint16_t pair) noexcept {
-  assert(std::popcount(pair) == 2);
+  assert(countBits(pair) == 2);
   const unsigned bits = pair;
   const int a = std::countr_zero(bits);
   const int b = std::countr_zero(bits & (bits - 1u));

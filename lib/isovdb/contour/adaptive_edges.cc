@@ -62,9 +62,7 @@ void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool
     std::array<std::int64_t, 4> around{};
     around[static_cast<std::size_t>(own)] = static_cast<std::int64_t>(leafIndex);
     const auto search = [&](int q) {
-      std::array<int, 3> voxel = start;  // as LinearOctree::leavesAroundEdge finds quadrant q
-      voxel[static_cast<std::size_t>(uv[0])] += (q & 1) - 1;
-      voxel[static_cast<std::size_t>(uv[1])] += ((q >> 1) & 1) - 1;
+      const std::array<int, 3> voxel = cell::edgeQuadrantVoxel(start, axis, q);
       const std::int64_t l =
           source.unitLeaves ? source.unitLeaves->findLeafContainingVoxel(voxel) : tree.findLeafContainingVoxel(voxel);
       around[static_cast<std::size_t>(q)] = l;

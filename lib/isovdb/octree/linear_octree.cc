@@ -116,14 +116,9 @@ void LinearOctree::leavesAcrossFace(std::size_t index, int face, std::vector<std
 }
 
 std::array<std::int64_t, 4> LinearOctree::leavesAroundEdge(std::array<int, 3> start, int axis) const noexcept {
-  const auto uv = otherAxes(axis);
   std::array<std::int64_t, 4> result{};
-  for (int q = 0; q < 4; ++q) {
-    std::array<int, 3> voxel = start;
-    voxel[uv[0]] += (q & 1) - 1;
-    voxel[uv[1]] += ((q >> 1) & 1) - 1;
-    result[static_cast<std::size_t>(q)] = findLeafContainingVoxel(voxel);
-  }
+  for (int q = 0; q < 4; ++q)
+    result[static_cast<std::size_t>(q)] = findLeafContainingVoxel(cell::edgeQuadrantVoxel(start, axis, q));
   return result;
 }
 

@@ -52,14 +52,9 @@ std::int64_t UnitLeafIndex::findLeafContainingVoxel(const std::array<int, 3>& vo
 }
 
 std::array<std::int64_t, 4> UnitLeafIndex::leavesAroundEdge(const std::array<int, 3>& start, int axis) const noexcept {
-  const auto uv = cell::otherAxes(axis);
   std::array<std::int64_t, 4> result{};
-  for (int q = 0; q < 4; ++q) {
-    std::array<int, 3> voxel = start;
-    voxel[static_cast<std::size_t>(uv[0])] += (q & 1) - 1;
-    voxel[static_cast<std::size_t>(uv[1])] += ((q >> 1) & 1) - 1;
-    result[static_cast<std::size_t>(q)] = findLeafContainingVoxel(voxel);
-  }
+  for (int q = 0; q < 4; ++q)
+    result[static_cast<std::size_t>(q)] = findLeafContainingVoxel(cell::edgeQuadrantVoxel(start, axis, q));
   return result;
 }
 
