@@ -3,9 +3,11 @@
 #include "isovdb/volume/ingest.h"
 
 #include <gtest/gtest.h>
+#include <openvdb/tools/Count.h>
 #include <tbb/task_arena.h>
 
 #include <cmath>
+#include <limits>
 
 #include "isovdb/volume/grids.h"
 #include "support/vector_slice_stream.h"
@@ -143,6 +145,30 @@ TEST(IngestScalar, BackgroundBlocksAreNotStored) {
       {64, 64, 64}, [](int x, int y, int z) { return x == 40 && y == 40 && z == 40 ? 1.f : 0.f; });
   const Volume volume = ingestScalar(stream, {.background = 0.f});
   EXPECT_EQ(fieldGrid(volume).tree().leafCount(), 1u);
+}
+
+// The ingest records the range of what it stores (Volume::stats() reads it instead of
+// walking every value): NaNs and dead-band samples are not stored, background-valued
+// blocks are dropped, constant blocks become tiles, and the extremes sit in different slabs.
+TEST(IngestScalar, ValueRangeIsThatOfTheStoredValues) {
+  for (const float deadBand : {0.0f, 0.5f}) {
+    VectorSliceStream stream = VectorSliceStream::fromFunction({21, 19, 37}, [](int x, int y, int z) {
+      if (x < 8 && y < 8 && z < 8) return 7.5f;         // a tile
+      if (x >= 16 && y >= 16) return 0.0f;              // background blocks
+      if (x == 3 && y == 12 && z == 30) return -40.0f;  // the minimum, a late slab
+      if (x == 18 && y == 2 && z == 17) return 60.0f;   // the maximum, another slab
+      if ((x + y + z) % 11 == 0) return std::numeric_limits<float>::quiet_NaN();
+      if (z > 32) return 0.01f * std::sin(0.7f * x);  // within the 0.5 dead band
+      return std::sin(0.3f * x) * std::cos(0.2f * y) + 0.05f * z;
+    });
+    const Volume volume = ingestScalar(stream, {.background = deadBand, .deadBand = deadBand});
+    const auto extrema = openvdb::tools::minMax(fieldGrid(volume).tree());
+    const GridStats stats = volume.stats();
+    EXPECT_EQ(stats.minValue, extrema.min()) << deadBand;
+    EXPECT_EQ(stats.maxValue, extrema.max()) << deadBand;
+    EXPECT_EQ(stats.minValue, -40.0f);
+    EXPECT_EQ(stats.maxValue, 60.0f);
+  }
 }
 
 TEST(Ingest, CarriesGeometry) {

@@ -119,14 +119,24 @@ void readBlock(const Volume& field, const std::array<int, 3>& origin, int size, 
 }
 
 bool hasSignChange(const cell::MetaCellSamples& samples, float iso) {
+  // Row by row, each row's two answers or-ed over its samples without a branch (the
+  // compiler vectorises it), and the rows' answers tested once per row: a block the
+  // surface misses is read in full, and a dense field's block is 2 M samples.
   bool in = false, outside = false;
   const int s = samples.size;
   for (int k = 0; k <= s; ++k)
-    for (int j = 0; j <= s; ++j)
+    for (int j = 0; j <= s; ++j) {
+      const float* row = samples.values.data() + samples.indexOf(0, j, k);
+      unsigned rowIn = 0, rowOutside = 0;
       for (int i = 0; i <= s; ++i) {
-        (cell::isInside(samples.value(i, j, k), iso) ? in : outside) = true;
-        if (in && outside) return true;
+        const unsigned inside = cell::isInside(row[i], iso) ? 1u : 0u;
+        rowIn |= inside;
+        rowOutside |= inside ^ 1u;
       }
+      in = in || rowIn != 0;
+      outside = outside || rowOutside != 0;
+      if (in && outside) return true;
+    }
   return false;
 }
 

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <tuple>
 
 #include "isovdb/volume/grids.h"
 
@@ -55,7 +56,7 @@ const FieldGrid& fieldGrid(const Volume& volume) { return *fieldGridPtr(volume);
 namespace {
 
 template <typename TreeT>
-GridStats treeStats(const TreeT& tree, bool withRange) {
+GridStats treeStats(const TreeT& tree, bool withRange, const std::optional<std::pair<float, float>>& knownRange) {
   GridStats stats;
   stats.activeVoxels = static_cast<std::int64_t>(tree.activeVoxelCount());
   stats.leafCount = static_cast<std::int64_t>(tree.leafCount());
@@ -70,7 +71,9 @@ GridStats treeStats(const TreeT& tree, bool withRange) {
   }
   if constexpr (std::is_same_v<typename TreeT::ValueType, float>) {
     stats.background = tree.background();
-    if (withRange && stats.activeVoxels > 0) {
+    if (withRange && stats.activeVoxels > 0 && knownRange) {
+      std::tie(stats.minValue, stats.maxValue) = *knownRange;
+    } else if (withRange && stats.activeVoxels > 0) {
       const auto extrema = openvdb::tools::minMax(tree);
       stats.minValue = extrema.min();
       stats.maxValue = extrema.max();
@@ -84,8 +87,8 @@ GridStats treeStats(const TreeT& tree, bool withRange) {
 GridStats Volume::stats() const {
   if (!grid_) return {};
   std::call_once(stats_->once, [this] {
-    stats_->stats =
-        kind_ == VolumeKind::Mask ? treeStats(maskGrid(*this).tree(), false) : treeStats(fieldGrid(*this).tree(), true);
+    stats_->stats = kind_ == VolumeKind::Mask ? treeStats(maskGrid(*this).tree(), false, std::nullopt)
+                                              : treeStats(fieldGrid(*this).tree(), true, stats_->knownRange);
   });
   return stats_->stats;
 }

@@ -17,7 +17,9 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include <openvdb/version.h>
 
@@ -91,10 +93,15 @@ class Volume {
   /// range alone took 0.1 s a walk).
   GridStats stats() const;
 
+  /// Records the range of the active values, which the code that filled the grid saw
+  /// (ingestScalar): stats() then does not walk every value for it. Call before stats().
+  void setValueRange(float min, float max) { stats_->knownRange = {min, max}; }
+
  private:
   struct StatsOnce {
     std::once_flag once;
     GridStats stats;
+    std::optional<std::pair<float, float>> knownRange;
   };
 
   VolumeKind kind_ = VolumeKind::Mask;
