@@ -102,6 +102,58 @@ TEST(MetaCells, ActiveTilesAreThoseOfTheValueIteratorWithoutItsVoxels) {
         << cell[0] << "," << cell[1] << "," << cell[2];
 }
 
+// A dense scalar field (every voxel a stored value): a ball, a slab whose faces are leaf
+// faces (its crossings lie between two leaves that are each on one side), and a slab
+// against the data box's face (its crossing is the cap, beyond the box, where samples read
+// as outside). Every meta-cell whose samples cross the isovalue, as the contouring reads
+// them, is in the partition; the meta-cells of one-sided leaves among one-sided
+// neighbours are not.
+TEST(MetaCells, ScalarPartitionHoldsEveryCrossingAndSkipsOneSidedBlocks) {
+  constexpr int kX = 72, kY = 40, kZ = 40, kSize = 8;
+  constexpr float kIso = 0.5f;
+  VectorSliceStream stream = VectorSliceStream::fromFunction({kX, kY, kZ}, [](int x, int y, int z) {
+    if (std::hypot(x - 19.5f, y - 20.f, z - 21.f) < 9.f) return 0.9f;
+    // Not constant, so the ingest keeps leaves (a constant block would be a tile, always kept).
+    if (x >= 40 && x < 48 && y >= 8 && y < 32) return 1.0f + 0.1f * static_cast<float>((x + y + z) % 3);
+    if (x >= 64) return 2.0f + 0.1f * static_cast<float>(y % 2);  // against the box's x face
+    return 0.1f * static_cast<float>((x * 7 + y * 3 + z) % 4);    // below the isovalue, not constant
+  });
+  const Volume field = ingestScalar(stream, {.background = 0.f});
+  const IndexBox box{{0, 0, 0}, {kX - 1, kY - 1, kZ - 1}};
+  const MetaCellPartition partition = partitionMetaCells(field, kSize, kIso, box);
+  const auto inPartition = [&](const MetaCellIndex& cell) {
+    return std::find(partition.cells.begin(), partition.cells.end(), cell) != partition.cells.end();
+  };
+  cell::MetaCellSamples samples;
+  int crossed = 0, candidates = 0;
+  for (int k = -1; k <= kZ / kSize; ++k)
+    for (int j = -1; j <= kY / kSize; ++j)
+      for (int i = -1; i <= kX / kSize; ++i) {
+        readMetaCell(field, {i, j, k}, kSize, samples);
+        bool in = false, out = false;
+        for (int c = 0; c <= kSize; ++c)
+          for (int b = 0; b <= kSize; ++b)
+            for (int a = 0; a <= kSize; ++a) {
+              const std::array<int, 3> p{i * kSize + a, j * kSize + b, k * kSize + c};
+              bool inBox = true;
+              for (int axis = 0; axis < 3; ++axis)
+                inBox = inBox && p[axis] >= box.min[axis] && p[axis] <= box.max[axis];
+              (inBox && samples.value(a, b, c) >= kIso ? in : out) = true;
+            }
+        ++candidates;
+        if (!(in && out)) continue;
+        ++crossed;
+        EXPECT_TRUE(inPartition({i, j, k})) << i << "," << j << "," << k;
+      }
+  EXPECT_GT(crossed, 20);
+  EXPECT_LT(static_cast<int>(partition.cells.size()), candidates);
+  // Beyond the box's x = 0 face, where nothing inside reaches it: each of these meta-cells
+  // holds the samples x = 0 of leaves that are outside like their neighbours, so it is
+  // left out (touching any leaf, it would be in).
+  for (int k = -1; k <= kZ / kSize; ++k)
+    for (int j = -1; j <= kY / kSize; ++j) EXPECT_FALSE(inPartition({-1, j, k})) << j << "," << k;
+}
+
 TEST(MetaCells, RejectsBadSizes) {
   const Volume sdf = twoBalls();
   EXPECT_THROW(partitionMetaCells(sdf, 48), InputError);

@@ -4,7 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <set>
+#include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "isovdb/volume/grids.h"
 
@@ -15,6 +20,88 @@ namespace {
 int floorDiv(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 
 bool isPowerOfTwo(int v) { return v > 0 && (v & (v - 1)) == 0; }
+
+using FieldLeaf = FieldGrid::TreeType::LeafNodeType;
+
+/// The side of the isovalue a scalar field's sample reads as when its meta-cell is
+/// contoured: inside at or above the isovalue, and outside beyond the caps box
+/// (pipeline/octree_contour.cc sets those samples far outside).
+class ScalarSides {
+ public:
+  ScalarSides(float iso, const std::optional<IndexBox>& box) : iso_(iso), box_(box) {}
+
+  bool inside(const openvdb::Coord& c, float value) const { return inBox(c) && value >= iso_; }
+  bool inside(float value) const { return value >= iso_; }
+  /// True if every sample of [lo, hi] is in the box: their sides need no coordinates.
+  bool boxHolds(const openvdb::Coord& lo, const openvdb::Coord& hi) const { return !box_ || (inBox(lo) && inBox(hi)); }
+
+ private:
+  bool inBox(const openvdb::Coord& c) const {
+    if (!box_) return true;
+    for (int a = 0; a < 3; ++a)
+      if (c[a] < box_->min[a] || c[a] > box_->max[a]) return false;
+    return true;
+  }
+  float iso_;
+  std::optional<IndexBox> box_;
+};
+
+/// Whether a scalar field's leaf can hold or border a crossing: its samples read on both
+/// sides, or a sample next to one of its faces (in the neighbouring leaf, tile or
+/// background, as readBlock reads them) reads on the other side than the leaf's. A
+/// leaf on one side among samples on that side gives no meta-cell a sign change.
+bool scalarLeafNearIso(const FieldLeaf& leaf, const FieldGrid::ConstAccessor& accessor, const ScalarSides& sides) {
+  constexpr int kDim = static_cast<int>(FieldLeaf::DIM);
+  const openvdb::Coord origin = leaf.origin();
+  const bool plain = sides.boxHolds(origin.offsetBy(-1), origin.offsetBy(kDim));
+  const float* values = leaf.buffer().data();
+  openvdb::Index insideCount = 0;  // a count, not a branch per sample: the loop vectorises
+  if (plain)
+    for (openvdb::Index i = 0; i < FieldLeaf::SIZE; ++i) insideCount += sides.inside(values[i]) ? 1 : 0;
+  else
+    for (openvdb::Index i = 0; i < FieldLeaf::SIZE; ++i)
+      insideCount += sides.inside(leaf.offsetToGlobalCoord(i), values[i]) ? 1 : 0;
+  if (insideCount != 0 && insideCount != FieldLeaf::SIZE) return true;
+  const bool side = insideCount != 0;
+  for (int a = 0; a < 3; ++a)
+    for (const int direction : {-1, 1}) {
+      openvdb::Coord neighbour = origin;
+      neighbour[a] += direction * kDim;
+      const FieldLeaf* next = accessor.probeConstLeaf(neighbour);
+      const float tile = next ? 0.0f : accessor.getValue(neighbour);
+      // The neighbour's layer of samples against this leaf's face: local index `layer` on axis
+      // a; a leaf stores (x, y, z) at x * 64 + y * 8 + z.
+      constexpr std::array<int, 3> kStride{kDim * kDim, kDim, 1};
+      const int layer = direction > 0 ? 0 : kDim - 1;
+      const int u = (a + 1) % 3, w = (a + 2) % 3;
+      if (plain) {
+        if (next == nullptr) {
+          if (sides.inside(tile) != side) return true;
+          continue;
+        }
+        const float* data = next->buffer().data() + layer * kStride[static_cast<std::size_t>(a)];
+        int layerInside = 0;
+        for (int i = 0; i < kDim; ++i)
+          for (int j = 0; j < kDim; ++j)
+            layerInside +=
+                sides.inside(data[i * kStride[static_cast<std::size_t>(u)] + j * kStride[static_cast<std::size_t>(w)]])
+                    ? 1
+                    : 0;
+        if (layerInside != (side ? kDim * kDim : 0)) return true;
+        continue;
+      }
+      for (int i = 0; i < kDim; ++i)
+        for (int j = 0; j < kDim; ++j) {
+          openvdb::Coord local;
+          local[a] = layer;
+          local[u] = i;
+          local[w] = j;
+          const float value = next ? next->getValue(FieldLeaf::coordToOffset(local)) : tile;
+          if (sides.inside(neighbour + local, value) != side) return true;
+        }
+    }
+  return false;
+}
 
 }  // namespace
 
@@ -52,12 +139,27 @@ MetaCellPartition partitionMetaCells(const Volume& field, int size, float iso, c
         }
   };
   const bool distance = field.kind() == VolumeKind::DistanceField;
-  for (auto leaf = grid.tree().cbeginLeaf(); leaf; ++leaf) {
-    ++partition.leavesScanned;
-    bool near = !distance;
-    for (auto it = leaf->cbeginValueAll(); it && !near; ++it) near = std::abs(*it - iso) <= 1.f;
-    if (near) addBox(leaf->getNodeBoundingBox());
-  }
+  std::vector<const FieldLeaf*> leaves;
+  leaves.reserve(grid.tree().leafCount());
+  grid.tree().getNodes(leaves);
+  std::vector<char> near(leaves.size(), 0);
+  const ScalarSides sides(iso, capsBox);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size(), 64),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      const FieldGrid::ConstAccessor accessor = grid.getConstAccessor();
+                      for (std::size_t i = r.begin(); i != r.end(); ++i) {
+                        const FieldLeaf& leaf = *leaves[i];
+                        if (!distance) {
+                          near[i] = scalarLeafNearIso(leaf, accessor, sides);
+                          continue;
+                        }
+                        for (auto it = leaf.cbeginValueAll(); it && !near[i]; ++it)
+                          near[i] = std::abs(*it - iso) <= 1.f;
+                      }
+                    });
+  partition.leavesScanned = static_cast<std::int64_t>(leaves.size());
+  for (std::size_t i = 0; i < leaves.size(); ++i)
+    if (near[i]) addBox(leaves[i]->getNodeBoundingBox());
   if (!distance) forEachActiveTile(grid.tree(), addBox);
   if (capsBox && backgroundInside(field, iso))
     for (int a = 0; a < 3; ++a) {

@@ -36,8 +36,13 @@ struct MetaCellPartition {
 /// Distance field: those touching a leaf with a value within one voxel of the
 /// isovalue (a distance field changes by at most one per voxel, so every
 /// crossing lies in such a leaf); tiles are never read. Scalar field (values
-/// may jump by any amount): those touching any leaf or active tile, grown by one
-/// voxel. Callers still test each meta-cell's samples (hasSignChange).
+/// may jump by any amount): those touching, grown by one voxel, an active tile
+/// or a leaf whose samples lie on both sides of the isovalue, or on the other
+/// side than a sample next to one of its faces (in the neighbouring leaf, tile
+/// or background; beyond `capsBox` a sample reads as outside). A dense field's
+/// blocks that the surface misses are then not read (a 256³ Gaussian's ball:
+/// 8 meta-cells instead of 64). Callers still test each meta-cell's samples
+/// (hasSignChange).
 /// `capsBox`: the data's box when the contouring makes caps on it (outside it reads as
 /// outside); where the grid's background is inside (a scalar's background at or above
 /// the isovalue), the meta-cells along the box's faces are added too, since a cap may
