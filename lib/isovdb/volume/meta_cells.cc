@@ -50,57 +50,47 @@ class ScalarSides {
 /// sides, or a sample next to one of its faces (in the neighbouring leaf, tile or
 /// background, as readBlock reads them) reads on the other side than the leaf's. A
 /// leaf on one side among samples on that side gives no meta-cell a sign change.
-bool scalarLeafNearIso(const FieldLeaf& leaf, const FieldGrid::ConstAccessor& accessor, const ScalarSides& sides) {
+/// `insideAt(coord, value)` is the side of a sample; sides are counted, not branched on,
+/// so the loops vectorise where it ignores the coordinate.
+template <typename InsideAt>
+bool leafNearIso(const FieldLeaf& leaf, const FieldGrid::ConstAccessor& accessor, const InsideAt& insideAt) {
   constexpr int kDim = static_cast<int>(FieldLeaf::DIM);
   const openvdb::Coord origin = leaf.origin();
-  const bool plain = sides.boxHolds(origin.offsetBy(-1), origin.offsetBy(kDim));
   const float* values = leaf.buffer().data();
-  openvdb::Index insideCount = 0;  // a count, not a branch per sample: the loop vectorises
-  if (plain)
-    for (openvdb::Index i = 0; i < FieldLeaf::SIZE; ++i) insideCount += sides.inside(values[i]) ? 1 : 0;
-  else
-    for (openvdb::Index i = 0; i < FieldLeaf::SIZE; ++i)
-      insideCount += sides.inside(leaf.offsetToGlobalCoord(i), values[i]) ? 1 : 0;
+  openvdb::Index insideCount = 0;
+  for (openvdb::Index i = 0; i < FieldLeaf::SIZE; ++i)
+    insideCount += insideAt(leaf.offsetToGlobalCoord(i), values[i]) ? 1 : 0;
   if (insideCount != 0 && insideCount != FieldLeaf::SIZE) return true;
-  const bool side = insideCount != 0;
+  const int sideCount = insideCount != 0 ? kDim * kDim : 0;  // a face layer all on the leaf's side
   for (int a = 0; a < 3; ++a)
     for (const int direction : {-1, 1}) {
       openvdb::Coord neighbour = origin;
       neighbour[a] += direction * kDim;
       const FieldLeaf* next = accessor.probeConstLeaf(neighbour);
+      const float* data = next ? next->buffer().data() : nullptr;
       const float tile = next ? 0.0f : accessor.getValue(neighbour);
-      // The neighbour's layer of samples against this leaf's face: local index `layer` on axis
-      // a; a leaf stores (x, y, z) at x * 64 + y * 8 + z.
-      constexpr std::array<int, 3> kStride{kDim * kDim, kDim, 1};
-      const int layer = direction > 0 ? 0 : kDim - 1;
+      // The neighbour's layer of samples against this leaf's face (its local coordinate on axis a).
       const int u = (a + 1) % 3, w = (a + 2) % 3;
-      if (plain) {
-        if (next == nullptr) {
-          if (sides.inside(tile) != side) return true;
-          continue;
+      openvdb::Coord local;
+      local[a] = direction > 0 ? 0 : kDim - 1;
+      int layerInside = 0;
+      for (local[u] = 0; local[u] < kDim; ++local[u])
+        for (local[w] = 0; local[w] < kDim; ++local[w]) {
+          const float value = data ? data[FieldLeaf::coordToOffset(local)] : tile;
+          layerInside += insideAt(neighbour + local, value) ? 1 : 0;
         }
-        const float* data = next->buffer().data() + layer * kStride[static_cast<std::size_t>(a)];
-        int layerInside = 0;
-        for (int i = 0; i < kDim; ++i)
-          for (int j = 0; j < kDim; ++j)
-            layerInside +=
-                sides.inside(data[i * kStride[static_cast<std::size_t>(u)] + j * kStride[static_cast<std::size_t>(w)]])
-                    ? 1
-                    : 0;
-        if (layerInside != (side ? kDim * kDim : 0)) return true;
-        continue;
-      }
-      for (int i = 0; i < kDim; ++i)
-        for (int j = 0; j < kDim; ++j) {
-          openvdb::Coord local;
-          local[a] = layer;
-          local[u] = i;
-          local[w] = j;
-          const float value = next ? next->getValue(FieldLeaf::coordToOffset(local)) : tile;
-          if (sides.inside(neighbour + local, value) != side) return true;
-        }
+      if (layerInside != sideCount) return true;
     }
   return false;
+}
+
+/// leafNearIso with the sides of `sides`: without coordinates where the leaf and the
+/// samples next to it lie in the box (all but the leaves along its faces).
+bool scalarLeafNearIso(const FieldLeaf& leaf, const FieldGrid::ConstAccessor& accessor, const ScalarSides& sides) {
+  const openvdb::Coord origin = leaf.origin();
+  if (sides.boxHolds(origin.offsetBy(-1), origin.offsetBy(static_cast<int>(FieldLeaf::DIM))))
+    return leafNearIso(leaf, accessor, [&](const openvdb::Coord&, float value) { return sides.inside(value); });
+  return leafNearIso(leaf, accessor, [&](const openvdb::Coord& c, float value) { return sides.inside(c, value); });
 }
 
 }  // namespace

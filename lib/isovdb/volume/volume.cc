@@ -71,12 +71,14 @@ GridStats treeStats(const TreeT& tree, bool withRange, const std::optional<std::
   }
   if constexpr (std::is_same_v<typename TreeT::ValueType, float>) {
     stats.background = tree.background();
-    if (withRange && stats.activeVoxels > 0 && knownRange) {
-      std::tie(stats.minValue, stats.maxValue) = *knownRange;
-    } else if (withRange && stats.activeVoxels > 0) {
-      const auto extrema = openvdb::tools::minMax(tree);
-      stats.minValue = extrema.min();
-      stats.maxValue = extrema.max();
+    if (withRange && stats.activeVoxels > 0) {
+      if (knownRange) {
+        std::tie(stats.minValue, stats.maxValue) = *knownRange;
+      } else {
+        const auto extrema = openvdb::tools::minMax(tree);
+        stats.minValue = extrema.min();
+        stats.maxValue = extrema.max();
+      }
     }
   }
   return stats;
