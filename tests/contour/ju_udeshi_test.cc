@@ -141,6 +141,97 @@ TEST(JuUdeshi, TriangleFarOutsideIsRejected) {
   EXPECT_FALSE(triangleInEnvelope(env, {-0.5, -0.5, 0.0}, {0.5, -0.5, 0.0}, {0.0, 0.8, 0.0}));
 }
 
+/// regularEnvelope's cells and face points turned so the edge runs along `axis` (a cyclic
+/// permutation of x, y, z keeps the handedness), scaled by `size` and moved to `at`.
+EdgeEnvelope movedEnvelope(const EdgeEnvelope& env, int axis, double size, const Vec3d& at) {
+  const auto move = [&](const Vec3d& p) {
+    Vec3d q{};
+    for (int a = 0; a < 3; ++a) q[(a + axis + 1) % 3] = at[(a + axis + 1) % 3] + size * p[a];
+    return q;
+  };
+  EdgeEnvelope out = env;
+  out.edgeStart = move(env.edgeStart);
+  out.edgeEnd = move(env.edgeEnd);
+  for (int i = 0; i < 4; ++i) {
+    out.cellPoints[i] = move(env.cellPoints[i]);
+    out.facePoints[i] = move(env.facePoints[i]);
+  }
+  return out;
+}
+
+TEST(JuUdeshi, QuadClearlyInsideOnlyWhereTheEnvelopeTestKeepsBothTriangles) {
+  // Random quads with every face crossed, along each axis and at two sizes: whenever the
+  // test across the edge accepts a diagonal, the full envelope test keeps both triangles;
+  // and it answers most of the quads the full test keeps (what it is for).
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0.02, 0.98);
+  int quads = 0, keptByFull = 0, keptByBoth = 0, wrong = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    std::array<Vec3d, 4> cells;
+    const int sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
+    // A quarter of the quads hug the end e1, within the envelope test's margin of it.
+    const bool nearEnd = trial % 4 == 0;
+    for (int i = 0; i < 4; ++i)
+      cells[i] = {sx[i] * unit(rng), sy[i] * unit(rng), nearEnd ? 0.9995 + 0.00049 * unit(rng) : unit(rng)};
+    EdgeEnvelope base = regularEnvelope(cells);
+    const auto crossed = fillFacePoints(base);
+    if (!(crossed[0] && crossed[1] && crossed[2] && crossed[3])) continue;
+    const int axis = trial % 3;
+    const double size = trial % 2 ? 1.0 : 4.0;
+    const EdgeEnvelope env = movedEnvelope(base, axis, size, {100.0 + trial % 7, 50.0, 12.0});
+    ++quads;
+    for (int apex = 0; apex < 2; ++apex) {
+      const auto& c = env.cellPoints;
+      const bool full = triangleInEnvelope(env, c[apex], c[apex + 1], c[apex + 2]) &&
+                        triangleInEnvelope(env, c[apex], c[apex + 2], c[(apex + 3) % 4]);
+      const bool fast = quadClearlyInsideEnvelope(env, apex);
+      keptByFull += full ? 1 : 0;
+      keptByBoth += full && fast ? 1 : 0;
+      if (fast && !full) ++wrong;
+    }
+  }
+  std::printf("quads %d: full test keeps %d diagonals, the test across the edge %d of them\n", quads, keptByFull,
+              keptByBoth);
+  EXPECT_EQ(wrong, 0);
+  EXPECT_GT(quads, 5000);
+  EXPECT_GT(keptByBoth, 0.9 * keptByFull);
+}
+
+TEST(JuUdeshi, QuadClearlyInsideRejectsAQuadThroughTheEdgeEnd) {
+  // A flat quad across the edge is inside (a diagonal through the edge line itself is
+  // left to the full test); lifted to the height of e1, or with a cell vertex pulled onto
+  // the edge line, it is not (or not clearly).
+  const EdgeEnvelope square =
+      regularEnvelope({Vec3d{-0.5, -0.5, 0.5}, {0.5, -0.5, 0.5}, {0.5, 0.5, 0.5}, {-0.5, 0.5, 0.5}});
+  EdgeEnvelope flat = square;
+  flat.cellPoints[1] = {0.6, -0.3, 0.5};
+  flat.cellPoints[2] = {0.4, 0.6, 0.5};
+  fillFacePoints(flat);
+  EXPECT_TRUE(quadClearlyInsideEnvelope(flat, 0));
+  EXPECT_TRUE(quadClearlyInsideEnvelope(flat, 1));
+  EdgeEnvelope symmetric = square;
+  fillFacePoints(symmetric);
+  EXPECT_FALSE(quadClearlyInsideEnvelope(symmetric, 0));
+  EdgeEnvelope high = flat;
+  for (auto& c : high.cellPoints) c[2] = 0.99995;
+  fillFacePoints(high);
+  EXPECT_FALSE(quadClearlyInsideEnvelope(high, 0));
+  // c1 low and near the edge line, the others high: whatever the test across the edge
+  // accepts, the full test keeps.
+  EdgeEnvelope folded =
+      regularEnvelope({Vec3d{-0.5, -0.5, 0.9}, {0.05, -0.05, 0.1}, {0.5, 0.5, 0.9}, {-0.5, 0.5, 0.5}});
+  fillFacePoints(folded);
+  for (int apex = 0; apex < 2; ++apex)
+    if (quadClearlyInsideEnvelope(folded, apex)) {
+      const auto& c = folded.cellPoints;
+      EXPECT_TRUE(triangleInEnvelope(folded, c[apex], c[apex + 1], c[apex + 2]) &&
+                  triangleInEnvelope(folded, c[apex], c[apex + 2], c[(apex + 3) % 4]));
+    }
+  EdgeEnvelope onLine = flat;
+  onLine.cellPoints[1] = {0.0, 0.0, 0.5};
+  EXPECT_FALSE(quadClearlyInsideEnvelope(onLine, 0));
+}
+
 TEST(JuUdeshi, FullFanHasTwoTrianglesPerCellAroundTheEdge) {
   std::vector<std::array<int, 3>> tris;
   const EdgeTriangulation fan{true, 0};
