@@ -165,7 +165,14 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
           assert(regular);
           if (!regular) continue;
           ++chunkEdges[c];
-          if (groups.voxels) {
+          // The voxel reading's cells without tube sectors or split faces give the edge one
+          // vertex each: its plain quad (voxelEdgeTriangles' own first case), without
+          // gathering every vertex of the four cells.
+          const bool plainVoxelQuad = groups.voxels && std::all_of(around.begin(), around.end(), [&](std::int64_t j) {
+                                        const auto u = static_cast<std::size_t>(j);
+                                        return groups.splitFaces[u] == 0 && !isTubeConfig(config[u]);
+                                      });
+          if (groups.voxels && !plainVoxelQuad) {
             std::array<VoxelEdgeCell, 4> cells;
             for (int q = 0; q < 4; ++q)
               cells[static_cast<std::size_t>(q)] =
@@ -176,7 +183,9 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
           appendRegularEdgeQuad(
               [&](int q) -> std::optional<EdgeVertex> {
                 const auto j = static_cast<std::size_t>(around[static_cast<std::size_t>(q)]);
-                const int g = cell::dmcVertexOfEdge(config[j], alternative[j] != 0, axis, q);
+                const int g = plainVoxelQuad
+                                  ? voxelDmcEntry(config[j]).vertexOfEdge[static_cast<std::size_t>(4 * axis + 3 - q)]
+                                  : cell::dmcVertexOfEdge(config[j], alternative[j] != 0, axis, q);
                 assert(g >= 0);
                 const std::uint32_t id = vertexBase[j] + static_cast<std::uint32_t>(g);
                 return EdgeVertex{id, out.positions[id]};
