@@ -169,10 +169,10 @@ TEST(JuUdeshi, QuadClearlyInsideOnlyWhereTheEnvelopeTestKeepsBothTriangles) {
   for (int trial = 0; trial < 20000; ++trial) {
     std::array<Vec3d, 4> cells;
     const int sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
-    // A quarter of the quads hug the end e1, within the envelope test's margin of it.
+    // A quarter of the quads hug the end e1 (their faces still crossed below 0.999).
     const bool nearEnd = trial % 4 == 0;
     for (int i = 0; i < 4; ++i)
-      cells[i] = {sx[i] * unit(rng), sy[i] * unit(rng), nearEnd ? 0.9995 + 0.00049 * unit(rng) : unit(rng)};
+      cells[i] = {sx[i] * unit(rng), sy[i] * unit(rng), nearEnd ? 0.998 + 0.0015 * unit(rng) : unit(rng)};
     EdgeEnvelope base = regularEnvelope(cells);
     const auto crossed = fillFacePoints(base);
     if (!(crossed[0] && crossed[1] && crossed[2] && crossed[3])) continue;
@@ -184,7 +184,7 @@ TEST(JuUdeshi, QuadClearlyInsideOnlyWhereTheEnvelopeTestKeepsBothTriangles) {
       const auto& c = env.cellPoints;
       const bool full = triangleInEnvelope(env, c[apex], c[apex + 1], c[apex + 2]) &&
                         triangleInEnvelope(env, c[apex], c[apex + 2], c[(apex + 3) % 4]);
-      const bool fast = quadClearlyInsideEnvelope(env, apex);
+      const bool fast = clearlyInsideEnvelope(env, apex);
       keptByFull += full ? 1 : 0;
       keptByBoth += full && fast ? 1 : 0;
       if (fast && !full) ++wrong;
@@ -197,6 +197,66 @@ TEST(JuUdeshi, QuadClearlyInsideOnlyWhereTheEnvelopeTestKeepsBothTriangles) {
   EXPECT_GT(keptByBoth, 0.9 * keptByFull);
 }
 
+/// Three cells around the unit edge x = y = 0, 0 <= z <= 1: two unit cells below y = 0
+/// and a cell of size 2 above it (x in [-1, 1], y in [0, 2], z in [0, 2]), with their
+/// face points. @return whether every face is crossed.
+bool threeCellEnvelope(const std::array<Vec3d, 3>& cells, EdgeEnvelope& env) {
+  const std::array<MinimalFace, 3> faces{
+      MinimalFace{.axis = 0, .coordinate = 0, .min = {0, -1, 0}, .size = 1},   // unit cells 0 | 1
+      MinimalFace{.axis = 1, .coordinate = 0, .min = {0, 0, 0}, .size = 1},    // cell 1 | the large cell
+      MinimalFace{.axis = 1, .coordinate = 0, .min = {-1, 0, 0}, .size = 1}};  // the large cell | cell 0
+  env = EdgeEnvelope{};
+  env.edgeStart = {0, 0, 0};
+  env.edgeEnd = {0, 0, 1};
+  env.cellCount = 3;
+  bool allCrossed = true;
+  for (int i = 0; i < 3; ++i) {
+    env.cellPoints[i] = cells[i];
+    const FacePoint fp = computeFacePoint(cells[i], cells[(i + 1) % 3], faces[i]);
+    env.facePoints[i] = fp.point;
+    allCrossed = allCrossed && fp.crossed;
+  }
+  return allCrossed;
+}
+
+TEST(JuUdeshi, TriangleClearlyInsideOnlyWhereTheEnvelopeTestKeepsIt) {
+  // Random triangles with every face crossed: whenever the test across the edge accepts
+  // one, the full envelope test keeps it; it answers almost all of them (the edge line
+  // then crosses the triangle between the two face points on its plane y = 0, inside
+  // the face's height).
+  std::mt19937 rng(13);
+  std::uniform_real_distribution<double> unit(0.02, 0.98);
+  int triangles = 0, keptByFull = 0, keptByBoth = 0, wrong = 0;
+  for (int trial = 0; trial < 20000; ++trial) {
+    EdgeEnvelope env;
+    const std::array<Vec3d, 3> cells{Vec3d{-unit(rng), -unit(rng), unit(rng)}, Vec3d{unit(rng), -unit(rng), unit(rng)},
+                                     Vec3d{2.0 * unit(rng) - 1.0, 2.0 * unit(rng), 2.0 * unit(rng)}};
+    if (!threeCellEnvelope(cells, env)) continue;
+    ++triangles;
+    const bool full = triangleInEnvelope(env, env.cellPoints[0], env.cellPoints[1], env.cellPoints[2]);
+    const bool fast = clearlyInsideEnvelope(env, 0);
+    keptByFull += full ? 1 : 0;
+    keptByBoth += full && fast ? 1 : 0;
+    if (fast && !full) ++wrong;
+  }
+  std::printf("triangles %d: full test keeps %d, the test across the edge %d of them\n", triangles, keptByFull,
+              keptByBoth);
+  EXPECT_EQ(wrong, 0);
+  EXPECT_GT(triangles, 3000);
+  EXPECT_GT(keptByBoth, 0.97 * keptByFull);
+  // Left to the full test: a cell point within 10^-3 of the edge line, and a face point
+  // off its face's plane through the edge (not a face of the three cells).
+  EdgeEnvelope env;
+  ASSERT_TRUE(threeCellEnvelope({Vec3d{-0.5, -0.5, 0.5}, {0.5, -0.5, 0.5}, {0.1, 0.6, 0.5}}, env));
+  EXPECT_TRUE(clearlyInsideEnvelope(env, 0));
+  EdgeEnvelope nearLine = env;
+  nearLine.cellPoints[2] = {0.0002, 0.0005, 0.5};
+  EXPECT_FALSE(clearlyInsideEnvelope(nearLine, 0));
+  EdgeEnvelope offFace = env;
+  offFace.facePoints[1][1] = 0.01;
+  EXPECT_FALSE(clearlyInsideEnvelope(offFace, 0));
+}
+
 TEST(JuUdeshi, QuadClearlyInsideRejectsAQuadThroughTheEdgeEnd) {
   // A flat quad across the edge is inside (a diagonal through the edge line itself is
   // left to the full test); lifted to the height of e1, or with a cell vertex pulled onto
@@ -207,29 +267,29 @@ TEST(JuUdeshi, QuadClearlyInsideRejectsAQuadThroughTheEdgeEnd) {
   flat.cellPoints[1] = {0.6, -0.3, 0.5};
   flat.cellPoints[2] = {0.4, 0.6, 0.5};
   fillFacePoints(flat);
-  EXPECT_TRUE(quadClearlyInsideEnvelope(flat, 0));
-  EXPECT_TRUE(quadClearlyInsideEnvelope(flat, 1));
+  EXPECT_TRUE(clearlyInsideEnvelope(flat, 0));
+  EXPECT_TRUE(clearlyInsideEnvelope(flat, 1));
   EdgeEnvelope symmetric = square;
   fillFacePoints(symmetric);
-  EXPECT_FALSE(quadClearlyInsideEnvelope(symmetric, 0));
+  EXPECT_FALSE(clearlyInsideEnvelope(symmetric, 0));
   EdgeEnvelope high = flat;
   for (auto& c : high.cellPoints) c[2] = 0.99995;
   fillFacePoints(high);
-  EXPECT_FALSE(quadClearlyInsideEnvelope(high, 0));
+  EXPECT_FALSE(clearlyInsideEnvelope(high, 0));
   // c1 low and near the edge line, the others high: whatever the test across the edge
   // accepts, the full test keeps.
   EdgeEnvelope folded =
       regularEnvelope({Vec3d{-0.5, -0.5, 0.9}, {0.05, -0.05, 0.1}, {0.5, 0.5, 0.9}, {-0.5, 0.5, 0.5}});
   fillFacePoints(folded);
   for (int apex = 0; apex < 2; ++apex)
-    if (quadClearlyInsideEnvelope(folded, apex)) {
+    if (clearlyInsideEnvelope(folded, apex)) {
       const auto& c = folded.cellPoints;
       EXPECT_TRUE(triangleInEnvelope(folded, c[apex], c[apex + 1], c[apex + 2]) &&
                   triangleInEnvelope(folded, c[apex], c[apex + 2], c[(apex + 3) % 4]));
     }
   EdgeEnvelope onLine = flat;
   onLine.cellPoints[1] = {0.0, 0.0, 0.5};
-  EXPECT_FALSE(quadClearlyInsideEnvelope(onLine, 0));
+  EXPECT_FALSE(clearlyInsideEnvelope(onLine, 0));
 }
 
 TEST(JuUdeshi, FullFanHasTwoTrianglesPerCellAroundTheEdge) {

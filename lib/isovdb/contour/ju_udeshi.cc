@@ -251,9 +251,9 @@ EdgeTriangulation chooseTriangulation(const EdgeEnvelope& envelope, const std::a
     apexCount = 1;
   }
   if (!intersectionFree) return EdgeTriangulation{false, apexes.front()};
-  // Most quads lie well inside their envelope: a test across the edge says so without
-  // building the sectors, for the apex the full test tries first.
-  if (k == 4 && m == 4 && quadClearlyInsideEnvelope(envelope, apexes.front(), options))
+  // Most polygons with every face crossed lie well inside their envelope: a test across the
+  // edge says so without building the sectors, for the apex the full test tries first.
+  if (m == k && clearlyInsideEnvelope(envelope, apexes.front(), options))
     return EdgeTriangulation{false, apexes.front()};
   const EnvelopeSectors sectors(envelope);
   for (int a = 0; a < apexCount; ++a) {

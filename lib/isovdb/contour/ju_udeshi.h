@@ -117,14 +117,15 @@ FacePoint computeFacePoint(const Vec3d& a, const Vec3d& b, const MinimalFace& fa
 bool triangleInEnvelope(const EdgeEnvelope& envelope, const Vec3d& a, const Vec3d& b, const Vec3d& c,
                         const EnvelopeOptions& options = {});
 
-/// @brief A sufficient condition for triangleInEnvelope to keep both triangles of a quad
-///        with every face crossed, split from cell vertex `apex` (0 or 1), decided without
-///        clipping: true only where each point the envelope test checks lies at least
-///        2 * options.margin inside (so the full test accepts it too, whatever its rounding);
-///        false where the full test must decide.
+/// @brief A sufficient condition for triangleInEnvelope to keep every triangle of an
+///        edge's polygon with every face crossed: the quad (k = 4) split from cell vertex
+///        `apex` (0 or 1), or the triangle (k = 3, apex 0), decided without clipping: true
+///        only where each point the envelope test checks lies at least 2 * options.margin
+///        inside (so the full test accepts it too, whatever its rounding); false where the
+///        full test must decide.
 ///
 /// The edge is axis-aligned, so every sector plane contains the edge direction: seen along
-/// the edge, the envelope is eight wedges around the edge point O (a cell point's ray, a
+/// the edge, the envelope is 2k wedges around the edge point O (a cell point's ray, a
 /// face point's ray, ...), and over a point at parameter beta of a ray R the tetrahedra
 /// span heights [beta R_w, beta R_w + (1 - beta) s] (s the edge's length). The clipped
 /// triangles' corners that are not on a segment v_c v_f are the diagonal's crossings of
@@ -132,8 +133,8 @@ bool triangleInEnvelope(const EdgeEnvelope& envelope, const Vec3d& a, const Vec3
 /// test checks those heights against the tetrahedra's bounds, with each outer plane's tilt
 /// bounded by |P - e| |Q - e| / |(P - e) x (Q - e)|_w.
 /// @pre every face crossed (f_i on the segment c_i c_{i+1}, as computeFacePoint's crossed
-///      face points are); envelope.cellCount == 4 (otherwise false).
-bool quadClearlyInsideEnvelope(const EdgeEnvelope& envelope, int apex, const EnvelopeOptions& options = {});
+///      face points are).
+bool clearlyInsideEnvelope(const EdgeEnvelope& envelope, int apex, const EnvelopeOptions& options = {});
 
 /// @brief The polygon of an edge as local vertex numbers (see kFaceVertex):
 ///        c_0, [f_0], c_1, [f_1], ... with f_i present iff face i is not crossed.
