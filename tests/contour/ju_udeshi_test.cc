@@ -159,13 +159,30 @@ EdgeEnvelope movedEnvelope(const EdgeEnvelope& env, int axis, double size, const
   return out;
 }
 
+/// The full envelope test's answers against the test across the edge's.
+struct AcrossTally {
+  int keptByFull = 0, keptByBoth = 0, wrong = 0;
+  void add(bool full, bool fast) {
+    keptByFull += full ? 1 : 0;
+    keptByBoth += full && fast ? 1 : 0;
+    wrong += fast && !full ? 1 : 0;
+  }
+  /// Never a polygon the full test refuses, and at least `share` of those it keeps.
+  void expect(const char* what, double share) const {
+    std::printf("%s: the full test keeps %d, the test across the edge %d of them\n", what, keptByFull, keptByBoth);
+    EXPECT_EQ(wrong, 0) << what;
+    EXPECT_GT(keptByBoth, share * keptByFull) << what;
+  }
+};
+
 TEST(JuUdeshi, QuadClearlyInsideOnlyWhereTheEnvelopeTestKeepsBothTriangles) {
   // Random quads with every face crossed, along each axis and at two sizes: whenever the
   // test across the edge accepts a diagonal, the full envelope test keeps both triangles;
   // and it answers most of the quads the full test keeps (what it is for).
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> unit(0.02, 0.98);
-  int quads = 0, keptByFull = 0, keptByBoth = 0, wrong = 0;
+  int quads = 0;
+  AcrossTally tally;
   for (int trial = 0; trial < 20000; ++trial) {
     std::array<Vec3d, 4> cells;
     const int sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
@@ -184,17 +201,11 @@ TEST(JuUdeshi, QuadClearlyInsideOnlyWhereTheEnvelopeTestKeepsBothTriangles) {
       const auto& c = env.cellPoints;
       const bool full = triangleInEnvelope(env, c[apex], c[apex + 1], c[apex + 2]) &&
                         triangleInEnvelope(env, c[apex], c[apex + 2], c[(apex + 3) % 4]);
-      const bool fast = clearlyInsideEnvelope(env, apex);
-      keptByFull += full ? 1 : 0;
-      keptByBoth += full && fast ? 1 : 0;
-      if (fast && !full) ++wrong;
+      tally.add(full, clearlyInsideEnvelope(env, apex));
     }
   }
-  std::printf("quads %d: full test keeps %d diagonals, the test across the edge %d of them\n", quads, keptByFull,
-              keptByBoth);
-  EXPECT_EQ(wrong, 0);
   EXPECT_GT(quads, 5000);
-  EXPECT_GT(keptByBoth, 0.9 * keptByFull);
+  tally.expect("random quads' diagonals", 0.9);
 }
 
 /// Three cells around the unit edge x = y = 0, 0 <= z <= 1: two unit cells below y = 0
@@ -226,24 +237,19 @@ TEST(JuUdeshi, TriangleClearlyInsideOnlyWhereTheEnvelopeTestKeepsIt) {
   // the face's height).
   std::mt19937 rng(13);
   std::uniform_real_distribution<double> unit(0.02, 0.98);
-  int triangles = 0, keptByFull = 0, keptByBoth = 0, wrong = 0;
+  int triangles = 0;
+  AcrossTally tally;
   for (int trial = 0; trial < 20000; ++trial) {
     EdgeEnvelope env;
     const std::array<Vec3d, 3> cells{Vec3d{-unit(rng), -unit(rng), unit(rng)}, Vec3d{unit(rng), -unit(rng), unit(rng)},
                                      Vec3d{2.0 * unit(rng) - 1.0, 2.0 * unit(rng), 2.0 * unit(rng)}};
     if (!threeCellEnvelope(cells, env)) continue;
     ++triangles;
-    const bool full = triangleInEnvelope(env, env.cellPoints[0], env.cellPoints[1], env.cellPoints[2]);
-    const bool fast = clearlyInsideEnvelope(env, 0);
-    keptByFull += full ? 1 : 0;
-    keptByBoth += full && fast ? 1 : 0;
-    if (fast && !full) ++wrong;
+    tally.add(triangleInEnvelope(env, env.cellPoints[0], env.cellPoints[1], env.cellPoints[2]),
+              clearlyInsideEnvelope(env, 0));
   }
-  std::printf("triangles %d: full test keeps %d, the test across the edge %d of them\n", triangles, keptByFull,
-              keptByBoth);
-  EXPECT_EQ(wrong, 0);
   EXPECT_GT(triangles, 3000);
-  EXPECT_GT(keptByBoth, 0.97 * keptByFull);
+  tally.expect("random three-cell triangles", 0.97);
   // Left to the full test: a cell point within 10^-3 of the edge line, and a face point
   // off its face's plane through the edge (not a face of the three cells).
   EdgeEnvelope env;
