@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "isovdb/bit_count.h"
 #include "isovdb/contour/adaptive_edges.h"
 #include "isovdb/cell/dual_vertex.h"
 #include "isovdb/cell/edge_intersection.h"
@@ -106,9 +107,18 @@ MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const
   constexpr std::size_t kChunkLeaves = 256;
   std::vector<LeafEdges> perLeaf((leafCount + kChunkLeaves - 1) / kChunkLeaves);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, perLeaf.size()), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t c = r.begin(); c != r.end(); ++c)
-      for (std::size_t i = c * kChunkLeaves; i < std::min(leafCount, (c + 1) * kChunkLeaves); ++i)
+    for (std::size_t c = r.begin(); c != r.end(); ++c) {
+      // Each bipolar edge is met from its (up to) four leaves and kept by one: a quarter of
+      // the chunk's bipolar edges, reserved so that the 280-byte records are not copied
+      // again as the vector grows (a sixth of collectMinimalEdges' time).
+      const std::size_t end = std::min(leafCount, (c + 1) * kChunkLeaves);
+      std::size_t bipolar = 0;
+      for (std::size_t i = c * kChunkLeaves; i < end; ++i)
+        bipolar += static_cast<std::size_t>(countBits(tree.leaf(i).bipolarEdges()));
+      perLeaf[c].records.reserve(bipolar / 4 + 8);
+      for (std::size_t i = c * kChunkLeaves; i < end; ++i)
         if (tree.leaf(i).bipolarEdges() != 0) collectMinimalEdges(source, i, options.intersectionFree, perLeaf[c]);
+    }
   });
 
   // Seam cells: leaves with a sign change that touch the meta-cell boundary; they keep their vertices.

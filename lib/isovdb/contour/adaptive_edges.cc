@@ -141,7 +141,8 @@ void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool
       return cellPoints[firstVertex[l] + static_cast<std::size_t>(groups[static_cast<std::size_t>(i)])];
     };
 
-    EdgeRecord r;
+    // Filled in place: the record is 280 bytes, and copying it in was a sixth of this routine.
+    EdgeRecord& r = out.records.emplace_back();
     r.cellCount = k;
     r.cells = cells;
     r.groups = groups;
@@ -198,7 +199,6 @@ void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool
     r.edgePoint[axis] = env.edgeStart[axis] + std::clamp(t, m, s - m);
     r.how = chooseTriangulation(env, crossed, intersectionFree);
     if (intersectionFree) r.crossed = crossed;
-    out.records.push_back(r);
   }
 }
 
