@@ -45,6 +45,9 @@ void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool
   const std::uint16_t bipolar = leaf.bipolarEdges();
   const int s = leaf.size;
   const std::array<int, 3>& g = source.origin;
+  // One envelope for the leaf's edges: each sets every entry it reads (the first k cells
+  // and faces, the edge's ends); zeroing it per edge was a tenth of this routine.
+  EdgeEnvelope env;
   for (int e = 0; e < 12; ++e) {
     if (!((bipolar >> e) & 1)) continue;
     const int axis = octree::cellEdgeAxis(e);
@@ -146,7 +149,6 @@ void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool
     r.cellCount = k;
     r.cells = cells;
     r.groups = groups;
-    EdgeEnvelope env;
     env.cellCount = k;
     std::array<bool, 4> crossed{};
     for (int i = 0; i < k; ++i) {
