@@ -91,6 +91,7 @@ Geometry takeGeometry(openvdb::GridBase& grid, const std::filesystem::path& path
 
 template <typename GridT>
 void scaleLevelSet(GridT& grid, float factor) {
+  if (factor == 1.0f) return;  // unit voxels, the usual case: a pass over every value for nothing
   const float background = grid.background() * factor;
   openvdb::tools::foreach (grid.beginValueOn(),
                            [factor](const typename GridT::ValueOnIter& it) { it.setValue(*it * factor); });
