@@ -131,7 +131,9 @@ bool triangleInEnvelope(const EdgeEnvelope& envelope, const Vec3d& a, const Vec3
 /// triangles' corners that are not on a segment v_c v_f are the diagonal's crossings of
 /// the rays on one side of O, and O itself under the triangle whose shadow contains O; the
 /// test checks those heights against the tetrahedra's bounds, with each outer plane's tilt
-/// bounded by |P - e| |Q - e| / |(P - e) x (Q - e)|_w.
+/// bounded by |P - e| |Q - e| / |(P - e) x (Q - e)|_w, or taken from the plane's normal
+/// where that bound refuses. With three cells only the point over O is checked: it lies
+/// between the larger cell's two face points, on their plane.
 /// @pre every face crossed (f_i on the segment c_i c_{i+1}, as computeFacePoint's crossed
 ///      face points are).
 bool clearlyInsideEnvelope(const EdgeEnvelope& envelope, int apex, const EnvelopeOptions& options = {});
