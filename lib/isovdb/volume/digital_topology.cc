@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <span>
 #include <vector>
 
 #include <tbb/blocked_range.h>
@@ -175,9 +176,7 @@ std::int64_t eulerCharacteristic(io::SliceStream& stream, const MaskRule& rule, 
     stream.readSlice(values.data());
     tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, ny, 16), [&](const tbb::blocked_range<std::int64_t>& rows) {
       for (std::int64_t y = rows.begin(); y != rows.end(); ++y) {
-        const float* in = values.data() + y * nx;
-        std::uint8_t* out = accumulator.row(y);
-        for (std::int64_t x = 0; x < nx; ++x) out[x] = rule.inside(in[x]) ? 1 : 0;
+        rule.classify(std::span<const float>(values.data() + y * nx, static_cast<std::size_t>(nx)), accumulator.row(y));
       }
     });
     accumulator.addSlice();

@@ -2,14 +2,18 @@
 // Copyright Contributors to the isovdb project.
 #include "isovdb/volume/ingest.h"
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <openvdb/tools/Prune.h>
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <cstring>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <vector>
 
 #include "isovdb/io/lazy_buffer.h"
@@ -20,8 +24,9 @@ namespace isovdb::volume {
 
 namespace {
 
-constexpr int kLeafDim = 8;       // OpenVDB leaf nodes are 8^3
-constexpr int kPruneEvery = 128;  // level-1 internal nodes span 128 voxels
+constexpr int kLeafDim = 8;                                   // OpenVDB leaf nodes are 8^3
+constexpr int kPruneEvery = 128;                              // level-1 internal nodes span 128 voxels
+constexpr std::size_t kClassifyGrain = std::size_t{1} << 16;  // samples per task of a slice's inside test
 constexpr const char* kDeadBandKey = "isovdb_dead_band";
 
 /// Maps stream coordinates (x fastest, z = slice) to grid coordinates (VolumeHeader::gridAxis).
@@ -107,6 +112,28 @@ BlockRange blockRange(const io::VolumeHeader& header, int bx, int by, int depth)
                     static_cast<int>(std::min<std::int64_t>(y0 + kLeafDim, header.dims[1])), depth};
 }
 
+/// The words of an 8^3 leaf's mask: grid voxel (i, j, k) is bit i * 64 + j * 8 + k.
+using LeafWords = std::array<std::uint64_t, 8>;
+
+/// Adds to `words` the 0/1 bytes of a block whose file axes are the grid's (x fastest), 8
+/// samples wide along x and y and `depth` slices deep, from `block` (sample (0, 0, 0)) with
+/// these strides. Byte x of a row of 8 samples read as one little-endian word is sample x;
+/// the rows of one y at z = 0..7, each shifted by z, add up to a word whose byte x holds the
+/// column (x, y)'s 8 z bits, which is byte y of word x. Eight loads and eight byte moves per
+/// 64 samples, where a shift and an or per sample was a sixth of reading a 1 GiB mask.
+void gridOrderLeafWords(const std::uint8_t* block, std::int64_t rowStride, std::int64_t sliceStride, int depth,
+                        LeafWords& words) {
+  for (int y = 0; y < kLeafDim; ++y) {
+    std::uint64_t columns = 0;
+    for (int z = 0; z < depth; ++z) {
+      std::uint64_t row = 0;
+      std::memcpy(&row, block + z * sliceStride + y * rowStride, sizeof row);
+      columns |= row << z;  // bytes are 0 or 1: nothing carries into the next byte
+    }
+    for (int x = 0; x < kLeafDim; ++x) words[static_cast<std::size_t>(x)] |= ((columns >> (8 * x)) & 0xFF) << (8 * y);
+  }
+}
+
 /// What one 8^3 block of a slab becomes.
 enum class BlockState : std::uint8_t { Empty, Tile, Leaf };
 
@@ -151,6 +178,7 @@ Volume ingestMask(io::SliceStream& stream, const MaskRule& rule, Interrupter* in
 
   const AxisMap toGrid{header.gridAxis};
   const LeafOffsets offsetInLeaf(toGrid);
+  const bool gridOrder = header.gridAxis == std::array<int, 3>{0, 1, 2} && std::endian::native == std::endian::little;
   auto grid = MaskGrid::create(false);
   MaskGrid::TreeType& tree = grid->tree();
   // Lazy buffers: sized from the declared dimensions, paid for as slices arrive.
@@ -163,18 +191,29 @@ Volume ingestMask(io::SliceStream& stream, const MaskRule& rule, Interrupter* in
     if (skipBlankSlab(stream, z0, progress)) continue;
     const int depth = readSlab(stream, slice, [&](int z, const io::LazyBuffer<float>& values) {
       std::uint8_t* out = inside.data() + static_cast<std::size_t>(z) * nx * ny;
-      for (std::size_t i = 0; i < values.size(); ++i) out[i] = rule.inside(values[i]) ? 1 : 0;
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, values.size(), kClassifyGrain),
+                        [&](const tbb::blocked_range<std::size_t>& r) {
+                          rule.classify(std::span<const float>(values.data() + r.begin(), r.size()), out + r.begin());
+                        });
     });
     // Classify the slab's blocks in parallel; leaves are allocated here too.
     tbb::parallel_for(0, blocksY, [&](int by) {
       for (int bx = 0; bx < blocksX; ++bx) {
         const BlockRange r = blockRange(header, bx, by, depth);
         using Leaf = MaskGrid::TreeType::LeafNodeType;
+        LeafWords words{};
+        if (gridOrder && r.x1 - r.x0 == kLeafDim && r.y1 - r.y0 == kLeafDim)
+          gridOrderLeafWords(inside.data() + r.y0 * nx + r.x0, nx, nx * ny, r.depth, words);
+        else
+          for (int z = 0; z < r.depth; ++z)
+            for (int y = r.y0; y < r.y1; ++y)
+              for (int x = r.x0; x < r.x1; ++x) {
+                const int offset = offsetInLeaf(x, y, z);
+                words[static_cast<std::size_t>(offset >> 6)] |= std::uint64_t{inside[(z * ny + y) * nx + x]}
+                                                                << (offset & 63);
+              }
         Leaf::NodeMaskType on;
-        for (int z = 0; z < r.depth; ++z)
-          for (int y = r.y0; y < r.y1; ++y)
-            for (int x = r.x0; x < r.x1; ++x)
-              if (inside[(z * ny + y) * nx + x]) on.setOn(static_cast<openvdb::Index>(offsetInLeaf(x, y, z)));
+        for (openvdb::Index w = 0; w < Leaf::NodeMaskType::WORD_COUNT; ++w) on.getWord<std::uint64_t>(w) = words[w];
         const std::size_t b = static_cast<std::size_t>(by) * blocksX + bx;
         if (on.isOff()) {
           state[b] = BlockState::Empty;

@@ -3,11 +3,55 @@
 #include "isovdb/volume/mask_rule.h"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include "isovdb/errors.h"
 
 namespace isovdb::volume {
+
+namespace {
+
+/// The largest float at most `t`, and the smallest at least `t`: for a float v, v > t iff
+/// v > floatBelow(t), v < t iff v < floatAbove(t) (and likewise for >=, <=), so the
+/// comparisons run on floats as they are stored, several per instruction.
+float floatBelow(double t) {
+  const auto f = static_cast<float>(t);
+  return static_cast<double>(f) > t ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+float floatAbove(double t) {
+  const auto f = static_cast<float>(t);
+  return static_cast<double>(f) < t ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+
+template <class Inside>
+void classifyWith(const float* __restrict values, std::size_t n, std::uint8_t* __restrict out, Inside inside) {
+  for (std::size_t i = 0; i < n; ++i) out[i] = inside(values[i]) ? 1 : 0;
+}
+
+}  // namespace
+
+void MaskRule::classify(std::span<const float> values, std::uint8_t* out) const {
+  // The same answers as inside() (NaN is never inside).
+  if (!labels.empty()) {
+    for (std::size_t i = 0; i < values.size(); ++i) out[i] = inside(values[i]) ? 1 : 0;
+    return;
+  }
+  const float* in = values.data();
+  const std::size_t n = values.size();
+  switch (test) {
+    case MaskTest::Above:
+      classifyWith(in, n, out, [t = floatBelow(threshold)](float v) { return v > t; });
+      return;
+    case MaskTest::Below:
+      classifyWith(in, n, out, [t = floatAbove(threshold)](float v) { return v < t; });
+      return;
+    case MaskTest::Between:
+      classifyWith(in, n, out,
+                   [lo = floatAbove(threshold), hi = floatBelow(upper)](float v) { return v >= lo && v <= hi; });
+      return;
+  }
+}
 
 std::string MaskRule::describe() const {
   std::ostringstream out;

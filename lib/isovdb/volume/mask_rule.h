@@ -5,6 +5,8 @@
 #pragma once
 
 #include <algorithm>
+#include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -37,6 +39,10 @@ struct MaskRule {
     }
     return false;
   }
+  /// inside() of every value, as 1 or 0 in `out` (values.size() bytes). The rule is
+  /// chosen once and each comparison is a plain loop the compiler vectorises: inside()
+  /// value by value was half of reading a 1 GiB mask.
+  void classify(std::span<const float> values, std::uint8_t* out) const;
   /// "value > 0", "value < -3000", "value in [1000, 2000]" or "label in {13}" —
   /// for messages and statistics.
   std::string describe() const;
