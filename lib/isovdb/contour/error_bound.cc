@@ -2,11 +2,14 @@
 // Copyright Contributors to the isovdb project.
 #include "isovdb/contour/error_bound.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <optional>
 
 #include "isovdb/cell/dmc_table.h"
 #include "isovdb/cell/dual_vertex.h"
@@ -23,12 +26,17 @@ namespace {
 /// (voxels): a coarse leaf's triangles are up to twice its size long.
 constexpr double kBinVoxels = 4.0;
 
+/// Mesh points and leaves per task: the check runs inside a meta-cell's task, and where
+/// that block is the last one left (a 256^3 volume has 8) its loops are all the work there is.
+constexpr std::size_t kPointGrain = 4096;
+constexpr std::size_t kLeafGrain = 256;
+
 /// Keys of the leaves coarser than `finestSize` whose closed box holds a vertex, triangle
 /// centroid or edge midpoint of `mesh` farther than `maxError` from the level.
 void addLeavesOfFarMeshPoints(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
                               const mesh::Mesh& mesh, float iso, float maxError, int finestSize,
                               std::vector<octree::MortonKey>& keys) {
-  const auto check = [&](Vec3f p) {
+  const auto check = [&](Vec3f p, std::vector<octree::MortonKey>& out) {
     for (int a = 0; a < 3; ++a) p[a] -= static_cast<float>(samples.origin[a]);
     if (cell::distanceToLevel(samples, p, iso) <= maxError) return;
     // Every leaf whose closed box holds p: a point on a face, an edge or a corner lies in several.
@@ -38,19 +46,32 @@ void addLeavesOfFarMeshPoints(const cell::MetaCellSamples& samples, const octree
       for (int a = 0; a < 3; ++a) q[a] += ((corner >> a) & 1) ? kNudge : -kNudge;
       const std::int64_t leaf = tree.findLeafContaining(q);
       if (leaf != octree::LinearOctree::kNone && tree.leaf(static_cast<std::size_t>(leaf)).size > finestSize)
-        keys.push_back(tree.leaf(static_cast<std::size_t>(leaf)).key);
+        out.push_back(tree.leaf(static_cast<std::size_t>(leaf)).key);
     }
   };
-  for (const Vec3f& p : mesh.positions) check(p);
-  for (const mesh::Triangle& t : mesh.triangles) {
-    const Vec3f& a = mesh.positions[t[0]];
-    const Vec3f& b = mesh.positions[t[1]];
-    const Vec3f& c = mesh.positions[t[2]];
-    check({(a[0] + b[0] + c[0]) / 3.0f, (a[1] + b[1] + c[1]) / 3.0f, (a[2] + b[2] + c[2]) / 3.0f});
-    check({0.5f * (a[0] + b[0]), 0.5f * (a[1] + b[1]), 0.5f * (a[2] + b[2])});  // each edge from both sides:
-    check({0.5f * (b[0] + c[0]), 0.5f * (b[1] + c[1]), 0.5f * (b[2] + c[2])});  // cheaper than a set of edges
-    check({0.5f * (c[0] + a[0]), 0.5f * (c[1] + a[1]), 0.5f * (c[2] + a[2])});
-  }
+  tbb::enumerable_thread_specific<std::vector<octree::MortonKey>> found;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.positions.size(), kPointGrain),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      std::vector<octree::MortonKey>& local = found.local();
+                      for (std::size_t i = r.begin(); i != r.end(); ++i) check(mesh.positions[i], local);
+                    });
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, mesh.triangles.size(), kPointGrain),
+      [&](const tbb::blocked_range<std::size_t>& r) {
+        std::vector<octree::MortonKey>& local = found.local();
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+          const mesh::Triangle& t = mesh.triangles[i];
+          const Vec3f& a = mesh.positions[t[0]];
+          const Vec3f& b = mesh.positions[t[1]];
+          const Vec3f& c = mesh.positions[t[2]];
+          check({(a[0] + b[0] + c[0]) / 3.0f, (a[1] + b[1] + c[1]) / 3.0f, (a[2] + b[2] + c[2]) / 3.0f}, local);
+          // Each edge from both sides: cheaper than a set of edges.
+          check({0.5f * (a[0] + b[0]), 0.5f * (a[1] + b[1]), 0.5f * (a[2] + b[2])}, local);
+          check({0.5f * (b[0] + c[0]), 0.5f * (b[1] + c[1]), 0.5f * (b[2] + c[2])}, local);
+          check({0.5f * (c[0] + a[0]), 0.5f * (c[1] + a[1]), 0.5f * (c[2] + a[2])}, local);
+        }
+      });
+  for (const std::vector<octree::MortonKey>& local : found) keys.insert(keys.end(), local.begin(), local.end());
 }
 
 /// True if every vertex full-resolution contouring places in the unit cells of `leaf` that
@@ -86,22 +107,27 @@ void addLeavesMissingFullResolutionVertices(const cell::MetaCellSamples& samples
                                             const mesh::Mesh& mesh, const cell::DualVertexOptions& options,
                                             float maxError, int finestSize, const UnitEdgeCrossings* crossings,
                                             std::vector<octree::MortonKey>& keys) {
-  if (!std::isfinite(maxError)) return;        // nothing lies farther than that
-  std::optional<octree::SamplePhases> phases;  // the grid and the phases only where a leaf needs them
-  std::optional<mesh::TriangleGrid> grid;
-  for (std::size_t i = 0; i < tree.leafCount(); ++i) {
-    const octree::OctreeLeaf& leaf = tree.leaf(i);
-    if (!leaf.surface || leaf.size <= finestSize) continue;
-    bool onBoundary = false;
+  if (!std::isfinite(maxError)) return;  // nothing lies farther than that
+  const auto checked = [&](const octree::OctreeLeaf& leaf) {
+    if (!leaf.surface || leaf.size <= finestSize) return false;
     for (int a = 0; a < 3; ++a)
-      onBoundary = onBoundary || leaf.origin[a] == 0 || leaf.origin[a] + leaf.size == samples.size;
-    if (onBoundary) continue;
-    if (!grid) {
-      phases.emplace(samples, options.iso);
-      grid.emplace(mesh, std::max(kBinVoxels, 2.0 * maxError));
-    }
-    if (!unitCellVerticesWithin(samples, *phases, crossings, leaf, options, *grid, maxError)) keys.push_back(leaf.key);
-  }
+      if (leaf.origin[a] == 0 || leaf.origin[a] + leaf.size == samples.size) return false;
+    return true;
+  };
+  const auto& leaves = tree.leaves();
+  if (std::none_of(leaves.begin(), leaves.end(), checked)) return;  // no grid, no phases
+  const octree::SamplePhases phases(samples, options.iso);
+  const mesh::TriangleGrid grid(mesh, std::max(kBinVoxels, 2.0 * maxError));
+  tbb::enumerable_thread_specific<std::vector<octree::MortonKey>> found;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size(), kLeafGrain),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      std::vector<octree::MortonKey>& local = found.local();
+                      for (std::size_t i = r.begin(); i != r.end(); ++i)
+                        if (checked(leaves[i]) &&
+                            !unitCellVerticesWithin(samples, phases, crossings, leaves[i], options, grid, maxError))
+                          local.push_back(leaves[i].key);
+                    });
+  for (const std::vector<octree::MortonKey>& local : found) keys.insert(keys.end(), local.begin(), local.end());
 }
 
 }  // namespace

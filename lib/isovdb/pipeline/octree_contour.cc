@@ -5,6 +5,7 @@
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/global_control.h>
 #include <tbb/parallel_pipeline.h>
+#include <tbb/task_arena.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -33,6 +34,11 @@ namespace isovdb::pipeline {
 namespace {
 
 constexpr int kMargin = 2;  // single block: voxels between the band and the meta-cell boundary
+/// Meta-cells in flight per worker thread. With one, a thread whose block finished before
+/// an earlier one waited for it (the output is in order) and only helped with that block's
+/// parallel loops, not its serial parts: the 1024^3 salt's adaptive contouring kept two
+/// cores 80 % busy. Each extra token holds one finished block's mesh until its turn.
+constexpr std::size_t kTokensPerThread = 4;
 
 int nextPowerOfTwo(int v) {
   int p = 1;
@@ -331,7 +337,7 @@ class MetaCellRun {
       : engine_(engine),
         kind_(kind),
         consumer_(consumer),
-        tokens_(std::max<std::size_t>(
+        threads_(std::max<std::size_t>(
             1, tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism))) {}
 
   /// Contours `cells` (in this order), reporting each one done to `cellDone`.
@@ -345,37 +351,42 @@ class MetaCellRun {
     // destroying them, so an item type that owns memory would leak its meta-cell's mesh.
     std::vector<std::unique_ptr<MetaCellJob>> jobs(cells.size());
     tbb::parallel_pipeline(
-        tokens_, tbb::make_filter<void, MetaCellJob*>(tbb::filter_mode::serial_in_order,
-                                                      [&](tbb::flow_control& control) -> MetaCellJob* {
-                                                        if (next >= cells.size()) {
-                                                          control.stop();
-                                                          return nullptr;
-                                                        }
-                                                        jobs[next] = std::make_unique<MetaCellJob>();
-                                                        jobs[next]->position = next;
-                                                        return jobs[next++].get();
-                                                      }) &
-                     tbb::make_filter<MetaCellJob*, MetaCellJob*>(
-                         tbb::filter_mode::parallel,
-                         [&](MetaCellJob* job) {
-                           const auto t0 = std::chrono::steady_clock::now();
-                           cell::MetaCellSamples& samples = sampleBlocks_.local();
-                           read(cells[job->position], samples);
-                           const float iso = engineIso(kind_, options.iso, engine_, samples);
-                           job->totals.readSeconds += secondsSince(t0);
-                           job->contoured = volume::hasSignChange(samples, iso);
-                           if (job->contoured) job->result = contourBlock(samples, engine_, iso, job->totals, nullptr);
-                           return job;
-                         }) &
-                     tbb::make_filter<MetaCellJob*, void>(tbb::filter_mode::serial_in_order, [&](MetaCellJob* job) {
-                       totals_.add(job->totals);
-                       if (job->contoured) {
-                         ++contoured_;
-                         consumer_.add(cells[job->position], std::move(job->result));
-                       }
-                       jobs[job->position].reset();  // its mesh is with the consumer now
-                       cellDone();
-                     }));
+        kTokensPerThread * threads_,
+        tbb::make_filter<void, MetaCellJob*>(tbb::filter_mode::serial_in_order,
+                                             [&](tbb::flow_control& control) -> MetaCellJob* {
+                                               if (next >= cells.size()) {
+                                                 control.stop();
+                                                 return nullptr;
+                                               }
+                                               jobs[next] = std::make_unique<MetaCellJob>();
+                                               jobs[next]->position = next;
+                                               return jobs[next++].get();
+                                             }) &
+            tbb::make_filter<MetaCellJob*, MetaCellJob*>(
+                tbb::filter_mode::parallel,
+                [&](MetaCellJob* job) {
+                  // Isolated: a thread waiting in this block's parallel loops must not take up
+                  // another block meanwhile, which would fill this thread's samples, still in use.
+                  tbb::this_task_arena::isolate([&] {
+                    const auto t0 = std::chrono::steady_clock::now();
+                    cell::MetaCellSamples& samples = sampleBlocks_.local();
+                    read(cells[job->position], samples);
+                    const float iso = engineIso(kind_, options.iso, engine_, samples);
+                    job->totals.readSeconds += secondsSince(t0);
+                    job->contoured = volume::hasSignChange(samples, iso);
+                    if (job->contoured) job->result = contourBlock(samples, engine_, iso, job->totals, nullptr);
+                  });
+                  return job;
+                }) &
+            tbb::make_filter<MetaCellJob*, void>(tbb::filter_mode::serial_in_order, [&](MetaCellJob* job) {
+              totals_.add(job->totals);
+              if (job->contoured) {
+                ++contoured_;
+                consumer_.add(cells[job->position], std::move(job->result));
+              }
+              jobs[job->position].reset();  // its mesh is with the consumer now
+              cellDone();
+            }));
   }
 
   /// Records the figures of the meta-cells contoured.
@@ -385,7 +396,7 @@ class MetaCellRun {
     Statistics::Json section = Statistics::Json::object();
     section["meta_cell_size"] = engine_.metaCellSize;
     section["apron"] = apron;
-    section["threads"] = tokens_;
+    section["threads"] = threads_;
     section["candidates"] = candidates_;
     section["contoured"] = contoured_;
     section["skipped_without_sign_change"] = candidates_ - contoured_;
@@ -398,7 +409,7 @@ class MetaCellRun {
   const Engine& engine_;
   volume::VolumeKind kind_;
   MetaCellConsumer& consumer_;
-  std::size_t tokens_;
+  std::size_t threads_;
   MetaCellTotals totals_;
   std::size_t candidates_ = 0, contoured_ = 0;
   // One sample block per thread, reused meta-cell after meta-cell: a fresh 9 MB
