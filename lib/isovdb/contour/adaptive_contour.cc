@@ -50,7 +50,7 @@ Vec3d besideDataBox(Vec3d p, const octree::OctreeLeaf& leaf, const std::array<in
 
 MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
                                      const cell::ContourSettings& options, AdaptiveContourStats* stats,
-                                     const UnitEdgeCrossings* crossings) {
+                                     const octree::UnitEdgeCrossings* crossings) {
   if (tree.metaCellSize() != samples.size)
     throw InputError("contourAdaptive: octree meta-cell size " + std::to_string(tree.metaCellSize()) +
                      " differs from the samples' size " + std::to_string(samples.size));

@@ -52,7 +52,7 @@
 #include <cstdint>
 
 #include "isovdb/contour/seam_cell.h"
-#include "isovdb/contour/unit_edge_crossings.h"
+#include "isovdb/octree/unit_edge_crossings.h"
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/octree/linear_octree.h"
 #include "isovdb/cell/contour_settings.h"
@@ -111,6 +111,6 @@ mesh::Mesh contourAdaptive(const cell::MetaCellSamples& samples, const octree::L
 ///        the 1-voxel leaves instead of finding them again; the mesh is the same.
 MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
                                      const cell::ContourSettings& settings, AdaptiveContourStats* stats = nullptr,
-                                     const UnitEdgeCrossings* crossings = nullptr);
+                                     const octree::UnitEdgeCrossings* crossings = nullptr);
 
 }  // namespace isovdb::contour

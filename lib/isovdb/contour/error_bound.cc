@@ -14,7 +14,7 @@
 #include "isovdb/cell/dmc_table.h"
 #include "isovdb/cell/dual_vertex.h"
 #include "isovdb/cell/trilinear.h"
-#include "isovdb/contour/unit_edge_crossings.h"
+#include "isovdb/octree/unit_edge_crossings.h"
 #include "isovdb/mesh/triangle_grid.h"
 #include "isovdb/octree/sample_phases.h"
 
@@ -79,7 +79,7 @@ void addLeavesOfFarMeshPoints(const cell::MetaCellSamples& samples, const octree
 /// (dmc_table.h), a QEF vertex for a single group and mass points for several, as
 /// contour/leaf_groups.cc places them at 1 voxel.
 bool unitCellVerticesWithin(const cell::MetaCellSamples& samples, const octree::SamplePhases& phases,
-                            const UnitEdgeCrossings* crossings, const octree::OctreeLeaf& leaf,
+                            const octree::UnitEdgeCrossings* crossings, const octree::OctreeLeaf& leaf,
                             cell::DualVertexOptions options, const mesh::TriangleGrid& grid, float maxError) {
   bool within = true;
   std::uint32_t hint = std::numeric_limits<std::uint32_t>::max();  // the last triangle close enough
@@ -90,7 +90,7 @@ bool unitCellVerticesWithin(const cell::MetaCellSamples& samples, const octree::
         options.massPointOnly = entry.vertexCount > 1;
         for (int g = 0; g < entry.vertexCount && within; ++g) {
           const cell::DualVertex v =
-              cellDualVertex(samples, origin, 1, entry.groups[static_cast<std::size_t>(g)], options, crossings);
+              octree::cellDualVertex(samples, origin, 1, entry.groups[static_cast<std::size_t>(g)], options, crossings);
           within = !v.valid() || grid.within(v.position, maxError, &hint);
         }
       });
@@ -105,7 +105,7 @@ bool unitCellVerticesWithin(const cell::MetaCellSamples& samples, const octree::
 /// would cover their points, are made later by stitching.
 void addLeavesMissingFullResolutionVertices(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
                                             const mesh::Mesh& mesh, const cell::DualVertexOptions& options,
-                                            float maxError, int finestSize, const UnitEdgeCrossings* crossings,
+                                            float maxError, int finestSize, const octree::UnitEdgeCrossings* crossings,
                                             std::vector<octree::MortonKey>& keys) {
   if (!std::isfinite(maxError)) return;  // nothing lies farther than that
   const auto checked = [&](const octree::OctreeLeaf& leaf) {
@@ -135,7 +135,7 @@ void addLeavesMissingFullResolutionVertices(const cell::MetaCellSamples& samples
 std::vector<octree::MortonKey> leavesBeyondErrorBound(const cell::MetaCellSamples& samples,
                                                       const octree::LinearOctree& tree, const mesh::Mesh& mesh,
                                                       const cell::DualVertexOptions& options, float maxError,
-                                                      int finestSize, const UnitEdgeCrossings* crossings) {
+                                                      int finestSize, const octree::UnitEdgeCrossings* crossings) {
   std::vector<octree::MortonKey> keys;
   addLeavesOfFarMeshPoints(samples, tree, mesh, options.iso, maxError, finestSize, keys);
   // The costlier side once the mesh's own points hold: the pass would be built again anyway.

@@ -28,7 +28,7 @@
 
 #include "isovdb/cell/dual_vertex.h"
 #include "isovdb/cell/meta_cell_samples.h"
-#include "isovdb/contour/unit_edge_crossings.h"
+#include "isovdb/octree/unit_edge_crossings.h"
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/octree/linear_octree.h"
 
@@ -46,6 +46,7 @@ namespace isovdb::contour {
 std::vector<octree::MortonKey> leavesBeyondErrorBound(const cell::MetaCellSamples& samples,
                                                       const octree::LinearOctree& tree, const mesh::Mesh& mesh,
                                                       const cell::DualVertexOptions& options, float maxError,
-                                                      int finestSize = 1, const UnitEdgeCrossings* crossings = nullptr);
+                                                      int finestSize = 1,
+                                                      const octree::UnitEdgeCrossings* crossings = nullptr);
 
 }  // namespace isovdb::contour

@@ -79,7 +79,7 @@ LeafGroups groupLeaves(const cell::MetaCellSamples& samples, const octree::Linea
 
 std::vector<mesh::Vec3f> placeGroupVertices(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
                                             const LeafGroups& groups, const cell::DualVertexOptions& options,
-                                            const UnitEdgeCrossings* crossings) {
+                                            const octree::UnitEdgeCrossings* crossings) {
   std::vector<mesh::Vec3f> positions(groups.totalVertices());
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, tree.leafCount(), kGrain / 4), [&](const tbb::blocked_range<std::size_t>& r) {
@@ -120,7 +120,8 @@ std::vector<mesh::Vec3f> placeGroupVertices(const cell::MetaCellSamples& samples
             cell::DualVertexOptions vertexOptions = groupOptions;
             vertexOptions.massPointOnly = groupOptions.massPointOnly || k >= groupVertices;  // a tube has 2 groups
             const std::uint16_t edges = vertexEdges[static_cast<std::size_t>(k)];
-            const cell::DualVertex v = cellDualVertex(samples, leaf.origin, leaf.size, edges, vertexOptions, crossings);
+            const cell::DualVertex v =
+                octree::cellDualVertex(samples, leaf.origin, leaf.size, edges, vertexOptions, crossings);
             mesh::Vec3f p = v.position;
             if (!v.valid())  // cannot happen for bipolar edges; keep the cell centre rather than garbage
               for (std::size_t a = 0; a < 3; ++a)

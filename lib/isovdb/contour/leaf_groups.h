@@ -30,7 +30,7 @@
 #include "isovdb/bit_count.h"
 #include "isovdb/cell/dmc_table.h"
 #include "isovdb/cell/dual_vertex.h"
-#include "isovdb/contour/unit_edge_crossings.h"
+#include "isovdb/octree/unit_edge_crossings.h"
 #include "isovdb/contour/voxel_dmc.h"
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/octree/linear_octree.h"
@@ -79,6 +79,6 @@ LeafGroups groupLeaves(const cell::MetaCellSamples& samples, const octree::Linea
 ///        values, found once per edge; unit_edge_crossings.h).
 std::vector<mesh::Vec3f> placeGroupVertices(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
                                             const LeafGroups& groups, const cell::DualVertexOptions& options,
-                                            const UnitEdgeCrossings* crossings = nullptr);
+                                            const octree::UnitEdgeCrossings* crossings = nullptr);
 
 }  // namespace isovdb::contour

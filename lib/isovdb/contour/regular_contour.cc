@@ -18,7 +18,7 @@
 #include "isovdb/cell/dmc_table.h"
 #include "isovdb/cell/dual_vertex.h"
 #include "isovdb/contour/leaf_groups.h"
-#include "isovdb/contour/unit_edge_crossings.h"
+#include "isovdb/octree/unit_edge_crossings.h"
 #include "isovdb/contour/voxel_dmc.h"
 #include "isovdb/errors.h"
 #include "isovdb/octree/criteria.h"
@@ -128,8 +128,9 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
   // table pays for its memory (UnitEdgeCrossings::pays).
   const auto unitLeafCount = static_cast<std::size_t>(
       std::count_if(leaves.begin(), leaves.end(), [](const OctreeLeaf& l) { return l.size == 1; }));
-  std::optional<UnitEdgeCrossings> crossings;
-  if (UnitEdgeCrossings::pays(metaSize, unitLeafCount)) crossings.emplace(samples, options.iso, options.sharpFeatures);
+  std::optional<octree::UnitEdgeCrossings> crossings;
+  if (octree::UnitEdgeCrossings::pays(metaSize, unitLeafCount))
+    crossings.emplace(samples, options.iso, options.sharpFeatures);
   out.positions = placeGroupVertices(samples, regularTree, groups, cell::dualVertexOptions(options),
                                      crossings ? &*crossings : nullptr);
 

@@ -17,6 +17,7 @@
 #include "isovdb/octree/criteria.h"
 #include "isovdb/octree/surface_deviation.h"
 #include "isovdb/octree/surface_gap.h"
+#include "isovdb/octree/unit_edge_crossings.h"
 
 namespace isovdb::octree {
 
@@ -94,11 +95,12 @@ struct Evaluation {
 class Builder {
  public:
   Builder(const cell::MetaCellSamples& samples, const cell::ContourSettings& settings, const OctreeOptions& options,
-          OctreeDepths depths)
+          OctreeDepths depths, const UnitEdgeCrossings* crossings)
       : samples_(samples),
         settings_(settings),
         options_(options),
         depths_(depths),
+        crossings_(crossings),
         phases_(samples, settings.iso),
         leavesAtDepth_(static_cast<std::size_t>(depths.maxDepth) + 1) {
     classify_.detectInteriorComponents = options.detectInteriorComponents;
@@ -157,8 +159,8 @@ class Builder {
       // gets its vertex (contour/leaf_groups.h).
       ev.split = ev.multiSheet = true;
     } else if ((options_.qefTolerance >= 0.0f || options_.maxError > 0.0f) && ev.leaf.surface) {
-      const cell::DualVertex v = cell::computeDualVertex(samples_, ev.leaf.origin, size, ev.leaf.bipolarEdges(),
-                                                         cell::dualVertexOptions(settings_));
+      const cell::DualVertex v = cellDualVertex(samples_, ev.leaf.origin, size, ev.leaf.bipolarEdges(),
+                                                cell::dualVertexOptions(settings_), crossings_);
       ev.split = ev.geometric = v.valid() && options_.qefTolerance >= 0.0f && v.rmsError() > options_.qefTolerance;
       if (!ev.split && v.valid() && options_.maxError > 0.0f) {
         const Vec3f x = toMetaCellOffsets(v.position);
@@ -392,7 +394,8 @@ class Builder {
   const cell::ContourSettings& settings_;
   const OctreeOptions& options_;
   OctreeDepths depths_;
-  SamplePhases phases_;  // what the criteria read
+  const UnitEdgeCrossings* crossings_;  // optional: what the dual vertices read
+  SamplePhases phases_;                 // what the criteria read
   CellClassifyOptions classify_;
   OctreeBuildStats stats_;
   std::vector<Record> records_;
@@ -456,11 +459,12 @@ OctreeBuildStats& OctreeBuildStats::operator+=(const OctreeBuildStats& o) {
 }
 
 LinearOctree buildOctree(const cell::MetaCellSamples& samples, const cell::ContourSettings& settings,
-                         const OctreeOptions& options, OctreeBuildStats* stats, Interrupter* interrupter) {
+                         const OctreeOptions& options, OctreeBuildStats* stats, Interrupter* interrupter,
+                         const UnitEdgeCrossings* crossings) {
   if (settings.method == cell::ContourMethod::Vdb)
     throw InputError("octree: the vdb method builds no octree (regular or adaptive)");
   const OctreeDepths depths = resolveDepths(options, samples.size);
-  Builder builder(samples, settings, options, depths);
+  Builder builder(samples, settings, options, depths, crossings);
   builder.buildTopDown(interrupter);
   if (settings.method == cell::ContourMethod::Adaptive) builder.balance(interrupter);
   return builder.finish(stats);

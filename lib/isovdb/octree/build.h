@@ -33,6 +33,8 @@
 
 namespace isovdb::octree {
 
+class UnitEdgeCrossings;  // unit_edge_crossings.h
+
 /// The octree's own knobs: depths and refinement criteria. The method (regular:
 /// every surface cell at the maximum depth; adaptive: complex cells refined, 2:1
 /// balanced), the isovalue, the QEF truncation and sharp features come from the
@@ -111,11 +113,14 @@ struct OctreeBuildStats {
 /// @param[in] options depths and refinement criteria.
 /// @param[out] stats optional figures of the construction.
 /// @param[in] interrupter optional; checked once per depth.
+/// @param[in] crossings optional: the samples' unit-edge crossings at settings.iso (with
+///            settings.sharpFeatures), which the cells' dual vertices then read; the
+///            same tree.
 /// @throw InputError for invalid options (see resolveDepths) or the Vdb method;
 ///        Interrupted on cancellation.
 LinearOctree buildOctree(const cell::MetaCellSamples& samples, const cell::ContourSettings& settings,
                          const OctreeOptions& options = {}, OctreeBuildStats* stats = nullptr,
-                         Interrupter* interrupter = nullptr);
+                         Interrupter* interrupter = nullptr, const UnitEdgeCrossings* crossings = nullptr);
 
 /// @brief True if no two leaves that share a face, an edge or a corner differ by more than one depth.
 bool isBalanced(const LinearOctree& octree);

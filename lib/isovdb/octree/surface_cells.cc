@@ -44,9 +44,10 @@ bool contourReadsOnlySurfaceCells(const cell::ContourSettings& settings, const O
 }
 
 LinearOctree buildContourTree(const cell::MetaCellSamples& samples, const cell::ContourSettings& settings,
-                              const OctreeOptions& options, OctreeBuildStats* stats, Interrupter* interrupter) {
+                              const OctreeOptions& options, OctreeBuildStats* stats, Interrupter* interrupter,
+                              const UnitEdgeCrossings* crossings) {
   if (!contourReadsOnlySurfaceCells(settings, options, samples.size))
-    return buildOctree(samples, settings, options, stats, interrupter);
+    return buildOctree(samples, settings, options, stats, interrupter, crossings);
   if (stats) *stats = OctreeBuildStats{};
   return surfaceCellTree(samples, settings.iso);
 }

@@ -38,6 +38,6 @@ bool contourReadsOnlySurfaceCells(const cell::ContourSettings& settings, const O
 ///        contourReadsOnlySurfaceCells, else buildOctree (arguments as buildOctree's).
 LinearOctree buildContourTree(const cell::MetaCellSamples& samples, const cell::ContourSettings& settings,
                               const OctreeOptions& options = {}, OctreeBuildStats* stats = nullptr,
-                              Interrupter* interrupter = nullptr);
+                              Interrupter* interrupter = nullptr, const UnitEdgeCrossings* crossings = nullptr);
 
 }  // namespace isovdb::octree

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MPL-2.0
 // Copyright Contributors to the isovdb project.
-#include "isovdb/contour/unit_edge_crossings.h"
+#include "isovdb/octree/unit_edge_crossings.h"
 
 #include <algorithm>
 #include <bit>
@@ -8,11 +8,11 @@
 #include "isovdb/bit_count.h"
 #include "isovdb/octree/sample_phases.h"
 
-namespace isovdb::contour {
+namespace isovdb::octree {
 
 UnitEdgeCrossings::UnitEdgeCrossings(const cell::MetaCellSamples& samples, float iso, bool sharpFeatures)
     : size_(samples.size), wordsPerRow_((samples.size + 64) / 64) {
-  const octree::SamplePhases phases(samples, iso);
+  const SamplePhases phases(samples, iso);
   const int s = size_;
   const std::size_t rows = static_cast<std::size_t>(s + 1) * static_cast<std::size_t>(s + 1);
   for (int axis = 0; axis < 3; ++axis) {
@@ -63,4 +63,11 @@ const cell::EdgeIntersection* UnitEdgeCrossings::find(const std::array<int, 3>& 
   return &crossings_[static_cast<std::size_t>(axis)][index];
 }
 
-}  // namespace isovdb::contour
+const cell::EdgeIntersection* UnitEdgeCrossings::findFirst(std::array<int, 3> start, int axis,
+                                                           int length) const noexcept {
+  for (int t = 0; t < length; ++t, ++start[static_cast<std::size_t>(axis)])
+    if (const cell::EdgeIntersection* hit = find(start, axis)) return hit;
+  return nullptr;
+}
+
+}  // namespace isovdb::octree

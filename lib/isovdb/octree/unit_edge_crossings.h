@@ -22,7 +22,7 @@
 #include "isovdb/cell/edge_intersection.h"
 #include "isovdb/cell/meta_cell_samples.h"
 
-namespace isovdb::contour {
+namespace isovdb::octree {
 
 class UnitEdgeCrossings {
  public:
@@ -35,6 +35,12 @@ class UnitEdgeCrossings {
   /// @pre the edge lies in [0, S]^3.
   const cell::EdgeIntersection* find(const std::array<int, 3>& start, int axis) const noexcept;
 
+  /// @brief The crossing intersectEdge finds on the edge of `length` unit edges from
+  ///        `start` along `axis` (meta-cell offsets): that of its first bipolar unit
+  ///        edge, or nullptr if none is bipolar.
+  /// @pre the edge lies in [0, S]^3.
+  const cell::EdgeIntersection* findFirst(std::array<int, 3> start, int axis, int length) const noexcept;
+
   /// @brief True where the table pays for its memory: its bit rows (3 (S+1)^2 words per
   ///        64 samples along x, 12 bytes each) stay within a few hundred bytes per cell the
   ///        surface crosses, as on every meta-cell the surface really crosses; not for one
@@ -42,6 +48,14 @@ class UnitEdgeCrossings {
   static bool pays(int size, std::size_t surfaceCells) noexcept {
     const auto s = static_cast<std::size_t>(size);
     return surfaceCells > 0 && 3 * (s + 1) * (s + 1) * ((s + 64) / 64) <= 24 * surfaceCells + 65536;
+  }
+
+  /// @brief True where the table's bit rows (3 (S+1)^2 words per 64 samples along x, 12
+  ///        bytes each) take at most 16 MiB, as on meta-cells up to 256 voxels: worth
+  ///        building before knowing how much surface the block holds.
+  static bool smallEnough(int size) noexcept {
+    const auto s = static_cast<std::size_t>(size);
+    return 3 * (s + 1) * (s + 1) * ((s + 64) / 64) * 12 <= (std::size_t{16} << 20);
   }
 
   /// Bipolar unit edges found.
@@ -59,14 +73,28 @@ class UnitEdgeCrossings {
 
 /// @brief cell::computeDualVertex of the cell of `size` at `origin` (meta-cell offsets)
 ///        with these bipolar `edges`, its crossings read from `crossings` where there is a
-///        table and the cell is 1 voxel: the same vertex, bit for bit.
+///        table: the same vertex, bit for bit. A cell edge longer than a voxel whose ends
+///        lie on opposite sides has intersectEdge's crossing, which is its first bipolar
+///        unit edge's: the octree's coarse cells then compute no gradient of their own
+///        (Prewitt gradients and their normals were a tenth of adaptive mode's run).
+/// @pre `crossings` (if any) were found from `samples` at options.iso, with options.sharpFeatures.
 inline cell::DualVertex cellDualVertex(const cell::MetaCellSamples& samples, const std::array<int, 3>& origin, int size,
                                        std::uint16_t edges, const cell::DualVertexOptions& options,
                                        const UnitEdgeCrossings* crossings) {
-  if (crossings == nullptr || size != 1) return cell::computeDualVertex(samples, origin, size, edges, options);
+  if (crossings == nullptr) return cell::computeDualVertex(samples, origin, size, edges, options);
+  if (size == 1)
+    return cell::dualVertexOfCrossings(
+        samples, origin, 1, edges, options,
+        [&](const std::array<int, 3>& start, int axis) { return crossings->find(start, axis); });
   return cell::dualVertexOfCrossings(
-      samples, origin, 1, edges, options,
-      [&](const std::array<int, 3>& start, int axis) { return crossings->find(start, axis); });
+      samples, origin, size, edges, options,
+      [&](const std::array<int, 3>& start, int axis) -> const cell::EdgeIntersection* {
+        std::array<int, 3> end = start;
+        end[static_cast<std::size_t>(axis)] += size;
+        if (cell::isInside(samples.value(start), options.iso) == cell::isInside(samples.value(end), options.iso))
+          return nullptr;  // an even number of crossings: computeDualVertex takes none
+        return crossings->findFirst(start, axis, size);
+      });
 }
 
-}  // namespace isovdb::contour
+}  // namespace isovdb::octree
