@@ -7,7 +7,7 @@ every output mesh validated by `isovdb check`. Prints one table; "time ratio" is
 wall time over isovdb --method regular's on the same input.
 
 Run on demand, never in CI:
-    /usr/bin/python3 bench/peers.py [--sizes 256,512] [--work DIR] [--build build]
+    /usr/bin/python3 bench/peers.py [--sizes 256,512] [--work DIR] [--build build] [--rows A,B,...]
 It builds nothing: run scripts/build.sh first (BUILD/isovdb, BUILD/data/isovdb-sample).
 Peers are Debian's python3-vtk9 and python3-skimage; a missing package or a crash
 prints a row with the error instead of stopping the run.
@@ -386,7 +386,15 @@ def main():
     parser.add_argument("--repeat", type=int, default=1,
                         help="runs of every row per input, interleaved round by round; the row shows the median "
                              "times (default 1)")
+    parser.add_argument("--rows", default="",
+                        help="only these rows, comma-separated labels as the table prints them (e.g. "
+                             "\"isovdb regular,isovdb adaptive,vtk flying edges\"; default: every row)")
     args = parser.parse_args()
+    every_row = [label for label, _ in ISOVDB_METHODS + OPENVDB_ROWS + PEERS]
+    only = [r.strip() for r in args.rows.split(",") if r.strip()]
+    for r in only:
+        if r not in every_row:
+            sys.exit(f"--rows: unknown row '{r}'; the rows are: {', '.join(every_row)}")
 
     build = args.build if os.path.isabs(args.build) else os.path.join(ROOT, args.build)
     isovdb = os.path.join(build, "isovdb")
@@ -420,6 +428,7 @@ def main():
         runs = [(label, "isovdb", flags) for label, flags in ISOVDB_METHODS] + \
                [(label, "openvdb", flags) for label, flags in OPENVDB_ROWS] + \
                [(label, "peer", method) for label, method in PEERS]
+        runs = [run for run in runs if not only or run[0] in only]
         results = {label: [] for label, _, _ in runs}
         errors = {}
         rounds = max(1, args.repeat)
