@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <vector>
 
 namespace isovdb::cell {
@@ -55,6 +56,45 @@ TEST(Qef, TruncationIgnoresNearlyParallelNormals) {
 TEST(Qef, EmptyInput) {
   const QefSolution s = solveQef({}, {});
   EXPECT_EQ(s.rank, 0);
+}
+
+/// Unit normals scattered `spread` around (0, 0.6, 0.8), points within a unit cell: from
+/// one plane (spread 0) to a corner of three (spread large).
+void randomPlanes(std::mt19937& rng, float spread, int count, std::vector<Vec3f>& points, std::vector<Vec3f>& normals) {
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f), tilt(-1.0f, 1.0f);
+  points.clear();
+  normals.clear();
+  for (int i = 0; i < count; ++i) {
+    points.push_back({unit(rng), unit(rng), unit(rng)});
+    Vec3f n{spread * tilt(rng), 0.6f + spread * tilt(rng), 0.8f + spread * tilt(rng)};
+    const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (float& c : n) c /= length;
+    normals.push_back(n);
+  }
+}
+
+TEST(Qef, MinimiserLiesWithinItsReachOfTheMassPoint) {
+  std::mt19937 rng(17);
+  std::vector<Vec3f> points, normals;
+  int useful = 0;  // bounds below a voxel: what lets the error bound's check skip the solve
+  for (const float threshold : {0.1f, 0.5f, 0.01f})
+    for (const float spread : {0.0f, 0.02f, 0.1f, 0.5f, 3.0f})
+      for (int trial = 0; trial < 200; ++trial) {
+        randomPlanes(rng, spread, 3 + trial % 6, points, normals);
+        const QefSolution s = solveQef(points, normals, {.singularValueThreshold = threshold});
+        const QefReach r = qefReach(points, normals, {.singularValueThreshold = threshold});
+        EXPECT_EQ(r.massPoint, s.massPoint);
+        const float dx = s.point[0] - s.massPoint[0], dy = s.point[1] - s.massPoint[1],
+                    dz = s.point[2] - s.massPoint[2];
+        const double moved = std::sqrt(static_cast<double>(dx * dx + dy * dy + dz * dz));
+        EXPECT_LE(moved, r.reach + 1e-5) << "threshold " << threshold << ", spread " << spread << ", trial " << trial;
+        useful += r.reach < 1.0 ? 1 : 0;
+      }
+  EXPECT_GT(useful, 500);
+  // Points on one plane with its normal: the minimiser is the mass point, and the bound says so.
+  const std::vector<Vec3f> flat{{0.2f, 0.5f, 0.0f}, {0.9f, 0.1f, 0.0f}, {0.4f, 0.8f, 0.0f}};
+  const std::vector<Vec3f> up(3, Vec3f{0.0f, 0.0f, 1.0f});
+  EXPECT_EQ(qefReach(flat, up).reach, 0.0);
 }
 
 }  // namespace

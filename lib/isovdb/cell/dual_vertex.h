@@ -83,17 +83,17 @@ DualVertex dualVertexFromCrossings(const cell::MetaCellSamples& samples, std::ar
                                    std::span<const Vec3f> points, std::span<const Vec3f> normals, std::uint16_t edges,
                                    const DualVertexOptions& options);
 
-/// @brief computeDualVertex with the crossings found by `crossingOf(start, axis)`:
-///        a pointer to the crossing on the cell edge from sample `start` (meta-cell
-///        offsets) along `axis`, nullptr if that edge is not bipolar; the pointer is
-///        read before the next call. Lets a caller look up crossings it found once.
+/// @brief The crossings `crossingOf(start, axis)` gives on the cell edges in `edgeMask`
+///        (a pointer to the crossing on the cell edge from sample `start`, meta-cell
+///        offsets, along `axis`; nullptr if that edge is not bipolar; read before the next
+///        call), in edge order: their points and normals, `edges` the edges that had one.
+/// @return how many there are.
 template <class CrossingOf>
-DualVertex dualVertexOfCrossings(const cell::MetaCellSamples& samples, std::array<int, 3> cellOrigin, int cellSize,
-                                 std::uint16_t edgeMask, const DualVertexOptions& options, CrossingOf&& crossingOf) {
-  std::array<Vec3f, 12> points;
-  std::array<Vec3f, 12> normals;
+std::size_t gatherCrossings(std::array<int, 3> cellOrigin, int cellSize, std::uint16_t edgeMask,
+                            CrossingOf&& crossingOf, std::array<Vec3f, 12>& points, std::array<Vec3f, 12>& normals,
+                            std::uint16_t& edges) {
   std::size_t n = 0;
-  std::uint16_t edges = 0;
+  edges = 0;
   for (int e = 0; e < 12; ++e) {
     if (!((edgeMask >> e) & 1)) continue;
     const int c0 = cellEdgeCorner(e, 0);
@@ -106,6 +106,18 @@ DualVertex dualVertexOfCrossings(const cell::MetaCellSamples& samples, std::arra
     ++n;
     edges = static_cast<std::uint16_t>(edges | (1u << e));
   }
+  return n;
+}
+
+/// @brief computeDualVertex with the crossings found by `crossingOf(start, axis)`
+///        (as gatherCrossings reads them): lets a caller look up crossings it found once.
+template <class CrossingOf>
+DualVertex dualVertexOfCrossings(const cell::MetaCellSamples& samples, std::array<int, 3> cellOrigin, int cellSize,
+                                 std::uint16_t edgeMask, const DualVertexOptions& options, CrossingOf&& crossingOf) {
+  std::array<Vec3f, 12> points;
+  std::array<Vec3f, 12> normals;
+  std::uint16_t edges = 0;
+  const std::size_t n = gatherCrossings(cellOrigin, cellSize, edgeMask, crossingOf, points, normals, edges);
   return dualVertexFromCrossings(samples, cellOrigin, cellSize, std::span<const Vec3f>(points.data(), n),
                                  std::span<const Vec3f>(normals.data(), n), edges, options);
 }

@@ -6,6 +6,8 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cassert>
+#include <cmath>
+#include <limits>
 
 namespace isovdb::cell {
 
@@ -19,13 +21,47 @@ float qefError(std::span<const Vec3f> points, std::span<const Vec3f> normals, co
   return static_cast<float>(e);
 }
 
+namespace {
+
+/// The mean of `points` (not empty), in double.
+Eigen::Vector3d massPointOf(std::span<const Vec3f> points) {
+  Eigen::Vector3d mass = Eigen::Vector3d::Zero();
+  for (const Vec3f& p : points) mass += Eigen::Vector3d(p[0], p[1], p[2]);
+  return mass / static_cast<double>(points.size());
+}
+
+Vec3f toVec3f(const Eigen::Vector3d& v) {
+  return {static_cast<float>(v(0)), static_cast<float>(v(1)), static_cast<float>(v(2))};
+}
+
+}  // namespace
+
+QefReach qefReach(std::span<const Vec3f> points, std::span<const Vec3f> normals, const QefOptions& options) {
+  assert(points.size() == normals.size());
+  QefReach r;
+  if (points.empty()) return r;
+  const Eigen::Vector3d mass = massPointOf(points);
+  r.massPoint = toVec3f(mass);
+  double residuals = 0.0;
+  Eigen::Vector3d diagonal = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector3d n(normals[i][0], normals[i][1], normals[i][2]);
+    const double d = n.dot(Eigen::Vector3d(points[i][0], points[i][1], points[i][2]) - mass);
+    residuals += d * d;
+    diagonal += n.cwiseProduct(n);
+  }
+  const double floor = static_cast<double>(options.singularValueThreshold) * diagonal.maxCoeff();
+  r.reach = residuals == 0.0 ? 0.0
+            : floor > 0.0    ? std::sqrt(3.0 * residuals / floor)
+                             : std::numeric_limits<double>::infinity();
+  return r;
+}
+
 QefSolution solveQef(std::span<const Vec3f> points, std::span<const Vec3f> normals, const QefOptions& options) {
   assert(points.size() == normals.size());
   QefSolution s;
   if (points.empty()) return s;
-  Eigen::Vector3d mass = Eigen::Vector3d::Zero();
-  for (const Vec3f& p : points) mass += Eigen::Vector3d(p[0], p[1], p[2]);
-  mass /= static_cast<double>(points.size());
+  const Eigen::Vector3d mass = massPointOf(points);
   // Work relative to the mass point (well conditioned at any index magnitude):
   // minimise |A c - r|^2 with r_i = n_i . (p_i - mass), then x = mass + c.
   Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
@@ -72,8 +108,8 @@ QefSolution solveQef(std::span<const Vec3f> points, std::span<const Vec3f> norma
     }
   const Eigen::Vector3d c = v * inv.asDiagonal() * v.transpose() * atr;
   const Eigen::Vector3d x = mass + c;
-  s.point = {static_cast<float>(x(0)), static_cast<float>(x(1)), static_cast<float>(x(2))};
-  s.massPoint = {static_cast<float>(mass(0)), static_cast<float>(mass(1)), static_cast<float>(mass(2))};
+  s.point = toVec3f(x);
+  s.massPoint = toVec3f(mass);
   s.error = qefError(points, normals, s.point);
   return s;
 }

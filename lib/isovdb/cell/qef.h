@@ -42,6 +42,24 @@ struct QefSolution {
 /// @pre points.size() == normals.size(); an empty input returns all zeros.
 QefSolution solveQef(std::span<const Vec3f> points, std::span<const Vec3f> normals, const QefOptions& options = {});
 
+/// @brief The mass point of a QEF and how far solveQef's minimiser can lie from it, found
+///        without the eigendecomposition.
+struct QefReach {
+  Vec3f massPoint{0.0f, 0.0f, 0.0f};  ///< mean of the points (as solveQef's, to rounding)
+  /// Upper bound of |solveQef(...).point - massPoint| (exact arithmetic); +infinity where
+  /// the threshold or the normals give none.
+  double reach = 0.0;
+};
+
+/// @brief qefReach: the minimiser is massPoint + c with c in the span of the kept
+///        eigenvectors v_j of A^T A, whose eigenvalues s_j are at least the threshold
+///        times the largest, itself at least A^T A's largest diagonal entry D. With
+///        d_i = n_i . (p_i - massPoint), v_j . A^T d = sum_i (v_j . n_i) d_i is at most
+///        sqrt(s_j) |d| (Cauchy-Schwarz), so |c|^2 <= |d|^2 sum_j 1 / s_j
+///        <= 3 |d|^2 / (threshold D). A point clamped into a box that holds the mass
+///        point moves no farther from it.
+QefReach qefReach(std::span<const Vec3f> points, std::span<const Vec3f> normals, const QefOptions& options = {});
+
 /// @brief E(x) for the given planes.
 float qefError(std::span<const Vec3f> points, std::span<const Vec3f> normals, const Vec3f& x) noexcept;
 

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <limits>
 
 #include "isovdb/cell/dmc_table.h"
@@ -74,6 +75,13 @@ void addLeavesOfFarMeshPoints(const cell::MetaCellSamples& samples, const octree
   for (const std::vector<octree::MortonKey>& local : found) keys.insert(keys.end(), local.begin(), local.end());
 }
 
+/// What float positions near `p` (the vertex, the mass point) may be off from exact ones:
+/// a thousandth of a voxel, plus a few units in the last place of p's coordinates.
+double roundingMargin(const Vec3f& p) noexcept {
+  const float largest = std::max({std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
+  return 1e-3 + 4.0 * static_cast<double>(largest) * std::numeric_limits<float>::epsilon();
+}
+
 /// True if every vertex full-resolution contouring places in the unit cells of `leaf` that
 /// the surface crosses lies within `maxError` of the mesh in `grid`: manifold DMC's groups
 /// (dmc_table.h), a QEF vertex for a single group and mass points for several, as
@@ -89,9 +97,31 @@ bool unitCellVerticesWithin(const cell::MetaCellSamples& samples, const octree::
         const cell::DmcEntry& entry = cell::dmcEntry(config);
         options.massPointOnly = entry.vertexCount > 1;
         for (int g = 0; g < entry.vertexCount && within; ++g) {
-          const cell::DualVertex v =
-              octree::cellDualVertex(samples, origin, 1, entry.groups[static_cast<std::size_t>(g)], options, crossings);
-          within = !v.valid() || grid.within(v.position, maxError, &hint);
+          const std::uint16_t group = entry.groups[static_cast<std::size_t>(g)];
+          if (crossings == nullptr || options.sharpFeatures) {  // (sharp features slide the minimiser)
+            const cell::DualVertex v = octree::cellDualVertex(samples, origin, 1, group, options, crossings);
+            within = !v.valid() || grid.within(v.position, maxError, &hint);
+            continue;
+          }
+          std::array<Vec3f, 12> points;
+          std::array<Vec3f, 12> normals;
+          std::uint16_t edges = 0;
+          const std::size_t n = cell::gatherCrossings(
+              origin, 1, group, [&](const std::array<int, 3>& start, int axis) { return crossings->find(start, axis); },
+              points, normals, edges);
+          if (n == 0) continue;  // no vertex
+          const std::span<const Vec3f> p(points.data(), n), normal(normals.data(), n);
+          // The vertex lies within qefReach of the mass point (the QEF's minimiser clamped into
+          // the cell, which holds the mass point; or the mass point itself): where the mass point
+          // is that much nearer the mesh, the eigendecomposition is not needed to tell.
+          const cell::QefReach reach = cell::qefReach(p, normal, {options.singularValueThreshold});
+          Vec3f mass = reach.massPoint;
+          for (int a = 0; a < 3; ++a) mass[a] += static_cast<float>(samples.origin[a]);
+          const double slack =
+              static_cast<double>(maxError) - (options.massPointOnly ? 0.0 : reach.reach) - roundingMargin(mass);
+          if (slack > 0.0 && grid.within(mass, slack, &hint)) continue;
+          const cell::DualVertex v = cell::dualVertexFromCrossings(samples, origin, 1, p, normal, edges, options);
+          within = grid.within(v.position, maxError, &hint);
         }
       });
   return within;
