@@ -15,15 +15,19 @@ TrilinearSample trilinearAt(const MetaCellSamples& samples, const Vec3f& point, 
     base[a] = std::clamp(static_cast<int>(std::floor(point[a])), 0, samples.size - 1);
     t[a] = point[a] - static_cast<float>(base[a]);
   }
+  // The cell's eight samples (f<x><y><z>), then the value and the gradient as nested lerps.
+  const std::size_t sy = static_cast<std::size_t>(samples.stride()), sz = sy * sy;
+  const float* v = samples.values.data() + samples.indexOf(base[0], base[1], base[2]);
+  const float f000 = v[0] - iso, f100 = v[1] - iso, f010 = v[sy] - iso, f110 = v[sy + 1] - iso;
+  const float f001 = v[sz] - iso, f101 = v[sz + 1] - iso, f011 = v[sz + sy] - iso, f111 = v[sz + sy + 1] - iso;
+  const float tx = t[0], ty = t[1], tz = t[2], ux = 1.0f - tx, uy = 1.0f - ty, uz = 1.0f - tz;
+  const float x00 = f000 * ux + f100 * tx, x10 = f010 * ux + f110 * tx;  // along x, at (y, z)
+  const float x01 = f001 * ux + f101 * tx, x11 = f011 * ux + f111 * tx;
   TrilinearSample result;
-  for (int c = 0; c < 8; ++c) {
-    const std::array<int, 3> bit{c & 1, (c >> 1) & 1, (c >> 2) & 1};
-    const float f = samples.value(base[0] + bit[0], base[1] + bit[1], base[2] + bit[2]) - iso;
-    std::array<float, 3> w{};
-    for (int a = 0; a < 3; ++a) w[a] = bit[a] ? t[a] : 1.0f - t[a];
-    result.value += f * w[0] * w[1] * w[2];
-    for (int a = 0; a < 3; ++a) result.gradient[a] += f * (bit[a] ? 1.0f : -1.0f) * w[(a + 1) % 3] * w[(a + 2) % 3];
-  }
+  result.value = (x00 * uy + x10 * ty) * uz + (x01 * uy + x11 * ty) * tz;
+  result.gradient[0] = ((f100 - f000) * uy + (f110 - f010) * ty) * uz + ((f101 - f001) * uy + (f111 - f011) * ty) * tz;
+  result.gradient[1] = (x10 - x00) * uz + (x11 - x01) * tz;
+  result.gradient[2] = (x01 * uy + x11 * ty) - (x00 * uy + x10 * ty);
   return result;
 }
 

@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: MPL-2.0
+// Copyright Contributors to the isovdb project.
+// Tests of lib/isovdb/cell/trilinear.h.
+#include "isovdb/cell/trilinear.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+namespace isovdb::cell {
+namespace {
+
+/// A trilinear polynomial: trilinear interpolation of its samples reproduces it and its
+/// gradient exactly, in every cell.
+double poly(double x, double y, double z) {
+  return 0.3 + 0.7 * x - 0.2 * y + 0.45 * z + 0.05 * x * y - 0.08 * y * z + 0.03 * x * z + 0.011 * x * y * z;
+}
+
+TEST(Trilinear, ReproducesATrilinearFieldAndItsGradient) {
+  const std::array<int, 3> origin{-3, 5, 2};
+  const MetaCellSamples samples =
+      makeMetaCellSamples(8, origin, [](int x, int y, int z) { return static_cast<float>(poly(x, y, z)); });
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> at(0.0f, 8.0f);
+  const float iso = 0.25f;
+  for (int trial = 0; trial < 500; ++trial) {
+    const Vec3f p{at(rng), at(rng), at(rng)};  // meta-cell offsets
+    const double x = p[0] + origin[0], y = p[1] + origin[1], z = p[2] + origin[2];
+    const TrilinearSample f = trilinearAt(samples, p, iso);
+    EXPECT_NEAR(f.value, poly(x, y, z) - iso, 1e-4);
+    EXPECT_NEAR(f.gradient[0], 0.7 + 0.05 * y + 0.03 * z + 0.011 * y * z, 1e-4);
+    EXPECT_NEAR(f.gradient[1], -0.2 + 0.05 * x - 0.08 * z + 0.011 * x * z, 1e-4);
+    EXPECT_NEAR(f.gradient[2], 0.45 - 0.08 * y + 0.03 * x + 0.011 * x * y, 1e-4);
+  }
+}
+
+TEST(Trilinear, DistanceToAPlanesLevelIsExact) {
+  // f = (x + 2y - 2z) / 3: a distance field; its level 0.5 lies 0.5 from the level 0.
+  const MetaCellSamples samples = makeMetaCellSamples(
+      4, {0, 0, 0}, [](int x, int y, int z) { return static_cast<float>((x + 2.0 * y - 2.0 * z) / 3.0); });
+  EXPECT_NEAR(distanceToLevel(samples, {1.5f, 1.0f, 1.0f}, 0.0f), 0.5f, 1e-5f);
+  EXPECT_NEAR(distanceToLevel(samples, {1.5f, 1.0f, 1.0f}, 0.5f), 0.0f, 1e-5f);
+  EXPECT_NEAR(distanceToLevel(samples, {2.0f, 3.25f, 0.5f}, -1.0f), (2.0f + 6.5f - 1.0f) / 3.0f + 1.0f, 1e-5f);
+}
+
+}  // namespace
+}  // namespace isovdb::cell
