@@ -9,15 +9,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <span>
 #include <limits>
+#include <span>
 
 #include "isovdb/cell/dmc_table.h"
 #include "isovdb/cell/dual_vertex.h"
 #include "isovdb/cell/trilinear.h"
-#include "isovdb/octree/unit_edge_crossings.h"
 #include "isovdb/mesh/triangle_grid.h"
 #include "isovdb/octree/sample_phases.h"
+#include "isovdb/octree/unit_edge_crossings.h"
 
 namespace isovdb::contour {
 

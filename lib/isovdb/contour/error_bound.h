@@ -28,9 +28,9 @@
 
 #include "isovdb/cell/dual_vertex.h"
 #include "isovdb/cell/meta_cell_samples.h"
-#include "isovdb/octree/unit_edge_crossings.h"
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/octree/linear_octree.h"
+#include "isovdb/octree/unit_edge_crossings.h"
 
 namespace isovdb::contour {
 

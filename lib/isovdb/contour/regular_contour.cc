@@ -18,11 +18,11 @@
 #include "isovdb/cell/dmc_table.h"
 #include "isovdb/cell/dual_vertex.h"
 #include "isovdb/contour/leaf_groups.h"
-#include "isovdb/octree/unit_edge_crossings.h"
 #include "isovdb/contour/voxel_dmc.h"
 #include "isovdb/errors.h"
 #include "isovdb/octree/criteria.h"
 #include "isovdb/octree/morton.h"
+#include "isovdb/octree/unit_edge_crossings.h"
 #include "isovdb/octree/unit_leaf_index.h"
 
 namespace isovdb::contour {
