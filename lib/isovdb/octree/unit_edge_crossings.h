@@ -46,22 +46,24 @@ class UnitEdgeCrossings {
   ///        surface crosses, as on every meta-cell the surface really crosses; not for one
   ///        large block around a small surface (--meta-cell 0).
   static bool pays(int size, std::size_t surfaceCells) noexcept {
-    const auto s = static_cast<std::size_t>(size);
-    return surfaceCells > 0 && 3 * (s + 1) * (s + 1) * ((s + 64) / 64) <= 24 * surfaceCells + 65536;
+    return surfaceCells > 0 && bitRowWords(size) <= 24 * surfaceCells + 65536;
   }
 
   /// @brief True where the table's bit rows (3 (S+1)^2 words per 64 samples along x, 12
   ///        bytes each) take at most 16 MiB, as on meta-cells up to 256 voxels: worth
   ///        building before knowing how much surface the block holds.
-  static bool smallEnough(int size) noexcept {
-    const auto s = static_cast<std::size_t>(size);
-    return 3 * (s + 1) * (s + 1) * ((s + 64) / 64) * 12 <= (std::size_t{16} << 20);
-  }
+  static bool smallEnough(int size) noexcept { return bitRowWords(size) * 12 <= (std::size_t{16} << 20); }
 
   /// Bipolar unit edges found.
   std::size_t size() const noexcept { return crossings_[0].size() + crossings_[1].size() + crossings_[2].size(); }
 
  private:
+  /// Words of the bit rows for S = `size`: 3 axes, (S + 1)^2 rows, one word per 64 edge starts.
+  static std::size_t bitRowWords(int size) noexcept {
+    const auto s = static_cast<std::size_t>(size);
+    return 3 * (s + 1) * (s + 1) * ((s + 64) / 64);
+  }
+
   int size_ = 0;         // S
   int wordsPerRow_ = 0;  // 64-bit words per row of S + 1 edge starts along x
   // Per axis: bit i of row (j, k) is the edge from sample (i, j, k); the set bits
