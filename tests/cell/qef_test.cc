@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
+
+#include <array>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -95,6 +98,64 @@ TEST(Qef, MinimiserLiesWithinItsReachOfTheMassPoint) {
   const std::vector<Vec3f> flat{{0.2f, 0.5f, 0.0f}, {0.9f, 0.1f, 0.0f}, {0.4f, 0.8f, 0.0f}};
   const std::vector<Vec3f> up(3, Vec3f{0.0f, 0.0f, 1.0f});
   EXPECT_EQ(qefReach(flat, up).reach, 0.0);
+}
+
+/// The truncated pseudo-inverse's minimiser by Eigen's iterative eigensolver, the
+/// reference the fast paths of solveQef must agree with.
+Vec3f referenceMinimiser(const std::vector<Vec3f>& points, const std::vector<Vec3f>& normals, double threshold,
+                         int& rank) {
+  Eigen::Vector3d mass = Eigen::Vector3d::Zero();
+  for (const Vec3f& p : points) mass += Eigen::Vector3d(p[0], p[1], p[2]);
+  mass /= static_cast<double>(points.size());
+  Eigen::Matrix3d ata = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d atr = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector3d n(normals[i][0], normals[i][1], normals[i][2]);
+    ata += n * n.transpose();
+    atr += n * n.dot(Eigen::Vector3d(points[i][0], points[i][1], points[i][2]) - mass);
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen(ata);
+  const double largest = eigen.eigenvalues()(2);
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  rank = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double s = eigen.eigenvalues()(i);
+    if (s > 0.0 && s >= threshold * largest) {
+      const Eigen::Vector3d v = eigen.eigenvectors().col(i);
+      c += v * (v.dot(atr) / s);
+      ++rank;
+    }
+  }
+  const Eigen::Vector3d x = mass + c;
+  return {static_cast<float>(x(0)), static_cast<float>(x(1)), static_cast<float>(x(2))};
+}
+
+TEST(Qef, AgreesWithTheIterativeEigensolverAtEveryRank) {
+  // From nearly parallel normals (rank 1, solveQef's power-iteration path) to corners
+  // (rank 3), including spreads whose second singular value lies near the cutoff.
+  std::mt19937 rng(5);
+  std::vector<Vec3f> points, normals;
+  std::array<int, 4> ranks{};
+  for (const float threshold : {0.1f, 0.5f, 0.01f})
+    for (const float spread : {0.0f, 0.01f, 0.05f, 0.15f, 0.25f, 0.4f, 3.0f})
+      for (int trial = 0; trial < 300; ++trial) {
+        randomPlanes(rng, spread, 2 + trial % 7, points, normals);
+        int rank = 0;
+        const Vec3f expected = referenceMinimiser(points, normals, threshold, rank);
+        const QefSolution s = solveQef(points, normals, {.singularValueThreshold = threshold});
+        // Ranks may differ only where a value sits at the cutoff to rounding; none here.
+        ASSERT_EQ(s.rank, rank) << "threshold " << threshold << ", spread " << spread << ", trial " << trial;
+        ++ranks[static_cast<std::size_t>(rank)];
+        for (int a = 0; a < 3; ++a) EXPECT_NEAR(s.point[a], expected[a], 2e-5f) << "trial " << trial;
+        // The free directions are unit vectors normal to every kept direction's plane fit.
+        for (int f = 0; f < 3 - s.rank; ++f) {
+          const Vec3f& d = s.freeDirections[static_cast<std::size_t>(f)];
+          EXPECT_NEAR(d[0] * d[0] + d[1] * d[1] + d[2] * d[2], 1.0f, 1e-5f);
+        }
+      }
+  EXPECT_GT(ranks[1], 1000);
+  EXPECT_GT(ranks[2], 100);
+  EXPECT_GT(ranks[3], 100);
 }
 
 }  // namespace

@@ -33,8 +33,9 @@ struct QefSolution {
   Vec3f massPoint{0.0f, 0.0f, 0.0f};  ///< mean of the points
   float error = 0.0f;                 ///< E(point), squared distance units
   int rank = 0;                       ///< singular values kept (0..3)
-  /// Directions along which E is (nearly) flat: the truncated singular vectors, 3 - rank of
-  /// them (unit); every point + sum t_i freeDirections[i] fits about as well.
+  /// Directions along which E is (nearly) flat: 3 - rank unit vectors spanning the truncated
+  /// singular vectors' space (at rank 1 any orthonormal basis of it; at rank 2 the truncated
+  /// vector itself); every point + sum t_i freeDirections[i] fits about as well.
   std::array<Vec3f, 3> freeDirections{};
 };
 
