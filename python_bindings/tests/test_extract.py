@@ -279,7 +279,7 @@ def test_raising_progress_cancels_and_propagates(torus_volume):
 
 @pytest.fixture(scope="module")
 def big_ball():
-    """A volume whose regular contouring on one thread takes about half a second."""
+    """A volume whose regular contouring on one thread takes a fifth of a second or more."""
     return isovdb.from_numpy(ball((256, 256, 256), (128, 128, 128), 110))
 
 
@@ -301,7 +301,7 @@ def test_gil_is_released_while_contouring(big_ball):
     stop.set()
     thread.join()
     during = [t for t in ticks if start < t < end]
-    assert end - start > 0.2
+    assert end - start > 0.1  # long enough for the ticker to tick many times
     # a thread holding the GIL would leave no tick between start and end
     assert len(during) >= 20, (end - start, len(during))
 
