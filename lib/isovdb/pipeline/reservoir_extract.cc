@@ -113,6 +113,7 @@ mesh::Mesh extractReservoir(const ReservoirOptions& options, Statistics& stats, 
   section["ambiguous_faces"] = contour.ambiguousFaces;
   section["fault_vertices_moved"] = contour.faultVertices;
   section["opposed_twin_triangles_cancelled"] = contour.cancelledTwins;
+  section["face_points"] = contour.facePoints;
   section["mc_triangles"] = contour.mesh.triangleCount();
   section["mc_vertices"] = contour.mesh.vertexCount();
   // Faults are already in the corner-point geometry (ZCORN); their records are reported.

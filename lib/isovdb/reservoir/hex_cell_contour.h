@@ -32,13 +32,14 @@ struct ThreadOutput {
   std::vector<std::array<std::uint32_t, 3>> triangles;             // into keys, from its block's first
   std::vector<std::uint32_t> triangleCells;                        // beside triangles (HexContourOptions)
   std::vector<std::pair<std::uint64_t, Vec3d>> faultSides;  // crossings on fault faces (onFault), each with its side
+  std::vector<std::pair<std::uint64_t, Eigen::Vector3f>> facePoints;  // face points' positions (kFaceKey)
 };
 
 /// What a block of consecutive cells made: where it lies in its thread's arrays.
 struct BlockOutput {
   const ThreadOutput* thread = nullptr;
   std::size_t firstKey = 0, keyCount = 0, firstCentre = 0, centreCount = 0, firstTriangle = 0, triangleCount = 0,
-              firstFaultSide = 0, faultSideCount = 0;
+              firstFaultSide = 0, faultSideCount = 0, firstFacePoint = 0, facePointCount = 0;
   std::int64_t cutCells = 0;
   int ambiguousFaces = 0;
 
@@ -58,12 +59,20 @@ struct BlockOutput {
   std::span<const std::pair<std::uint64_t, Vec3d>> faultSides() const {
     return {thread->faultSides.data() + firstFaultSide, faultSideCount};
   }
+  std::span<const std::pair<std::uint64_t, Eigen::Vector3f>> facePoints() const {
+    return {thread->facePoints.data() + firstFacePoint, facePointCount};
+  }
 };
 
 /// Weld keys: an edge crossing is keyed by its edge's two point ids (lower first); these
 /// bits mark the other two kinds.
 constexpr std::uint64_t kCornerKey = std::uint64_t{1} << 62;  ///< the vertex is a grid point
 constexpr std::uint64_t kCentreKey = std::uint64_t{1} << 63;  ///< a loop's centre inside a cell
+/// A point on a twisted face between two of its crossings (contourCell), made alike by
+/// both cells that share the face: (the lower cell << 4) | (its face << 1) | segment.
+constexpr std::uint64_t kFaceKey = std::uint64_t{1} << 61;
+/// The vertices that are not edge crossings.
+constexpr std::uint64_t kSpecialKeys = kCornerKey | kCentreKey | kFaceKey;
 
 /// Where the surface crosses the edge between points `a` and `b`: its weld key and its
 /// place `t` along the edge from the lower id. The same in every cell that holds the edge.

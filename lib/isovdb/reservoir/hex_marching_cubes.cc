@@ -24,6 +24,8 @@ namespace {
 using hex::BlockOutput;
 using hex::kCentreKey;
 using hex::kCornerKey;
+using hex::kFaceKey;
+using hex::kSpecialKeys;
 using hex::ThreadOutput;
 
 /// Cells per block: blocks are the unit of parallel work and their outputs are merged in
@@ -66,7 +68,7 @@ std::vector<Record> weldOrder(const std::vector<BlockOutput>& outputs, const std
   for (std::size_t block = 0; block < outputs.size(); ++block)
     for (std::size_t n = 0; n < outputs[block].keyCount; ++n) {
       const std::uint64_t key = outputs[block].keys()[n];
-      if (key & (kCornerKey | kCentreKey))
+      if (key & kSpecialKeys)
         special.push_back({key, static_cast<std::uint32_t>(firstSlot[block] + n)});
       else
         ++bucketStart[(key >> 32) + 1];
@@ -81,7 +83,7 @@ std::vector<Record> weldOrder(const std::vector<BlockOutput>& outputs, const std
     next.assign(bucketStart.begin(), bucketStart.end() - 1);
     for (std::size_t block = 0; block < outputs.size(); ++block)
       for (std::size_t n = 0; n < outputs[block].keyCount; ++n)
-        if (const std::uint64_t key = outputs[block].keys()[n]; !(key & (kCornerKey | kCentreKey)))
+        if (const std::uint64_t key = outputs[block].keys()[n]; !(key & kSpecialKeys))
           records[next[key >> 32]++] = {key, static_cast<std::uint32_t>(firstSlot[block] + n)};
   }
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points, 4096), [&](const tbb::blocked_range<std::size_t>& r) {
@@ -185,6 +187,7 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
         made.firstCentre = out.centres.size();
         made.firstTriangle = out.triangles.size();
         made.firstFaultSide = out.faultSides.size();
+        made.firstFacePoint = out.facePoints.size();
         const std::size_t first = block * kBlockCells, end = std::min(cells, first + kBlockCells);
         // (i, j, k) stepped along with the cell index: no division per cell.
         std::array<int, 3> ijk{static_cast<int>(first % nx), static_cast<int>(first / nx % ny),
@@ -203,6 +206,7 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
         made.centreCount = out.centres.size() - made.firstCentre;
         made.triangleCount = out.triangles.size() - made.firstTriangle;
         made.faultSideCount = out.faultSides.size() - made.firstFaultSide;
+        made.facePointCount = out.facePoints.size() - made.firstFacePoint;
       }
     });
   }
@@ -250,6 +254,17 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
     result.faultVertices = static_cast<std::int64_t>(kept);
   }
 
+  // Face points: both cells of a face computed the same position; one of each key is kept.
+  std::vector<std::pair<std::uint64_t, Eigen::Vector3f>> facePoints;
+  for (const BlockOutput& made : outputs)
+    facePoints.insert(facePoints.end(), made.facePoints().begin(), made.facePoints().end());
+  std::stable_sort(facePoints.begin(), facePoints.end(),
+                   [](const auto& x, const auto& y) { return x.first < y.first; });
+  facePoints.erase(std::unique(facePoints.begin(), facePoints.end(),
+                               [](const auto& x, const auto& y) { return x.first == y.first; }),
+                   facePoints.end());
+  result.facePoints = static_cast<std::int64_t>(facePoints.size());
+
   mesh::Mesh& m = result.mesh;
   resizeHuge(m.positions, vertices);
   std::vector<Vec3d> gradients;
@@ -266,7 +281,11 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
   tbb::parallel_for(std::size_t{0}, vertices, [&](std::size_t v) {
     const std::uint64_t key = records[runStart[v]].key;
     Eigen::Vector3f position;
-    if (key & kCentreKey) {
+    if (key & kFaceKey) {
+      position = std::lower_bound(facePoints.begin(), facePoints.end(), key, [](const auto& point, std::uint64_t k) {
+                   return point.first < k;
+                 })->second;
+    } else if (key & kCentreKey) {
       const auto centres = outputs[((key & ~kCentreKey) >> 4) / kBlockCells].centres();
       position = std::lower_bound(centres.begin(), centres.end(), key, [](const auto& centre, std::uint64_t k) {
                    return centre.first < k;

@@ -17,7 +17,9 @@
 /// world space whatever the grid's handedness. Where a face lies on a fault (the cell
 /// across holds other points there), the sheets of both sides end on the same pillar
 /// plane and would cross: the vertices on such faces move a hundredth of the way to their
-/// own cells' centres. Cells run in parallel (TBB);
+/// own cells' centres. Where a face's bilinear patch bows far off its chords (thin,
+/// twisted layers), each segment on it runs through a face point on the patch, which both
+/// cells share (hex_cell_contour.cc, kFaceWarp). Cells run in parallel (TBB);
 /// the output does not depend on the thread count.
 #pragma once
 
@@ -43,6 +45,7 @@ struct HexContourResult {
   std::int64_t ambiguousFaces = 0;           ///< faces resolved by the asymptotic decider (counted per cell)
   std::int64_t faultVertices = 0;            ///< vertices moved off fault faces into their own side
   std::int64_t cancelledTwins = 0;           ///< pairs of opposed triangles in a face, dropped (cancelOpposedTwins)
+  std::int64_t facePoints = 0;               ///< vertices on twisted faces between two crossings (hex_cell_contour.cc)
   std::vector<std::uint32_t> triangleCells;  ///< with HexContourOptions::triangleCells: per triangle, its cell
 };
 
