@@ -375,16 +375,9 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
   const auto warpedFace = [&](int f) {
     if (faceWarped[static_cast<std::size_t>(f)] < 0)
       faceWarped[static_cast<std::size_t>(f)] = [&] {
-        const int axis = f >> 1, side = f & 1;
-        const int p = 1 << ((axis + 1) % 3), q = 1 << ((axis + 2) % 3), base = side << axis;
         if (grid.cellShape[cell] & CornerPointGrid::kPinchedCell) return 0;
-        const std::size_t neighbour = hex.neighbour(axis, side);
-        if (neighbour != HexCell::kNone) {
-          if (grid.cellShape[neighbour] & CornerPointGrid::kPinchedCell) return 0;
-          const auto& across = grid.pointIds[neighbour];
-          for (const int c : {base, base | p, base | q, base | p | q})
-            if (across[static_cast<std::size_t>(c ^ (1 << axis))] != ids[static_cast<std::size_t>(c)]) return 0;
-        }
+        const int axis = f >> 1, side = f & 1, bit = 1 << axis;
+        const int p = 1 << ((axis + 1) % 3), q = 1 << ((axis + 2) % 3), base = side << axis;
         // The patch's centre lies |twist . normal| / 4 off the planes through its diagonals
         // (the twist's part in the face's plane only skews the face, which stays flat); a
         // thickness is |span| / 4, so the test is (twist . normal)^2 > warp^2 |span|^2
@@ -397,12 +390,21 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
         const double twist = Vec3d(c00 + c11 - c10 - c01).dot(normal);
         const double bow2 = twist * twist, scale = kFaceWarp * kFaceWarp * normal.squaredNorm();
         if (!(bow2 > 0)) return 0;
-        if (bow2 > scale * spanAcross(hex.points, axis).squaredNorm()) return 1;
-        if (neighbour == HexCell::kNone) return 0;
+        const bool beyondThis = bow2 > scale * spanAcross(hex.points, axis).squaredNorm();
+        const std::size_t neighbour = hex.neighbour(axis, side);
+        if (neighbour == HexCell::kNone) return beyondThis ? 1 : 0;
+        if (grid.cellShape[neighbour] & CornerPointGrid::kPinchedCell) return 0;
+        const auto& across = grid.pointIds[neighbour];
+        for (const int c : {base, base | p, base | q, base | p | q})
+          if (across[static_cast<std::size_t>(c ^ bit)] != ids[static_cast<std::size_t>(c)]) return 0;
+        if (beyondThis) return 1;
+        // The neighbour's points: this face's, and its far face's read from the grid (the
+        // same values its own contouring holds, so both cells decide alike).
         std::array<Vec3d, 8> acrossPoints;
         for (int c = 0; c < 8; ++c)
-          acrossPoints[static_cast<std::size_t>(c)] =
-              grid.points[grid.pointIds[neighbour][static_cast<std::size_t>(c)]];
+          acrossPoints[static_cast<std::size_t>(c)] = ((c >> axis) & 1) != side
+                                                          ? hex.points[static_cast<std::size_t>(c ^ bit)]
+                                                          : grid.points[across[static_cast<std::size_t>(c)]];
         return bow2 > scale * spanAcross(acrossPoints, axis).squaredNorm() ? 1 : 0;
       }();
     return faceWarped[static_cast<std::size_t>(f)] == 1;
