@@ -65,7 +65,7 @@ struct BlockOutput {
 };
 
 /// Weld keys: an edge crossing is keyed by its edge's two point ids (lower first); these
-/// bits mark the other two kinds.
+/// bits mark the other three kinds.
 constexpr std::uint64_t kCornerKey = std::uint64_t{1} << 62;  ///< the vertex is a grid point
 constexpr std::uint64_t kCentreKey = std::uint64_t{1} << 63;  ///< a loop's centre inside a cell
 /// A point on a twisted face between two of its crossings (contourCell), made alike by
