@@ -34,22 +34,24 @@ constexpr double kMaxCornerOffset = 0.02;
 /// grids, 10 seeds) 0.1 left 37 pairs where 0 left 73 and the first apex 137.
 constexpr double kFanDepthForCentre = 0.1;
 
-/// A face whose bilinear patch bows farther than this fraction of the thickness across it
-/// (the thinner of its two cells) off the planes through its diagonals gets face points:
-/// each segment of the surface on it runs through the patch's point halfway between its
-/// two crossings (in the face's parameters), shared by both cells, and the loop's fan is
-/// chosen among its crossings and face points as before. Reek's 3 m layers lie under
-/// faces whose corners sit up to 10 m off the plane of the other three: a chord between two
-/// crossings there ran up to 2.5 m off the face, through the next cell of the column, and
+/// A segment of the surface on a face whose chord runs farther than this fraction of both
+/// cells' thickness off the face's bilinear patch gets a face point: the patch's point
+/// halfway between its two crossings (in the face's parameters), shared by both cells; the
+/// loop's fan is then chosen among its crossings and face points as before. Reek's 3 m
+/// layers lie under faces whose corners sit up to 10 m off the plane of the other three: a
+/// chord across such a face ran up to 2.5 m off it, through the next cell of the column, and
 /// the triangles on both sides of it crossed. Self-intersecting pairs away from pinched
 /// cells over Reek PORO 0.1-0.3 (9 iso-values), Emerald PORO 0.1-0.3 (5) and FACIES 0.5,
-/// and regular27cell PORO 0.45 / their triangles: no face points 39 / 198,784; 0.1: 18 /
-/// 249,399; 0.2: 10 / 223,382; 0.3: 14; 0.5: 14 / 204,270. On 120 grids of 3 m layers
-/// under 100 m columns whose pillars move up to 3 or 6 m (twistedLayers, 20 seeds, PORO
-/// 0.15 / 0.2 / 0.25): 1,206 -> 61 pairs (0.2), +41 % triangles. What is left at 0.2: fan
-/// triangles from a crossing a few centimetres from a corner to face points on a face
-/// that corner holds (Emerald PORO 0.1: 3, 0.25: 5 where there were 0 and 3).
-constexpr double kFaceWarp = 0.2;
+/// and regular27cell PORO 0.45 / their triangles: no face points 39 / 198,784; per segment
+/// at 0.05: 13 / 220,251; 0.1: 8 / 207,717; 0.15: 8 / 203,983; 0.2: 12 / 201,878 (against
+/// the thinner cell's thickness instead of both: the same pairs, 0.5 % more triangles, and
+/// the neighbour's points read for every face). Per face (every segment of a face whose
+/// centre bows that far; the first version): 0.2: 10 / 223,382, but Emerald PORO 0.1 / 0.25
+/// went from 0 / 3 to 3 / 5 pairs, fans hugging a face that the surface runs almost along.
+/// On 120 grids of 3 m layers under 100 m columns whose pillars move up to 3 or 6 m
+/// (twistedLayers, 20 seeds, PORO 0.15 / 0.2 / 0.25): 1,206 pairs without, 80 per segment
+/// at 0.1 (+16 % triangles), 61 per face at 0.2 (+41 %).
+constexpr double kFaceWarp = 0.1;
 
 /// Corner c's parameter coordinates in the cell: its bits.
 Vec3d cornerParameters(int c) {
@@ -364,50 +366,87 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
       out.triangleCells.push_back(static_cast<std::uint32_t>(cell));
     }
   };
-  // Face points (kFaceWarp): whether face f gets them is decided from what both cells that
-  // share it see alike: its four points, and the bow against each cell's thickness across
-  // it (bow > kFaceWarp * min(thicknesses), taken one at a time so that the neighbour's is
-  // only computed where this cell's does not decide). A fault face (the cell across holds
-  // other points) keeps its own scheme (onFault); a pinched cell's faces meet, and their
-  // face points would be different vertices at one place.
-  std::array<std::int8_t, 6> faceWarped;
-  faceWarped.fill(-1);
-  const auto warpedFace = [&](int f) {
-    if (faceWarped[static_cast<std::size_t>(f)] < 0)
-      faceWarped[static_cast<std::size_t>(f)] = [&] {
-        if (grid.cellShape[cell] & CornerPointGrid::kPinchedCell) return 0;
-        const int axis = f >> 1, side = f & 1, bit = 1 << axis;
-        const int p = 1 << ((axis + 1) % 3), q = 1 << ((axis + 2) % 3), base = side << axis;
-        // The patch's centre lies |twist . normal| / 4 off the planes through its diagonals
-        // (the twist's part in the face's plane only skews the face, which stays flat); a
-        // thickness is |span| / 4, so the test is (twist . normal)^2 > warp^2 |span|^2
-        // |normal|^2, without roots.
-        const Vec3d& c00 = hex.points[static_cast<std::size_t>(base)];
-        const Vec3d& c10 = hex.points[static_cast<std::size_t>(base | p)];
-        const Vec3d& c01 = hex.points[static_cast<std::size_t>(base | q)];
-        const Vec3d& c11 = hex.points[static_cast<std::size_t>(base | p | q)];
-        const Vec3d normal = Vec3d(c10 - c00 + c11 - c01).cross(Vec3d(c01 - c00 + c11 - c10));
-        const double twist = Vec3d(c00 + c11 - c10 - c01).dot(normal);
-        const double bow2 = twist * twist, scale = kFaceWarp * kFaceWarp * normal.squaredNorm();
-        if (!(bow2 > 0)) return 0;
-        const bool beyondThis = bow2 > scale * spanAcross(hex.points, axis).squaredNorm();
-        const std::size_t neighbour = hex.neighbour(axis, side);
-        if (neighbour == HexCell::kNone) return beyondThis ? 1 : 0;
-        if (grid.cellShape[neighbour] & CornerPointGrid::kPinchedCell) return 0;
-        const auto& across = grid.pointIds[neighbour];
-        for (const int c : {base, base | p, base | q, base | p | q})
-          if (across[static_cast<std::size_t>(c ^ bit)] != ids[static_cast<std::size_t>(c)]) return 0;
-        if (beyondThis) return 1;
-        // The neighbour's points: this face's, and its far face's read from the grid (the
-        // same values its own contouring holds, so both cells decide alike).
-        std::array<Vec3d, 8> acrossPoints;
-        for (int c = 0; c < 8; ++c)
-          acrossPoints[static_cast<std::size_t>(c)] = ((c >> axis) & 1) != side
-                                                          ? hex.points[static_cast<std::size_t>(c ^ bit)]
-                                                          : grid.points[across[static_cast<std::size_t>(c)]];
-        return bow2 > scale * spanAcross(acrossPoints, axis).squaredNorm() ? 1 : 0;
-      }();
-    return faceWarped[static_cast<std::size_t>(f)] == 1;
+  // Face points (kFaceWarp). The chord between two crossings at face parameters (u1, v1) and
+  // (u2, v2) runs |T . n| |(u1 - u2)(v1 - v2)| / 4 off the patch at its middle, T the twist
+  // c00 + c11 - c10 - c01 and n the unit normal: a segment gets a face point where that
+  // exceeds kFaceWarp times the thickness of both cells of the face (this cell's first, so
+  // that the neighbour's points are read only for twisted faces). Both cells see the same
+  // points, parameters and thicknesses, so they decide alike. A fault face (the cell
+  // across holds other points) keeps its own scheme (onFault); a pinched cell's faces meet,
+  // and their face points would be different vertices at one place.
+  struct FaceBow {
+    bool known = false, candidate = false;
+    double twist2 = 0;         // (T . N)^2, N the unnormalised centre normal
+    double scale = 0;          // kFaceWarp^2 |N|^2
+    double thisScaled = 0;     // scale |span|^2 of this cell (span: 4x its thickness)
+    double acrossScaled = -1;  // the same for the cell across, once needed
+    std::size_t neighbour = HexCell::kNone;
+  };
+  std::array<FaceBow, 6> faceBows;
+  const auto faceBow = [&](int f) -> FaceBow& {
+    FaceBow& b = faceBows[static_cast<std::size_t>(f)];
+    if (b.known) return b;
+    b.known = true;
+    if (grid.cellShape[cell] & CornerPointGrid::kPinchedCell) return b;
+    const int axis = f >> 1, side = f & 1, bit = 1 << axis;
+    const int p = 1 << ((axis + 1) % 3), q = 1 << ((axis + 2) % 3), base = side << axis;
+    const Vec3d& c00 = hex.points[static_cast<std::size_t>(base)];
+    const Vec3d& c10 = hex.points[static_cast<std::size_t>(base | p)];
+    const Vec3d& c01 = hex.points[static_cast<std::size_t>(base | q)];
+    const Vec3d& c11 = hex.points[static_cast<std::size_t>(base | p | q)];
+    const Vec3d normal = Vec3d(c10 - c00 + c11 - c01).cross(Vec3d(c01 - c00 + c11 - c10));
+    const double twist = Vec3d(c00 + c11 - c10 - c01).dot(normal);
+    b.twist2 = twist * twist;
+    b.scale = kFaceWarp * kFaceWarp * normal.squaredNorm();
+    b.thisScaled = b.scale * spanAcross(hex.points, axis).squaredNorm();
+    // A segment's chord runs at most the patch centre's bow off it (|du dv| <= 1): on a face
+    // that bows less than the fraction of this cell's thickness, no segment gets a point.
+    if (!(b.twist2 > b.thisScaled)) return b;
+    b.neighbour = hex.neighbour(axis, side);
+    if (b.neighbour != HexCell::kNone) {
+      if (grid.cellShape[b.neighbour] & CornerPointGrid::kPinchedCell) return b;
+      const auto& across = grid.pointIds[b.neighbour];
+      for (const int c : {base, base | p, base | q, base | p | q})
+        if (across[static_cast<std::size_t>(c ^ bit)] != ids[static_cast<std::size_t>(c)]) return b;
+    }
+    b.candidate = true;
+    return b;
+  };
+  // The face parameters (u along the face's first other axis, v along its second) of the
+  // crossing on `edge`, an edge of face f: the same values in both cells of the face.
+  const auto faceParameters = [&](int edge, int f) {
+    const int axis = f >> 1, p = (axis + 1) % 3, q = (axis + 2) % 3;
+    const EdgeCrossing& crossing = crossingOf[static_cast<std::size_t>(edge)];
+    const int a = edgeCorners[edge][0], b = edgeCorners[edge][1];
+    const int along = (a ^ b) == (1 << p) ? p : q;  // the edge's axis in the face
+    const int low = (a >> along) & 1 ? b : a;       // its end at the axis' low side
+    const double t = ids[static_cast<std::size_t>(low)] == crossing.from ? crossing.t : 1 - crossing.t;
+    return std::array<double, 2>{along == p ? t : static_cast<double>((low >> p) & 1),
+                                 along == q ? t : static_cast<double>((low >> q) & 1)};
+  };
+  // Whether the segment from crossing `edge` to crossing next[edge] gets a face point.
+  const auto twistedSegment = [&](int edge) {
+    const int f = linkFace[edge];
+    FaceBow& b = faceBow(f);
+    if (!b.candidate) return false;
+    const std::array<double, 2> from = faceParameters(edge, f), to = faceParameters(next[edge], f);
+    const double area = (from[0] - to[0]) * (from[1] - to[1]);
+    const double off2 = b.twist2 * area * area;
+    if (!(off2 > b.thisScaled)) return false;
+    if (b.neighbour == HexCell::kNone) return true;
+    if (b.acrossScaled < 0) {
+      // The neighbour's points: this face's, and its far face's read from the grid (the
+      // same values its own contouring holds, so both cells decide alike).
+      const int axis = f >> 1, side = f & 1, bit = 1 << axis;
+      const auto& across = grid.pointIds[b.neighbour];
+      std::array<Vec3d, 8> acrossPoints;
+      for (int c = 0; c < 8; ++c)
+        acrossPoints[static_cast<std::size_t>(c)] = ((c >> axis) & 1) != side
+                                                        ? hex.points[static_cast<std::size_t>(c ^ bit)]
+                                                        : grid.points[across[static_cast<std::size_t>(c)]];
+      b.acrossScaled = b.scale * spanAcross(acrossPoints, axis).squaredNorm();
+    }
+    return off2 > b.acrossScaled;
   };
   const auto edgeKeyOf = [&](int edge) {
     const std::uint32_t a = ids[static_cast<std::size_t>(edgeCorners[edge][0])];
@@ -430,16 +469,8 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
     const std::uint64_t key = kFaceKey | (static_cast<std::uint64_t>(neighbourOwns ? neighbour : cell) << 4) |
                               (static_cast<std::uint64_t>(neighbourOwns ? f ^ 1 : f) << 1) | segment;
     const int p = (axis + 1) % 3, q = (axis + 2) % 3, base = side << axis;
-    double u = 0, v = 0;
-    for (const int e : {edge, next[edge]}) {
-      const EdgeCrossing& crossing = crossingOf[static_cast<std::size_t>(e)];
-      const int a = edgeCorners[e][0], b = edgeCorners[e][1];
-      const int along = (a ^ b) == (1 << p) ? p : q;  // the edge's axis in the face
-      const int low = (a >> along) & 1 ? b : a;       // its end at the axis' low side
-      const double t = ids[static_cast<std::size_t>(low)] == crossing.from ? crossing.t : 1 - crossing.t;
-      u += 0.5 * (along == p ? t : static_cast<double>((low >> p) & 1));
-      v += 0.5 * (along == q ? t : static_cast<double>((low >> q) & 1));
-    }
+    const std::array<double, 2> from = faceParameters(edge, f), to = faceParameters(next[edge], f);
+    const double u = 0.5 * from[0] + 0.5 * to[0], v = 0.5 * from[1] + 0.5 * to[1];
     const Vec3d& c00 = hex.points[static_cast<std::size_t>(base)];
     const Vec3d& c10 = hex.points[static_cast<std::size_t>(base | 1 << p)];
     const Vec3d& c01 = hex.points[static_cast<std::size_t>(base | 1 << q)];
@@ -476,7 +507,7 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
       edgeOf[n] = edge;
       loop[n] = vertexOf[edge];
       faces[n++] = faceMask(edge);
-      if (warpedFace(linkFace[edge])) {
+      if (twistedSegment(edge)) {
         edgeOf[n] = edge;
         isFacePoint[n] = true;
         loop[n] = facePoint(edge);

@@ -17,8 +17,8 @@
 /// world space whatever the grid's handedness. Where a face lies on a fault (the cell
 /// across holds other points there), the sheets of both sides end on the same pillar
 /// plane and would cross: the vertices on such faces move a hundredth of the way to their
-/// own cells' centres. Where a face's bilinear patch bows far off its chords (thin,
-/// twisted layers), each segment on it runs through a face point on the patch, which both
+/// own cells' centres. Where a segment's chord would run far off its face's bilinear
+/// patch (thin, twisted layers), it runs through a face point on the patch, which both
 /// cells share (hex_cell_contour.cc, kFaceWarp). Cells run in parallel (TBB);
 /// the output does not depend on the thread count.
 #pragma once
