@@ -33,12 +33,12 @@ void classifyWith(const float* __restrict values, std::size_t n, std::uint8_t* _
 
 void MaskRule::classify(std::span<const float> values, std::uint8_t* out) const {
   // The same answers as inside() (NaN is never inside).
-  if (!labels.empty()) {
-    for (std::size_t i = 0; i < values.size(); ++i) out[i] = inside(values[i]) ? 1 : 0;
-    return;
-  }
   const float* in = values.data();
   const std::size_t n = values.size();
+  if (!labels.empty()) {
+    classifyWith(in, n, out, [this](float v) { return inside(v); });
+    return;
+  }
   switch (test) {
     case MaskTest::Above:
       classifyWith(in, n, out, [t = floatBelow(threshold)](float v) { return v > t; });
