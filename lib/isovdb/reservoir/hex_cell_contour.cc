@@ -335,10 +335,13 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
     const EdgeCrossing crossing = crossEdge(grid, field, options.iso, ids[a], ids[b]);
     crossingOf[edge] = crossing;
     out.keys.push_back(crossing.key);
-    // Off fault faces (onFault); not those held a little way off a corner at the iso-value,
-    // whose neighbours on the corner's other edges lie as close (Emerald FACIES 0.5: moved,
-    // they met them: 8 zero-area triangles).
-    if (!crossing.nearCorner) {
+    // Off fault faces (onFault); not those within kMaxCornerOffset of a corner, whose
+    // neighbours on the corner's other edges lie as close: moved, they met them (Emerald
+    // FACIES 0.5, crossings held off a corner at the iso-value: 8 zero-area triangles), or
+    // crossed the line to the loop's far vertex and folded the fan (Reek PORO 0.1 and 0.18:
+    // crossings 0.3 % of their edges from a corner moved 1.5 m; over kFaceWarp's sweep,
+    // 8 -> 6 pairs away from pinched cells, the same triangles).
+    if (!crossing.nearCorner && std::min(crossing.t, 1 - crossing.t) >= kMaxCornerOffset) {
       Vec3d side = Vec3d::Zero();
       for (int axis = 0; axis < 3; ++axis)  // the edge's two faces, across the other two axes
         if (!(((a ^ b) >> axis) & 1) && onFault(grid, hex, a, b, axis)) side += intoCell(axis, (a >> axis) & 1);
