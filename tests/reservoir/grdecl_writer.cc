@@ -10,7 +10,12 @@ namespace isovdb::test {
 Eigen::Vector3d boxNode(const BoxGrid& g, int i, int j, int k, int columnI) {
   const double x = g.mirrorX ? g.origin.x() - i * g.cell : g.origin.x() + i * g.cell;
   const double shift = (columnI >= g.nx / 2 ? g.faultThrow : 0.0) + (g.pillarShift ? g.pillarShift(i, j) : 0.0);
-  return {x, g.origin.y() + j * g.cell, g.origin.z() + k * (g.layer > 0 ? g.layer : g.cell) + shift};
+  double depth = k * (g.layer > 0 ? g.layer : g.cell);
+  if (g.thickness) {
+    depth = 0;
+    for (int layer = 0; layer < k; ++layer) depth += g.thickness(i, j, layer);
+  }
+  return {x, g.origin.y() + j * g.cell, g.origin.z() + depth + shift};
 }
 
 std::string boxGrdecl(const BoxGrid& g, const std::string& name) {

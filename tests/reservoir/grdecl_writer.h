@@ -23,6 +23,8 @@ struct BoxGrid {
   std::function<double(const Eigen::Vector3d&)> field = {};  ///< property at the cell centres
   std::function<bool(int, int, int)> active = {};            ///< empty: all active
   std::function<double(int, int)> pillarShift = {};          ///< z added to every node of pillar (i, j): twisted faces
+  /// Thickness of layer k at pillar (i, j) (empty: `layer`, or `cell`); 0 where the layer pinches out.
+  std::function<double(int, int, int)> thickness = {};
 };
 
 /// World position of node (i, j, k) of the cell column i (fault throw applied by column).

@@ -44,6 +44,58 @@ double cornerJacobian(const std::array<Vec3d, 8>& p, int c) {
   return j.determinant();
 }
 
+/// Where a cell has zero thickness at a pillar (a pinch-out), its top and bottom corners
+/// there coincide, but they lie on nodes of two layers and were grouped apart (points are
+/// grouped around each node): one point in the cells above and another below, each with its
+/// own average, and a layer of zero thickness everywhere was two sheets in one place.
+/// Such points become one (the lowest id), their cells' lists joined, and the ids are
+/// numbered again in order. Nothing changes (and nothing is copied) where no pillar pinches.
+void mergePinchedPillarPoints(CornerPointGrid& grid, double tolerance) {
+  const std::size_t cells = grid.cellCount(), points = grid.points.size();
+  std::vector<std::uint32_t> parent;
+  const auto root = [&](std::uint32_t p) {
+    while (parent[p] != p) p = parent[p] = parent[parent[p]];
+    return p;
+  };
+  for (std::size_t cell = 0; cell < cells; ++cell)
+    for (int c = 0; c < 4; ++c) {
+      const std::uint32_t a = grid.pointIds[cell][static_cast<std::size_t>(c)];
+      const std::uint32_t b = grid.pointIds[cell][static_cast<std::size_t>(c | 4)];
+      if (a == b || (grid.points[a] - grid.points[b]).norm() > tolerance) continue;
+      if (parent.empty()) {
+        parent.resize(points);
+        for (std::uint32_t p = 0; p < points; ++p) parent[p] = p;
+      }
+      const std::uint32_t ra = root(a), rb = root(b);
+      parent[std::max(ra, rb)] = std::min(ra, rb);
+    }
+  if (parent.empty()) return;
+  std::vector<std::uint32_t> newId(points);
+  std::uint32_t merged = 0;
+  for (std::uint32_t p = 0; p < points; ++p) newId[p] = root(p) == p ? merged++ : newId[root(p)];
+  std::vector<Vec3d> mergedPoints(merged);
+  std::vector<std::vector<std::uint32_t>> cellsOf(merged);
+  for (std::uint32_t p = 0; p < points; ++p) {
+    if (root(p) == p) mergedPoints[newId[p]] = grid.points[p];
+    const auto shared = grid.cellsOfPoint(p);
+    cellsOf[newId[p]].insert(cellsOf[newId[p]].end(), shared.begin(), shared.end());
+  }
+  std::vector<std::uint32_t> start{0}, joined;
+  start.reserve(merged + std::size_t{1});
+  joined.reserve(grid.pointCells.size());
+  for (auto& list : cellsOf) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    joined.insert(joined.end(), list.begin(), list.end());
+    start.push_back(static_cast<std::uint32_t>(joined.size()));
+  }
+  for (auto& ids : grid.pointIds)
+    for (auto& id : ids) id = newId[id];
+  grid.points = std::move(mergedPoints);
+  grid.pointCellStart = std::move(start);
+  grid.pointCells = std::move(joined);
+}
+
 }  // namespace
 
 CornerPointGrid buildCornerPointGrid(const GrdeclDeck& deck, const GridOptions& options) {
@@ -155,6 +207,7 @@ CornerPointGrid buildCornerPointGrid(const GrdeclDeck& deck, const GridOptions& 
       grid.pointCellStart.push_back(grid.pointCellStart.back() + shared);
     layer = NodeLayer{};  // its memory serves the next layer's copy
   }
+  if (options.joinPinchOuts) mergePinchedPillarPoints(grid, tolerance);
 
   // Orientation and inverted cells.
   assignHuge(grid.cellShape, cells, std::uint8_t{0});

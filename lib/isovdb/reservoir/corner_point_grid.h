@@ -7,8 +7,10 @@
 ///
 /// Corner c of a cell is (ix, iy, iz) = (c & 1, (c >> 1) & 1, (c >> 2) & 1) in
 /// the cell's trilinear parameter space. Corners of cells around the same grid
-/// node that coincide (within a tolerance) form one geometric *point*; the
-/// point ids let marching cubes weld vertices exactly where cells touch.
+/// node that coincide (within a tolerance) form one geometric *point*, and so do a
+/// cell's top and bottom corners on a pillar where it has no thickness (a pinch-out:
+/// the nodes of two layers); the point ids let marching cubes weld vertices exactly
+/// where cells touch.
 #pragma once
 
 #include <Eigen/Core>
@@ -56,6 +58,10 @@ struct CornerPointGrid {
 struct GridOptions {
   /// Corners closer than this fraction of the bounding-box diagonal are one point.
   double relativeTolerance = 1e-7;
+  /// A cell's top and bottom corners that coincide on a pillar (a pinch-out) are one point.
+  /// Off: each layer of nodes keeps its own points, as grids were built before (a test of
+  /// the twin cancellation that such points caused on Reek).
+  bool joinPinchOuts = true;
 };
 
 /// Builds the grid of a deck. @throw InputError naming the file when COORD,

@@ -407,7 +407,9 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
     if (!(b.twist2 > b.thisScaled)) return b;
     b.neighbour = hex.neighbour(axis, side);
     if (b.neighbour != HexCell::kNone) {
-      if (grid.cellShape[b.neighbour] & CornerPointGrid::kPinchedCell) return b;
+      // A layer of zero thickness between (collapsed) makes no surface: the cells on its far
+      // side would key the face point from another face, two vertices in one place.
+      if (grid.cellShape[b.neighbour] & CornerPointGrid::kPinchedCell || collapsed(grid, b.neighbour)) return b;
       const auto& across = grid.pointIds[b.neighbour];
       for (const int c : {base, base | p, base | q, base | p | q})
         if (across[static_cast<std::size_t>(c ^ bit)] != ids[static_cast<std::size_t>(c)]) return b;
