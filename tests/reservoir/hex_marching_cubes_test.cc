@@ -288,6 +288,29 @@ TEST(HexMarchingCubes, LayersThatPinchOutShareTheirPoints) {
   }
 }
 
+TEST(HexMarchingCubes, CellsThatMeetAtAnEdgeOnlyKeepTheirOwnVertices) {
+  // Active columns in a checkerboard: each column's sheet is a square whose corners lie on
+  // the vertical edges it shares with its diagonal neighbours only (the cells beside are
+  // inactive). One vertex per edge joined the squares at non-manifold vertices (Emerald,
+  // whose hole and faults leave such edges, had two to three at every iso-value of a smooth
+  // property). Each cell's crossing there is now its own, moved into the cell.
+  test::BoxGrid box{.nx = 4, .ny = 4, .nz = 3};
+  box.active = [](int i, int j, int) { return (i + j) % 2 == 0; };
+  box.field = [](const Vector3d& p) { return p.z() + 0.05 * p.x(); };
+  const Built b = contourBox(box, 1.6);
+  const mesh::MeshReport report = mesh::validateMesh(b.result.mesh);
+  EXPECT_EQ(report.nonManifoldVertices, 0);
+  EXPECT_EQ(report.nonManifoldEdges, 0);
+  EXPECT_EQ(report.selfIntersectingPairs, 0) << "the squares touch";
+  EXPECT_EQ(report.components, 8) << "one square per active column";
+  for (const auto& c : report.componentReports) EXPECT_EQ(c.eulerCharacteristic, 1);
+  // In a grid whose cells all share their edges, no crossing is lone: the same mesh.
+  box.active = {};
+  const Built full = contourBox(box, 1.6);
+  EXPECT_EQ(mesh::validateMesh(full.result.mesh).components, 1);
+  EXPECT_EQ(full.result.mesh.vertexCount(), 25u) << "one vertex per vertical edge of the 4 x 4 columns";
+}
+
 TEST(HexMarchingCubes, OutputIsTheSameWhateverTheThreadCount) {
   // 40 x 40 x 12 cells: several blocks of cells, each thread appending to its own arrays,
   // welded across the blocks' borders and a fault; ambiguous faces on the way.

@@ -121,17 +121,46 @@ bool collapsed(const CornerPointGrid& grid, std::size_t cell) {
   return false;
 }
 
-/// Whether the cell's edge between corners `a` and `b` lies on a fault across the face
-/// that holds it on `axis` (the face on the corners' side): the neighbour across is usable
-/// but holds other points there (a throw, or layers that do not meet). The sheets of both
-/// sides end on the same pillar plane there and crossed each other (Reek: 19 of its 23
-/// self-intersecting pairs); such crossings are moved off the face. An edge the neighbour
-/// shares stays: its vertex is the neighbour's too.
-bool onFault(const CornerPointGrid& grid, const HexCell& cell, int a, int b, int axis) {
-  const std::size_t neighbour = cell.neighbour(axis, (a >> axis) & 1);
-  if (neighbour == HexCell::kNone) return false;
-  const auto& across = grid.pointIds[neighbour];
-  return across[a ^ (1 << axis)] != cell.id(a) || across[b ^ (1 << axis)] != cell.id(b);
+/// How the cells around the cell's edge between corners `a` and `b` hold it.
+/// - faultAxes (a bit per axis): the usable cell beside it across the face that holds the
+///   edge on that axis holds other points there (a throw, or layers that do not meet). The
+///   sheets of both sides end on the same pillar plane there and crossed each other (Reek:
+///   19 of its 23 self-intersecting pairs); such crossings are moved off the face. An edge
+///   the neighbour shares stays: its vertex is the neighbour's too.
+/// - lone: the usable cell diagonally across the edge holds it (the same two points), but
+///   neither cell beside it does (kLoneEdgeKey).
+struct EdgeSharing {
+  int faultAxes = 0;
+  bool lone = false;
+};
+
+EdgeSharing edgeSharing(const CornerPointGrid& grid, const CornerField& field, const HexCell& cell, int a, int b) {
+  const int edgeAxis = (a ^ b) == 1 ? 0 : (a ^ b) == 2 ? 1 : 2;
+  const auto holds = [&](std::size_t other, int flip) {
+    const auto& across = grid.pointIds[other];
+    return across[static_cast<std::size_t>(a ^ flip)] == cell.id(a) &&
+           across[static_cast<std::size_t>(b ^ flip)] == cell.id(b);
+  };
+  EdgeSharing sharing;
+  bool heldBeside = false;
+  for (const int axis : {(edgeAxis + 1) % 3, (edgeAxis + 2) % 3})
+    if (const std::size_t beside = cell.neighbour(axis, (a >> axis) & 1); beside != HexCell::kNone) {
+      if (holds(beside, 1 << axis))
+        heldBeside = true;
+      else
+        sharing.faultAxes |= 1 << axis;
+    }
+  if (heldBeside) return sharing;
+  std::array<int, 3> at = cell.ijk;
+  for (const int axis : {(edgeAxis + 1) % 3, (edgeAxis + 2) % 3}) {
+    int& index = at[static_cast<std::size_t>(axis)];
+    index += (a >> axis) & 1 ? 1 : -1;
+    if (index < 0 || index >= grid.dims[static_cast<std::size_t>(axis)]) return sharing;
+  }
+  const std::size_t diagonal = grid.cellIndex(at[0], at[1], at[2]);
+  const int flip = 7 & ~(1 << edgeAxis);
+  sharing.lone = field.usable[diagonal] && holds(diagonal, flip);
+  return sharing;
 }
 
 /// How deep points lie in a cell: over the three axes, the least of a point's distances to
@@ -253,7 +282,7 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
   growHuge(out.keys, 28);
   if (options.normals) growHuge(out.gradients, 28);
   growHuge(out.centres, 4);
-  growHuge(out.facePoints, 12);
+  growHuge(out.placedPoints, 24);
   growHuge(out.triangles, 24);
 
   // Segments: next[start edge] = end edge, from an above->below crossing to a below->above one.
@@ -332,10 +361,16 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
     if (vertexOf[edge] >= 0) return vertexOf[edge];
     int a = edgeCorners[edge][0], b = edgeCorners[edge][1];
     if (ids[a] > ids[b]) std::swap(a, b);  // crossEdge's order
-    const EdgeCrossing crossing = crossEdge(grid, field, options.iso, ids[a], ids[b]);
+    EdgeCrossing crossing = crossEdge(grid, field, options.iso, ids[a], ids[b]);
+    const EdgeSharing sharing = edgeSharing(grid, field, hex, a, b);
+    const bool lone = sharing.lone && !(crossing.key & kCornerKey);
+    if (lone) {
+      crossing.key = kLoneEdgeKey | (static_cast<std::uint64_t>(cell) << 4) | static_cast<std::uint64_t>(edge);
+      out.placedPoints.emplace_back(crossing.key, crossingPosition(grid, crossing));
+    }
     crossingOf[edge] = crossing;
     out.keys.push_back(crossing.key);
-    // Off fault faces (onFault); not those within kMaxCornerOffset of a corner, whose
+    // Off fault faces (edgeSharing); not those within kMaxCornerOffset of a corner, whose
     // neighbours on the corner's other edges lie as close: moved, they met them (Emerald
     // FACIES 0.5, crossings held off a corner at the iso-value: 8 zero-area triangles), or
     // crossed the line to the loop's far vertex and folded the fan (Reek PORO 0.1 and 0.18:
@@ -344,7 +379,8 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
     if (!crossing.nearCorner && std::min(crossing.t, 1 - crossing.t) >= kMaxCornerOffset) {
       Vec3d side = Vec3d::Zero();
       for (int axis = 0; axis < 3; ++axis)  // the edge's two faces, across the other two axes
-        if (!(((a ^ b) >> axis) & 1) && onFault(grid, hex, a, b, axis)) side += intoCell(axis, (a >> axis) & 1);
+        if (!(((a ^ b) >> axis) & 1) && (lone || (sharing.faultAxes >> axis & 1)))
+          side += intoCell(axis, (a >> axis) & 1);
       if (side != Vec3d::Zero()) {
         growHuge(out.faultSides, 1);
         out.faultSides.emplace_back(crossing.key, side);
@@ -375,7 +411,7 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
   // exceeds kFaceWarp times the thickness of both cells of the face (this cell's first, so
   // that the neighbour's points are read only for twisted faces). Both cells see the same
   // points, parameters and thicknesses, so they decide alike. A fault face (the cell
-  // across holds other points) keeps its own scheme (onFault); a pinched cell's faces meet,
+  // across holds other points) keeps its own scheme (edgeSharing); a pinched cell's faces meet,
   // and their face points would be different vertices at one place.
   struct FaceBow {
     bool known = false, candidate = false;
@@ -481,7 +517,7 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
     const Vec3d& c01 = hex.points[static_cast<std::size_t>(base | 1 << q)];
     const Vec3d& c11 = hex.points[static_cast<std::size_t>(base | 1 << p | 1 << q)];
     const Vec3d at = c00 + u * (c10 - c00) + v * (Vec3d(c01 - c00) + u * Vec3d(c11 - c10 - c01 + c00));
-    out.facePoints.emplace_back(key, at.cast<float>());
+    out.placedPoints.emplace_back(key, at.cast<float>());
     out.keys.push_back(key);
     if (options.normals)
       out.gradients.push_back(0.5 * (out.gradients[cellFirst + static_cast<std::size_t>(vertexOf[edge])] +
@@ -516,7 +552,7 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
         edgeOf[n] = edge;
         isFacePoint[n] = true;
         loop[n] = facePoint(edge);
-        facePosition[n] = out.facePoints.back().second;
+        facePosition[n] = out.placedPoints.back().second;
         faces[n++] = 1 << linkFace[edge];
       }
     }

@@ -31,15 +31,17 @@ struct ThreadOutput {
   std::vector<std::pair<std::uint64_t, Eigen::Vector3f>> centres;  // centre vertices' positions
   std::vector<std::array<std::uint32_t, 3>> triangles;             // into keys, from its block's first
   std::vector<std::uint32_t> triangleCells;                        // beside triangles (HexContourOptions)
-  std::vector<std::pair<std::uint64_t, Vec3d>> faultSides;  // crossings on fault faces (onFault), each with its side
-  std::vector<std::pair<std::uint64_t, Eigen::Vector3f>> facePoints;  // face points' positions (kFaceKey)
+  std::vector<std::pair<std::uint64_t, Vec3d>>
+      faultSides;  // crossings moved off fault faces (edgeSharing), with their sides
+  // Positions placed by their cell: face points (kFaceKey) and lone crossings (kLoneEdgeKey)
+  std::vector<std::pair<std::uint64_t, Eigen::Vector3f>> placedPoints;
 };
 
 /// What a block of consecutive cells made: where it lies in its thread's arrays.
 struct BlockOutput {
   const ThreadOutput* thread = nullptr;
   std::size_t firstKey = 0, keyCount = 0, firstCentre = 0, centreCount = 0, firstTriangle = 0, triangleCount = 0,
-              firstFaultSide = 0, faultSideCount = 0, firstFacePoint = 0, facePointCount = 0;
+              firstFaultSide = 0, faultSideCount = 0, firstPlacedPoint = 0, placedPointCount = 0;
   std::int64_t cutCells = 0;
   int ambiguousFaces = 0;
 
@@ -59,8 +61,8 @@ struct BlockOutput {
   std::span<const std::pair<std::uint64_t, Vec3d>> faultSides() const {
     return {thread->faultSides.data() + firstFaultSide, faultSideCount};
   }
-  std::span<const std::pair<std::uint64_t, Eigen::Vector3f>> facePoints() const {
-    return {thread->facePoints.data() + firstFacePoint, facePointCount};
+  std::span<const std::pair<std::uint64_t, Eigen::Vector3f>> placedPoints() const {
+    return {thread->placedPoints.data() + firstPlacedPoint, placedPointCount};
   }
 };
 
@@ -71,8 +73,13 @@ constexpr std::uint64_t kCentreKey = std::uint64_t{1} << 63;  ///< a loop's cent
 /// A point on a twisted face between two of its crossings (contourCell), made alike by
 /// both cells that share the face: (the lower cell << 4) | (its face << 1) | segment.
 constexpr std::uint64_t kFaceKey = std::uint64_t{1} << 61;
-/// The vertices that are not edge crossings.
-constexpr std::uint64_t kSpecialKeys = kCornerKey | kCentreKey | kFaceKey;
+/// A crossing on an edge that the cell diagonally across it holds too, but neither cell
+/// beside it (a fault, or unusable cells): the two cells' sheets met only there, at a
+/// non-manifold vertex, so each cell makes its own, (the cell << 4) | its edge, moved into
+/// the cell like a crossing on a fault face.
+constexpr std::uint64_t kLoneEdgeKey = std::uint64_t{1} << 60;
+/// The vertices that are not keyed by their edge's points.
+constexpr std::uint64_t kSpecialKeys = kCornerKey | kCentreKey | kFaceKey | kLoneEdgeKey;
 
 /// Where the surface crosses the edge between points `a` and `b`: its weld key and its
 /// place `t` along the edge from the lower id. The same in every cell that holds the edge.

@@ -25,6 +25,7 @@ using hex::BlockOutput;
 using hex::kCentreKey;
 using hex::kCornerKey;
 using hex::kFaceKey;
+using hex::kLoneEdgeKey;
 using hex::kSpecialKeys;
 using hex::ThreadOutput;
 
@@ -187,7 +188,7 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
         made.firstCentre = out.centres.size();
         made.firstTriangle = out.triangles.size();
         made.firstFaultSide = out.faultSides.size();
-        made.firstFacePoint = out.facePoints.size();
+        made.firstPlacedPoint = out.placedPoints.size();
         const std::size_t first = block * kBlockCells, end = std::min(cells, first + kBlockCells);
         // (i, j, k) stepped along with the cell index: no division per cell.
         std::array<int, 3> ijk{static_cast<int>(first % nx), static_cast<int>(first / nx % ny),
@@ -206,7 +207,7 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
         made.centreCount = out.centres.size() - made.firstCentre;
         made.triangleCount = out.triangles.size() - made.firstTriangle;
         made.faultSideCount = out.faultSides.size() - made.firstFaultSide;
-        made.facePointCount = out.facePoints.size() - made.firstFacePoint;
+        made.placedPointCount = out.placedPoints.size() - made.firstPlacedPoint;
       }
     });
   }
@@ -254,16 +255,18 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
     result.faultVertices = static_cast<std::int64_t>(kept);
   }
 
-  // Face points: both cells of a face computed the same position; one of each key is kept.
-  std::vector<std::pair<std::uint64_t, Eigen::Vector3f>> facePoints;
+  // Placed points: both cells of a face computed a face point's position alike; one of each
+  // key is kept (a lone crossing has one cell).
+  std::vector<std::pair<std::uint64_t, Eigen::Vector3f>> placedPoints;
   for (const BlockOutput& made : outputs)
-    facePoints.insert(facePoints.end(), made.facePoints().begin(), made.facePoints().end());
-  std::stable_sort(facePoints.begin(), facePoints.end(),
+    placedPoints.insert(placedPoints.end(), made.placedPoints().begin(), made.placedPoints().end());
+  std::stable_sort(placedPoints.begin(), placedPoints.end(),
                    [](const auto& x, const auto& y) { return x.first < y.first; });
-  facePoints.erase(std::unique(facePoints.begin(), facePoints.end(),
-                               [](const auto& x, const auto& y) { return x.first == y.first; }),
-                   facePoints.end());
-  result.facePoints = static_cast<std::int64_t>(facePoints.size());
+  placedPoints.erase(std::unique(placedPoints.begin(), placedPoints.end(),
+                                 [](const auto& x, const auto& y) { return x.first == y.first; }),
+                     placedPoints.end());
+  result.facePoints = std::count_if(placedPoints.begin(), placedPoints.end(),
+                                    [](const auto& point) { return (point.first & kFaceKey) != 0; });
 
   mesh::Mesh& m = result.mesh;
   resizeHuge(m.positions, vertices);
@@ -281,11 +284,7 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
   tbb::parallel_for(std::size_t{0}, vertices, [&](std::size_t v) {
     const std::uint64_t key = records[runStart[v]].key;
     Eigen::Vector3f position;
-    if (key & kFaceKey) {
-      position = std::lower_bound(facePoints.begin(), facePoints.end(), key, [](const auto& point, std::uint64_t k) {
-                   return point.first < k;
-                 })->second;
-    } else if (key & kCentreKey) {
+    if (key & kCentreKey) {
       const auto centres = outputs[((key & ~kCentreKey) >> 4) / kBlockCells].centres();
       position = std::lower_bound(centres.begin(), centres.end(), key, [](const auto& centre, std::uint64_t k) {
                    return centre.first < k;
@@ -293,9 +292,17 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
     } else if (key & kCornerKey) {
       position = grid.points[key & 0xffffffffU].cast<float>();
     } else {
-      const hex::EdgeCrossing crossing = hex::crossEdge(grid, field, options.iso, static_cast<std::uint32_t>(key >> 32),
-                                                        static_cast<std::uint32_t>(key & 0xffffffffU));
-      position = hex::crossingPosition(grid, crossing);
+      if (key & (kFaceKey | kLoneEdgeKey)) {
+        position =
+            std::lower_bound(placedPoints.begin(), placedPoints.end(), key, [](const auto& point, std::uint64_t k) {
+              return point.first < k;
+            })->second;
+      } else {
+        const hex::EdgeCrossing crossing =
+            hex::crossEdge(grid, field, options.iso, static_cast<std::uint32_t>(key >> 32),
+                           static_cast<std::uint32_t>(key & 0xffffffffU));
+        position = hex::crossingPosition(grid, crossing);
+      }
       const auto fault = std::lower_bound(faultSides.begin(), faultSides.end(), key,
                                           [](const auto& side, std::uint64_t k) { return side.first < k; });
       if (fault != faultSides.end() && fault->first == key) position = offFault(position, fault->second);
