@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 #include "isovdb/errors.h"
 #include "isovdb/huge_pages.h"
@@ -74,21 +75,33 @@ void mergePinchedPillarPoints(CornerPointGrid& grid, double tolerance) {
   std::uint32_t merged = 0;
   for (std::uint32_t p = 0; p < points; ++p) newId[p] = root(p) == p ? merged++ : newId[root(p)];
   std::vector<Vec3d> mergedPoints(merged);
-  std::vector<std::vector<std::uint32_t>> cellsOf(merged);
+  // The joined lists, flat: each merged point's range counted, filled in id order, then
+  // (where points were joined) sorted and stripped of repeats (a cell holds both points it
+  // joins), in place.
+  std::vector<std::uint32_t> start(merged + std::size_t{1}, 0), joined(grid.pointCells.size());
   for (std::uint32_t p = 0; p < points; ++p) {
     if (root(p) == p) mergedPoints[newId[p]] = grid.points[p];
-    const auto shared = grid.cellsOfPoint(p);
-    cellsOf[newId[p]].insert(cellsOf[newId[p]].end(), shared.begin(), shared.end());
+    start[newId[p] + std::size_t{1}] += static_cast<std::uint32_t>(grid.cellsOfPoint(p).size());
   }
-  std::vector<std::uint32_t> start{0}, joined;
-  start.reserve(merged + std::size_t{1});
-  joined.reserve(grid.pointCells.size());
-  for (auto& list : cellsOf) {
-    std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
-    joined.insert(joined.end(), list.begin(), list.end());
-    start.push_back(static_cast<std::uint32_t>(joined.size()));
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+  for (std::uint32_t p = 0; p < points; ++p)
+    for (const std::uint32_t cell : grid.cellsOfPoint(p)) joined[fill[newId[p]]++] = cell;
+  std::vector<std::uint8_t> joinsSeveral(merged, 0);
+  for (std::uint32_t p = 0; p < points; ++p) joinsSeveral[newId[p]] |= root(p) != p;
+  std::uint32_t kept = 0;
+  for (std::uint32_t q = 0; q < merged; ++q) {
+    const auto first = joined.begin() + start[q], last = joined.begin() + start[q + 1];
+    auto end = last;  // a point that joins none keeps its list as it was
+    if (joinsSeveral[q]) {
+      std::sort(first, last);
+      end = std::unique(first, last);
+    }
+    start[q] = kept;
+    kept = static_cast<std::uint32_t>(std::copy(first, end, joined.begin() + kept) - joined.begin());
   }
+  start[merged] = kept;
+  joined.resize(kept);
   for (auto& ids : grid.pointIds)
     for (auto& id : ids) id = newId[id];
   grid.points = std::move(mergedPoints);
