@@ -179,8 +179,10 @@ class PairTest {
   explicit PairTest(const Mesh& mesh) : mesh_(mesh) {}
 
   bool intersect(std::uint32_t ta, std::uint32_t tb) const {
-    const Triangle& a = mesh_.triangles[ta];
-    const Triangle& b = mesh_.triangles[tb];
+    return intersect(mesh_.triangles[ta], mesh_.triangles[tb]);
+  }
+
+  bool intersect(const Triangle& a, const Triangle& b) const {
     int sharedA[3], sharedB[3], shared = 0;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j)
@@ -436,6 +438,17 @@ std::vector<Item> collectItems(const Mesh& mesh, CopySets& copies) {
 }
 
 }  // namespace
+
+bool trianglesIntersect(const Mesh& mesh, const Triangle& a, const Triangle& b) {
+  const auto degenerate = [&](const Triangle& t) {
+    return t[0] == t[1] || t[1] == t[2] || t[0] == t[2] ||
+           CGAL::collinear(toPoint(mesh.positions[t[0]]), toPoint(mesh.positions[t[1]]), toPoint(mesh.positions[t[2]]));
+  };
+  if (degenerate(a) || degenerate(b)) return false;
+  const auto& p = mesh.positions;
+  if (!overlaps(boxOf(p[a[0]], p[a[1]], p[a[2]]), boxOf(p[b[0]], p[b[1]], p[b[2]]))) return false;
+  return PairTest(mesh).intersect(a, b);
+}
 
 std::int64_t countSelfIntersections(const Mesh& mesh, std::vector<Pair>* pairs) {
   if (mesh.triangles.size() >= kNone)

@@ -53,4 +53,10 @@ namespace isovdb::mesh {
 std::int64_t countSelfIntersections(const Mesh& mesh,
                                     std::vector<std::pair<std::uint32_t, std::uint32_t>>* pairs = nullptr);
 
+/// @brief Whether two triangles over `mesh.positions` intersect, by the rule above
+/// (shared vertex indices explain shared points). False when either is degenerate (a
+/// repeated index, or collinear points). For local tests of triangles a caller is about to
+/// place; countSelfIntersections is the whole-mesh count.
+bool trianglesIntersect(const Mesh& mesh, const Triangle& a, const Triangle& b);
+
 }  // namespace isovdb::mesh

@@ -5,12 +5,12 @@
 #include <tbb/global_control.h>
 
 #include "isovdb/errors.h"
-#include "isovdb/mesh/self_intersection.h"
 
 #include "isovdb/reservoir/corner_point_grid.h"
 #include "isovdb/reservoir/grdecl_reader.h"
 #include "isovdb/reservoir/hex_marching_cubes.h"
 #include "isovdb/reservoir/pn_tessellation.h"
+#include "isovdb/reservoir/untangle_loops.h"
 
 #include <algorithm>
 #include <iomanip>
@@ -44,10 +44,9 @@ std::vector<std::string> meshComments(const reservoir::GrdeclDeck& deck, const R
 
 /// The mesh's self-intersecting pairs by the cells that made their triangles: a pair with
 /// a triangle of an inverted cell counts there, else with one of a pinched cell there.
-Statistics::Json attributedSelfIntersections(const reservoir::HexContourResult& contour,
+Statistics::Json attributedSelfIntersections(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs,
+                                             const reservoir::HexContourResult& contour,
                                              const reservoir::CornerPointGrid& grid) {
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  mesh::countSelfIntersections(contour.mesh, &pairs);
   std::int64_t inverted = 0, pinched = 0;
   for (const auto& [a, b] : pairs) {
     const auto shape =
@@ -92,13 +91,22 @@ mesh::Mesh extractReservoir(const ReservoirOptions& options, Statistics& stats, 
   reservoir::HexContourResult contour;
   {
     Statistics::StageTimer timer(&stats, "marching_cubes");
-    contour = reservoir::contourHexahedra(
-        grid, field, {.iso = options.iso, .triangleCells = options.attributeSelfIntersections}, interrupter);
+    contour = reservoir::contourHexahedra(grid, field, {.iso = options.iso, .triangleCells = true}, interrupter);
   }
-  if (options.attributeSelfIntersections) {
-    Statistics::StageTimer timer(&stats, "self_intersections");
-    stats["reservoir"]["self_intersecting_pairs"] = attributedSelfIntersections(contour, grid);
+  reservoir::UntangleResult untangled;
+  {
+    Statistics::StageTimer timer(&stats, "untangle");
+    const ProgressStage progress(interrupter, "untangle loops");
+    progress.update(0, 1);
+    untangled = reservoir::untangleLoops(contour.mesh, contour.triangleCells);
+    stats["reservoir"]["untangle"] = {{"pairs_before", untangled.pairsBefore},
+                                      {"pairs_after", untangled.pairsAfter},
+                                      {"loops_refanned", untangled.loopsRefanned}};
+    progress.update(1, 1);
   }
+  if (options.attributeSelfIntersections)
+    stats["reservoir"]["self_intersecting_pairs"] =
+        attributedSelfIntersections(untangled.remainingPairs, contour, grid);
   auto& section = stats["reservoir"];
   section["dims"] = grid.dims;
   section["cells"] = grid.cellCount();

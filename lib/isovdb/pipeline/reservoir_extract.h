@@ -2,7 +2,8 @@
 // Copyright Contributors to the isovdb project.
 /// @file reservoir_extract.h
 /// @brief `isovdb reservoir`: GRDECL deck -> corner-point grid -> cell values
-/// averaged to corners -> Marching Cubes on hexahedra (+ optional PN tessellation).
+/// averaged to corners -> Marching Cubes on hexahedra -> loops untangled (+ optional PN
+/// tessellation).
 #pragma once
 
 #include <filesystem>
@@ -23,9 +24,9 @@ struct ReservoirOptions {
   reservoir::GrdeclLimits limits;  ///< guards against hostile sizes in the deck
   /// Worker threads (TBB); 0 = every core. The mesh does not depend on it.
   int threads = 0;
-  /// The Marching Cubes mesh's self-intersecting pairs found (exact predicates) and told
-  /// apart by the cells that made them: at folded (inverted) cells, at pinch-outs, elsewhere
-  /// (statistics reservoir.self_intersecting_pairs).
+  /// The self-intersecting pairs that remain after the loops were untangled (found by exact
+  /// predicates on every run: reservoir.untangle) told apart by the cells that made them: at
+  /// folded (inverted) cells, at pinch-outs, elsewhere (reservoir.self_intersecting_pairs).
   bool attributeSelfIntersections = false;
 };
 
