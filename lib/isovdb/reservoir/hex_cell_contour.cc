@@ -375,8 +375,10 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
     // FACIES 0.5, crossings held off a corner at the iso-value: 8 zero-area triangles), or
     // crossed the line to the loop's far vertex and folded the fan (Reek PORO 0.1 and 0.18:
     // crossings 0.3 % of their edges from a corner moved 1.5 m; over kFaceWarp's sweep,
-    // 8 -> 6 pairs away from pinched cells, the same triangles).
-    if (!crossing.nearCorner && std::min(crossing.t, 1 - crossing.t) >= kMaxCornerOffset) {
+    // 8 -> 6 pairs away from pinched cells, the same triangles). A lone crossing moves
+    // wherever it lies: unmoved, it would touch the diagonal cell's at one place (ResInsight's
+    // GRID.GRDECL with a smooth property at 0.28: one pair).
+    if (lone || (!crossing.nearCorner && std::min(crossing.t, 1 - crossing.t) >= kMaxCornerOffset)) {
       Vec3d side = Vec3d::Zero();
       for (int axis = 0; axis < 3; ++axis)  // the edge's two faces, across the other two axes
         if (!(((a ^ b) >> axis) & 1) && (lone || (sharing.faultAxes >> axis & 1)))
