@@ -141,11 +141,39 @@ TEST(CliReservoir, CheckAndPreviewAsInExtract) {
   EXPECT_EQ(
       pairs["at_inverted_cells"].get<int>() + pairs["at_pinched_cells"].get<int>() + pairs["elsewhere"].get<int>(),
       pairs["total"].get<int>());
-  // A mesh that fails the check is written, and the run exits 1: PN triangles bulge by more
-  // than Reek's 3 m layers over its 100 m triangles, and the curved sheets cross (docs/cli.md).
-  EXPECT_EQ(runCommand(reekRun + " --tessellate max=3 -o " + (dir / "t.ply").string(), &output), 1) << output;
+  // PN triangles bulge by more than Reek's 3 m layers over its 100 m triangles; where the
+  // curved sheets crossed (11,792 pairs here), their edges are kept straight.
+  EXPECT_EQ(runCommand(reekRun + " --tessellate max=3 -o " + (dir / "t.ply").string() + " --stats " +
+                           (dir / "t.json").string(),
+                       &output),
+            0)
+      << output;
+  const auto pn = nlohmann::json::parse(readFile(dir / "t.json"));
+  EXPECT_GT(pn["reservoir"]["tessellation_straightened"]["pairs_before"].get<int>(), 1000);
+  EXPECT_EQ(pn["reservoir"]["tessellation_straightened"]["pairs_after"], 0);
+  EXPECT_EQ(pn["check"]["self_intersecting_pairs"], 0);
+  // A mesh that fails the check is written, and the run exits 1: cells whose depths fold
+  // them over each other (random ZCORN; 10 of the 12 cells inverted) give a pair that no
+  // fan undoes, counted at inverted cells.
+  writeFile(dir / "folded.grdecl",
+            "SPECGRID\n 2 2 3 1 F /\nCOORD\n0 0 0 0 0 10\n10 0 0 10 0 10\n20 0 0 20 0 10\n0 10 0 0 10 10\n"
+            "10 10 0 10 10 10\n20 10 0 20 10 10\n0 20 0 0 20 10\n10 20 0 10 20 10\n20 20 0 20 20 10\n/\n"
+            "ZCORN\n0 0 3 -3 -3 -3 0 -3 0 -3 -3 3 3 -3 0 -3 5 -1 -1 2 -1 5 -1 2 -1 2 2 5 2 -1 2 2\n"
+            "-1 2 2 -1 -1 -1 2 5 5 2 5 5 2 2 2 2 4 1 4 7 4 7 4 1 1 7 4 4 4 7 7 1\n"
+            "1 4 4 4 7 7 1 1 4 7 1 1 4 7 4 7 6 3 9 6 6 3 9 3 6 6 6 6 9 9 9 3\n/\n"
+            "PORO\n2 7 6 8 4 2 6 8 4 6 5 6 /\n");
+  EXPECT_EQ(runCommand(cliPath().string() + " -q reservoir " + (dir / "folded.grdecl").string() +
+                           " --property PORO --iso 4.5 --check -o " + (dir / "f.ply").string() + " --stats " +
+                           (dir / "f.json").string(),
+                       &output),
+            1)
+      << output;
   EXPECT_NE(output.find("passed: NO"), std::string::npos) << output;
-  EXPECT_TRUE(std::filesystem::exists(dir / "t.ply"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "f.ply"));
+  const auto folded = nlohmann::json::parse(readFile(dir / "f.json"));
+  EXPECT_GT(folded["reservoir"]["inverted_cells"].get<int>(), 0);
+  EXPECT_GT(folded["reservoir"]["self_intersecting_pairs"]["at_inverted_cells"].get<int>(), 0);
+  EXPECT_EQ(folded["reservoir"]["self_intersecting_pairs"]["total"], folded["check"]["self_intersecting_pairs"]);
   EXPECT_NE(output.find("self-intersecting pairs: "), std::string::npos) << output;
 }
 

@@ -119,5 +119,44 @@ TEST(PnTessellation, MaximumFactorOneKeepsTheMesh) {
   EXPECT_GT(tessellatePn(m, {.maxFactor = 8}).mesh.triangleCount(), 1u);
 }
 
+/// Two squares 0.05 apart, each of two triangles: the lower one's normals lean out of a
+/// point below it (its patches bulge up), the upper one's out of a point above (they bulge
+/// down), as on thin layers whose sheets curve towards each other.
+mesh::Mesh facingSheets() {
+  mesh::Mesh m;
+  const auto sheet = [&](float z, float lean, bool flip) {
+    const auto first = static_cast<std::uint32_t>(m.positions.size());
+    for (const auto& [x, y] : {std::pair{0.f, 0.f}, {1.f, 0.f}, {1.f, 1.f}, {0.f, 1.f}}) {
+      m.positions.push_back({x, y, z});
+      const Vector3d n = Vector3d(x - 0.5, y - 0.5, lean).normalized();
+      m.normals.push_back({static_cast<float>(n.x()), static_cast<float>(n.y()), static_cast<float>(n.z())});
+    }
+    if (flip)
+      m.triangles.insert(m.triangles.end(), {{first, first + 2, first + 1}, {first, first + 3, first + 2}});
+    else
+      m.triangles.insert(m.triangles.end(), {{first, first + 1, first + 2}, {first, first + 2, first + 3}});
+  };
+  sheet(0.0f, 0.5f, false);
+  sheet(0.05f, -0.5f, true);
+  return m;
+}
+
+TEST(PnTessellation, PatchesThatCrossKeepTheirEdgesStraight) {
+  const mesh::Mesh flat = facingSheets();
+  ASSERT_EQ(mesh::validateMesh(flat).selfIntersectingPairs, 0);
+  const TessellationResult curved = tessellatePn(flat, {.maxFactor = 4, .straightenCrossings = false});
+  ASSERT_GT(mesh::validateMesh(curved.mesh).selfIntersectingPairs, 0) << "the bulges no longer meet";
+  const TessellationResult r = tessellatePn(flat, {.maxFactor = 4});
+  EXPECT_GT(r.pairsBefore, 0);
+  EXPECT_EQ(r.pairsAfter, 0);
+  EXPECT_GT(r.straightEdges, 0);
+  const mesh::MeshReport report = mesh::validateMesh(r.mesh);
+  EXPECT_EQ(report.selfIntersectingPairs, 0);
+  EXPECT_TRUE(report.manifold);
+  EXPECT_EQ(report.components, 2);
+  EXPECT_EQ(report.boundaryEdges, mesh::validateMesh(curved.mesh).boundaryEdges)
+      << "straight edges are cut as the curved ones were: no crack between patches";
+}
+
 }  // namespace
 }  // namespace isovdb::reservoir

@@ -148,6 +148,8 @@ mesh::Mesh extractReservoir(const ReservoirOptions& options, Statistics& stats, 
   reservoir::TessellationResult pn = reservoir::tessellatePn(contour.mesh, {.maxFactor = options.maxTessellation});
   section["tessellation_max_factor"] = options.maxTessellation;
   section["tessellation_mean_edge_factor"] = pn.meanFactor;
+  section["tessellation_straightened"] = {
+      {"pairs_before", pn.pairsBefore}, {"pairs_after", pn.pairsAfter}, {"straight_edges", pn.straightEdges}};
   section["pn_triangles"] = pn.mesh.triangleCount();
   section["pn_vertices"] = pn.mesh.vertexCount();
   pn.mesh.comments = comments;

@@ -31,12 +31,22 @@ struct TessellationOptions {
   int maxFactor = 8;  ///< k, the most segments an edge is cut into
   FactorRule rule = FactorRule::Exponential;
   double inflation = 0.25;  ///< envelope offset, times the mean edge length
+  /// Where the curved patches cross others (exact predicates on the tessellated mesh), the
+  /// edges of their input triangles become straight (the chord, in both triangles of the
+  /// edge) and the mesh is tessellated again, while a pass straightens something. Bulges
+  /// of metres over 100 m triangles crossed Reek's 3 m layers (PORO 0.21, k = 3: 11,792
+  /// pairs). Normals stay the envelope's: the straightened parts still shade smoothly.
+  bool straightenCrossings = true;
+  int maxStraighteningPasses = 8;
 };
 
 struct TessellationResult {
   mesh::Mesh mesh;
   std::int64_t edges = 0;
   double meanFactor = 0;  ///< over the input edges
+  std::int64_t pairsBefore = 0;    ///< self-intersecting pairs of the first tessellation
+  std::int64_t pairsAfter = 0;     ///< and of the last (straightenCrossings)
+  std::int64_t straightEdges = 0;  ///< input edges kept as chords
 };
 
 /// @pre `input` has one unit normal per vertex. Deterministic.

@@ -19,18 +19,23 @@ Vec3d edgeNormal(const Vec3d& pi, const Vec3d& pj, const Vec3d& ni, const Vec3d&
 
 }  // namespace
 
-PnTriangle::PnTriangle(const std::array<Vec3d, 3>& p, const std::array<Vec3d, 3>& n) {
+PnTriangle::PnTriangle(const std::array<Vec3d, 3>& p, const std::array<Vec3d, 3>& n,
+                       const std::array<bool, 3>& straight) {
   auto w = [&](int i, int j) { return (p[j] - p[i]).dot(n[i]); };
-  auto third = [&](int i, int j) { return Vec3d((2 * p[i] + p[j] - w(i, j) * n[i]) / 3.0); };
+  // The control point of edge (i, j) a third of the way from i; `edge` numbers it (c: c, c+1).
+  auto third = [&](int i, int j, int edge) {
+    const double lift = straight[static_cast<std::size_t>(edge)] ? 0.0 : w(i, j);
+    return Vec3d((2 * p[i] + p[j] - lift * n[i]) / 3.0);
+  };
   b_[0] = p[0];
   b_[1] = p[1];
   b_[2] = p[2];
-  b_[3] = third(0, 1);  // b210
-  b_[4] = third(1, 0);  // b120
-  b_[5] = third(1, 2);  // b021
-  b_[6] = third(2, 1);  // b012
-  b_[7] = third(2, 0);  // b102
-  b_[8] = third(0, 2);  // b201
+  b_[3] = third(0, 1, 0);  // b210
+  b_[4] = third(1, 0, 0);  // b120
+  b_[5] = third(1, 2, 1);  // b021
+  b_[6] = third(2, 1, 1);  // b012
+  b_[7] = third(2, 0, 2);  // b102
+  b_[8] = third(0, 2, 2);  // b201
   const Vec3d e = (b_[3] + b_[4] + b_[5] + b_[6] + b_[7] + b_[8]) / 6.0;
   const Vec3d centre = (p[0] + p[1] + p[2]) / 3.0;
   b_[9] = e + (e - centre) / 2.0;

@@ -8,7 +8,7 @@
 /// moved along their normals by `inflation`) and the patch itself.
 ///
 /// A patch's boundary curve depends only on that edge's two vertices and
-/// normals, so adjacent patches meet without cracks.
+/// normals (and whether it is straight), so adjacent patches meet without cracks.
 #pragma once
 
 #include <array>
@@ -19,8 +19,11 @@ namespace isovdb::reservoir {
 
 class PnTriangle {
  public:
-  /// Corner positions and unit normals; (u, v, w) weigh corners 0, 1, 2.
-  PnTriangle(const std::array<Vec3d, 3>& p, const std::array<Vec3d, 3>& n);
+  /// Corner positions and unit normals; (u, v, w) weigh corners 0, 1, 2. A straight edge
+  /// (edge c: corners c, c + 1) keeps its chord: its control points are the chord's thirds,
+  /// the same in both triangles of the edge; with all three straight the patch is flat.
+  PnTriangle(const std::array<Vec3d, 3>& p, const std::array<Vec3d, 3>& n,
+             const std::array<bool, 3>& straight = {false, false, false});
 
   Vec3d position(double u, double v, double w) const;
   /// Quadratic normal patch (paper 003 eq. with the Bernstein factors restored).
