@@ -50,18 +50,20 @@ void bindReservoir(py::module_& m) {
 Isosurface of a cell property of an Eclipse corner-point grid (the `isovdb reservoir` job,
 paper 003): GRDECL deck -> corner-point grid -> cell values averaged to the cell corners
 over the active cells -> Marching Cubes on each hexahedron (asymptotic decider on faces),
-with per-vertex normals from the inverse Jacobian of the trilinear map.
+with per-vertex normals from the inverse Jacobian of the trilinear map -> the loops of cells
+whose triangles cross others fanned again (exact predicates; statistics reservoir.untangle).
 
 grid: the .grdecl file, or a list: the grid file first, then files with more properties
   (INCLUDE inside a deck is followed too).
 property: the cell property keyword (PORO, PERMX, FACIES, SOIL, ...). iso: its isovalue.
 tessellate: 0 keeps the flat triangles; K > 0 refines them as PN triangles (cubic geometry,
-  envelope normals) with per-edge factors up to K, crack-free.
+  envelope normals) with per-edge factors up to K, crack-free; the edges of patches that
+  cross others are kept straight (reservoir.tessellation_straightened).
 max_values: most values the deck's keywords may hold together, n*value repeats counted (a
   guard against hostile decks; each array is also bounded by the grid's size).
 threads: worker threads (None = every core); the mesh is the same.
 progress: callable(stage: str, percent: int) per stage (read grdecl, corner-point grid,
-  marching cubes, pn triangles); if it raises, the work stops and its exception propagates
+  marching cubes, untangle loops, pn triangles); if it raises, the work stops and its exception propagates
   (Ctrl-C too).
 
 Returns a Mesh in the grid's coordinates with normals; mesh.statistics holds the figures

@@ -69,7 +69,7 @@ def test_progress_reports_each_stage_and_raising_cancels(data_dir):
     isovdb.extract_reservoir(deck, property="PERMX", iso=100, tessellate=2,
                              progress=lambda stage, percent: seen.append((stage, percent)))
     stages = [stage for stage, _ in seen]
-    for stage in ("read grdecl", "corner-point grid", "marching cubes", "pn triangles"):
+    for stage in ("read grdecl", "corner-point grid", "marching cubes", "untangle loops", "pn triangles"):
         assert stage in stages
     assert ("marching cubes", 100) in seen
 

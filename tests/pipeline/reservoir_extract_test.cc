@@ -32,7 +32,11 @@ TEST(ReservoirExtract, RealDecksGiveManifoldMeshesWithoutSelfIntersections) {
   for (const Deck& deck : decks)
     for (const double iso : deck.isos) {
       Statistics stats;
-      const mesh::Mesh m = extractReservoir({.inputs = deck.files, .property = "PORO", .iso = iso}, stats);
+      ReservoirOptions options;
+      options.inputs = deck.files;
+      options.property = "PORO";
+      options.iso = iso;
+      const mesh::Mesh m = extractReservoir(options, stats);
       const mesh::MeshReport report = mesh::validateMesh(m);
       const std::string what = deck.files.front().filename().string() + " PORO " + std::to_string(iso);
       ASSERT_GT(m.triangleCount(), 1000u) << what;
