@@ -88,5 +88,27 @@ TEST(UntangleLoops, ALoopThatCrossesNothingStays) {
   EXPECT_EQ(m.triangles, before);
 }
 
+TEST(UntangleLoops, PairsEverywhereAreLeftAsTheyAre) {
+  // 1,200 saddles over their triangles, side by side: a pair for every three triangles,
+  // more than 1,000 + 1 % of them, as where a grid's cells fold over each other.
+  mesh::Mesh m;
+  std::vector<std::uint32_t> cells;
+  for (std::uint32_t copy = 0; copy < 1200; ++copy) {
+    std::vector<std::uint32_t> copyCells;
+    const mesh::Mesh one = saddleOverTriangle({{0, 1, 2}, {0, 2, 3}}, copyCells);
+    const auto first = static_cast<std::uint32_t>(m.positions.size());
+    for (const auto& p : one.positions) m.positions.push_back({p[0] + 2.0f * static_cast<float>(copy), p[1], p[2]});
+    m.normals.insert(m.normals.end(), one.normals.begin(), one.normals.end());
+    for (const auto& t : one.triangles) m.triangles.push_back({t[0] + first, t[1] + first, t[2] + first});
+    for (const auto c : copyCells) cells.push_back(2 * copy + c);
+  }
+  const std::vector<mesh::Triangle> before = m.triangles;
+  const UntangleResult r = untangleLoops(m, cells);
+  EXPECT_EQ(r.pairsBefore, 1200);
+  EXPECT_TRUE(r.skipped);
+  EXPECT_EQ(r.pairsAfter, 1200);
+  EXPECT_EQ(m.triangles.size(), before.size());
+}
+
 }  // namespace
 }  // namespace isovdb::reservoir

@@ -101,7 +101,8 @@ mesh::Mesh extractReservoir(const ReservoirOptions& options, Statistics& stats, 
     untangled = reservoir::untangleLoops(contour.mesh, contour.triangleCells);
     stats["reservoir"]["untangle"] = {{"pairs_before", untangled.pairsBefore},
                                       {"pairs_after", untangled.pairsAfter},
-                                      {"loops_refanned", untangled.loopsRefanned}};
+                                      {"loops_refanned", untangled.loopsRefanned},
+                                      {"skipped_too_many_pairs", untangled.skipped}};
     progress.update(1, 1);
   }
   if (options.attributeSelfIntersections)

@@ -35,6 +35,71 @@ Box boxOf(const mesh::Mesh& m, const Triangle& t) {
   return box;
 }
 
+/// The triangles' boxes binned in a uniform grid (bins about the mean box's size, at most
+/// 128 along an axis): the triangles around a loop without a pass over the whole mesh
+/// (thousands of loops on a mesh of millions would take that many passes).
+class TriangleBins {
+ public:
+  explicit TriangleBins(const std::vector<Box>& boxes) : boxes_(boxes), stamp_(boxes.size(), 0) {
+    if (boxes.empty()) return;
+    Box all = boxes.front();
+    double extent = 0;
+    for (const Box& b : boxes)
+      for (int k = 0; k < 3; ++k) {
+        all.lo[k] = std::min(all.lo[k], b.lo[k]);
+        all.hi[k] = std::max(all.hi[k], b.hi[k]);
+        extent += double(b.hi[k]) - b.lo[k];
+      }
+    const double mean = extent / (3.0 * static_cast<double>(boxes.size()));
+    for (int k = 0; k < 3; ++k) {
+      lo_[k] = all.lo[k];
+      const double span = double(all.hi[k]) - all.lo[k];
+      bins_[k] = std::clamp(static_cast<int>(span / std::max(mean, 1e-30)) + 1, 1, 128);
+      size_[k] = std::max(span / bins_[k], 1e-30);
+    }
+    start_.assign(static_cast<std::size_t>(bins_[0]) * bins_[1] * bins_[2] + 1, 0);
+    for (std::size_t t = 0; t < boxes.size(); ++t) forBins(boxes[t], [&](std::size_t bin) { ++start_[bin + 1]; });
+    std::partial_sum(start_.begin(), start_.end(), start_.begin());
+    std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
+    triangles_.resize(start_.back());
+    for (std::size_t t = 0; t < boxes.size(); ++t)
+      forBins(boxes[t], [&](std::size_t bin) { triangles_[fill[bin]++] = static_cast<std::uint32_t>(t); });
+  }
+
+  /// Calls f(triangle) once for each triangle whose box overlaps `box`, in no fixed order.
+  template <class F>
+  void forEachNear(const Box& box, F&& f) {
+    ++query_;
+    forBins(box, [&](std::size_t bin) {
+      for (std::uint32_t n = start_[bin]; n < start_[bin + 1]; ++n) {
+        const std::uint32_t t = triangles_[n];
+        if (stamp_[t] == query_ || !box.overlaps(boxes_[t])) continue;
+        stamp_[t] = query_;
+        f(t);
+      }
+    });
+  }
+
+ private:
+  template <class F>
+  void forBins(const Box& box, F&& f) const {
+    std::array<int, 3> from{}, to{};
+    for (int k = 0; k < 3; ++k) {
+      from[k] = std::clamp(static_cast<int>((box.lo[k] - lo_[k]) / size_[k]), 0, bins_[k] - 1);
+      to[k] = std::clamp(static_cast<int>((box.hi[k] - lo_[k]) / size_[k]), 0, bins_[k] - 1);
+    }
+    for (int z = from[2]; z <= to[2]; ++z)
+      for (int y = from[1]; y <= to[1]; ++y)
+        for (int x = from[0]; x <= to[0]; ++x) f((static_cast<std::size_t>(z) * bins_[1] + y) * bins_[0] + x);
+  }
+
+  const std::vector<Box>& boxes_;
+  std::array<double, 3> lo_{}, size_{1, 1, 1};
+  std::array<int, 3> bins_{1, 1, 1};
+  std::vector<std::uint32_t> start_, triangles_, stamp_;
+  std::uint32_t query_ = 0;
+};
+
 /// A triangle with no area to speak of (a fan across three nearly collinear loop vertices):
 /// never a better choice, though the exact test skips it.
 bool sliver(const mesh::Mesh& m, const Triangle& t) {
@@ -114,6 +179,7 @@ std::int64_t refanPass(mesh::Mesh& m, std::vector<std::uint32_t>& triangleCells,
   const std::size_t count = m.triangles.size();
   std::vector<Box> boxes(count);
   for (std::size_t t = 0; t < count; ++t) boxes[t] = boxOf(m, m.triangles[t]);
+  TriangleBins bins(boxes);
   std::vector<std::uint8_t> removed(count, 0);
   std::map<std::uint32_t, std::vector<Triangle>> replacement;  // at a loop's first triangle
   std::vector<Triangle> added;                                 // every replacement, for later loops
@@ -151,9 +217,9 @@ std::int64_t refanPass(mesh::Mesh& m, std::vector<std::uint32_t>& triangleCells,
         }
       }
       std::vector<std::uint32_t> around;
-      for (std::uint32_t t = 0; t < count; ++t)
-        if (!removed[t] && loopBox.overlaps(boxes[t]) && std::find(loop.begin(), loop.end(), t) == loop.end())
-          around.push_back(t);
+      bins.forEachNear(loopBox, [&](std::uint32_t t) {
+        if (!removed[t] && std::find(loop.begin(), loop.end(), t) == loop.end()) around.push_back(t);
+      });
       std::int64_t best = crossings(current, around, loopBox);
       if (best == 0) continue;
       std::optional<std::vector<Triangle>> chosen;
@@ -219,7 +285,10 @@ UntangleResult untangleLoops(mesh::Mesh& mesh, std::vector<std::uint32_t>& trian
   UntangleResult result;
   auto& pairs = result.remainingPairs;
   result.pairsBefore = result.pairsAfter = mesh::countSelfIntersections(mesh, &pairs);
-  for (int pass = 0; pass < 3 && !pairs.empty(); ++pass) {
+  // Pairs everywhere (cells folded over each other: random ZCORN on 40 x 40 x 10 cells, 9,680
+  // pairs in 34,324 triangles, 3 s to bring them to 5,345) are the grid's, not the fans'.
+  result.skipped = pairs.size() > 1000 + mesh.triangles.size() / 100;
+  for (int pass = 0; pass < 3 && !pairs.empty() && !result.skipped; ++pass) {
     const std::int64_t refanned = refanPass(mesh, triangleCells, pairs);
     if (refanned == 0) break;
     result.loopsRefanned += refanned;

@@ -25,6 +25,9 @@ struct UntangleResult {
   std::int64_t pairsBefore = 0;  ///< self-intersecting pairs of the mesh as contoured
   std::int64_t pairsAfter = 0;   ///< and after the loops were fanned again
   std::int64_t loopsRefanned = 0;
+  /// More pairs than 1,000 + 1 % of the triangles: the grid's cells fold over each other,
+  /// which no fan undoes; nothing was fanned again.
+  bool skipped = false;
   /// The pairs that remain (triangle indices of the final mesh, smaller first, sorted).
   std::vector<std::pair<std::uint32_t, std::uint32_t>> remainingPairs;
 };
@@ -35,6 +38,7 @@ struct UntangleResult {
 /// strictly fewer than its triangles now cross; else it stays. Cells are taken in index
 /// order, each seeing the loops changed before it, for up to three passes while pairs
 /// remain and a pass changed something: the result does not depend on the thread count.
+/// Not tried where the pairs are too many (UntangleResult::skipped).
 /// Vertices no triangle uses any more (centres of loops fanned from an apex) are removed,
 /// with their normals. `triangleCells` (the cell of each triangle) stays aligned.
 UntangleResult untangleLoops(mesh::Mesh& mesh, std::vector<std::uint32_t>& triangleCells);
