@@ -88,6 +88,22 @@ TEST(UntangleLoops, ALoopThatCrossesNothingStays) {
   EXPECT_EQ(m.triangles, before);
 }
 
+TEST(UntangleLoops, AFanDoesNotTakeADiagonalThatIsAnotherCellsEdge) {
+  // The valley's diagonal v1-v3 is an edge of a triangle hanging below it (cell 2): the
+  // valley fan would give that edge three triangles. The ridge stays, with its pair.
+  std::vector<std::uint32_t> cells;
+  mesh::Mesh m = saddleOverTriangle({{0, 1, 2}, {0, 2, 3}}, cells);
+  m.positions.push_back({0.5f, 0.5f, -1.0f});
+  m.normals.push_back({0, 0, 1});
+  m.triangles.push_back({3, 1, 8});
+  cells.push_back(2);
+  const UntangleResult r = untangleLoops(m, cells);
+  EXPECT_EQ(r.pairsBefore, 1);
+  EXPECT_EQ(r.loopsRefanned, 0);
+  EXPECT_EQ(r.pairsAfter, 1);
+  EXPECT_EQ(mesh::validateMesh(m).nonManifoldEdges, 0);
+}
+
 TEST(UntangleLoops, PairsEverywhereAreLeftAsTheyAre) {
   // 1,200 saddles over their triangles, side by side: a pair for every three triangles,
   // more than 1,000 + 1 % of them, as where a grid's cells fold over each other.

@@ -222,8 +222,22 @@ std::int64_t refanPass(mesh::Mesh& m, std::vector<std::uint32_t>& triangleCells,
       });
       std::int64_t best = crossings(current, around, loopBox);
       if (best == 0) continue;
+      // A diagonal that is already an edge around the loop (another cell's fan between two
+      // crossings of their shared face) would give that edge four triangles.
+      const auto edgeAround = [&](std::uint32_t a, std::uint32_t b) {
+        const auto holds = [&](const Triangle& t) {
+          return (t[0] == a || t[1] == a || t[2] == a) && (t[0] == b || t[1] == b || t[2] == b);
+        };
+        return std::any_of(around.begin(), around.end(),
+                           [&](std::uint32_t t) { return !removed[t] && holds(m.triangles[t]); }) ||
+               std::any_of(added.begin(), added.end(), holds);
+      };
       std::optional<std::vector<Triangle>> chosen;
       for (std::size_t apex = 0; apex < n; ++apex) {
+        bool shared = false;
+        for (std::size_t k = 2; k + 1 < n && !shared; ++k)
+          shared = edgeAround((*cycle)[apex], (*cycle)[(apex + k) % n]);
+        if (shared) continue;
         std::vector<Triangle> fan;
         for (std::size_t k = 1; k + 1 < n; ++k)
           fan.push_back({(*cycle)[apex], (*cycle)[(apex + k) % n], (*cycle)[(apex + k + 1) % n]});
