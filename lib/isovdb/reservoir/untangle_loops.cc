@@ -54,7 +54,7 @@ class TriangleBins {
     for (int k = 0; k < 3; ++k) {
       lo_[k] = all.lo[k];
       const double span = double(all.hi[k]) - all.lo[k];
-      bins_[k] = std::clamp(static_cast<int>(span / std::max(mean, 1e-30)) + 1, 1, 128);
+      bins_[k] = static_cast<int>(std::clamp(span / std::max(mean, 1e-30) + 1, 1.0, 128.0));
       size_[k] = std::max(span / bins_[k], 1e-30);
     }
     start_.assign(static_cast<std::size_t>(bins_[0]) * bins_[1] * bins_[2] + 1, 0);
@@ -85,8 +85,10 @@ class TriangleBins {
   void forBins(const Box& box, F&& f) const {
     std::array<int, 3> from{}, to{};
     for (int k = 0; k < 3; ++k) {
-      from[k] = std::clamp(static_cast<int>((box.lo[k] - lo_[k]) / size_[k]), 0, bins_[k] - 1);
-      to[k] = std::clamp(static_cast<int>((box.hi[k] - lo_[k]) / size_[k]), 0, bins_[k] - 1);
+      // Clamped as doubles: a cast of an out-of-range double to int is undefined.
+      const double last = bins_[k] - 1;
+      from[k] = static_cast<int>(std::clamp((box.lo[k] - lo_[k]) / size_[k], 0.0, last));
+      to[k] = static_cast<int>(std::clamp((box.hi[k] - lo_[k]) / size_[k], 0.0, last));
     }
     for (int z = from[2]; z <= to[2]; ++z)
       for (int y = from[1]; y <= to[1]; ++y)
