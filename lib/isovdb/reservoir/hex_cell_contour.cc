@@ -127,39 +127,101 @@ bool collapsed(const CornerPointGrid& grid, std::size_t cell) {
 ///   sheets of both sides end on the same pillar plane there and crossed each other (Reek:
 ///   19 of its 23 self-intersecting pairs); such crossings are moved off the face. An edge
 ///   the neighbour shares stays: its vertex is the neighbour's too.
-/// - lone: the usable cell diagonally across the edge holds it (the same two points), but
-///   neither cell beside it does (kLoneEdgeKey).
+/// - lone: the usable cells that hold the edge (the same two points) fall apart into groups
+///   joined by whole shared faces, and this cell's group is not all of them: a cell diagonal
+///   across the edge whose cells beside are across a fault or unusable, or a cell beside
+///   that shares the edge but not the rest of the face. The groups' sheets met only at one
+///   vertex there (non-manifold), so each group makes its own (kLoneEdgeKey), keyed by its
+///   lowest cell and that cell's edge, and moves it off the faces its group does not share
+///   (`apartAxes`).
 struct EdgeSharing {
   int faultAxes = 0;
   bool lone = false;
+  int apartAxes = 0;
+  std::size_t groupCell = 0;
+  int groupEdge = 0;
 };
 
-EdgeSharing edgeSharing(const CornerPointGrid& grid, const CornerField& field, const HexCell& cell, int a, int b) {
+/// `ownFaces` remembers, per face of this cell (axis * 2 + side; -1 unknown), whether the
+/// cell beside holds all of it: a cut cell asks for each face once, not once per crossing.
+EdgeSharing edgeSharing(const CornerPointGrid& grid, const CornerField& field, const HexCell& cell, int a, int b,
+                        std::array<std::int8_t, 6>& ownFaces) {
   const int edgeAxis = (a ^ b) == 1 ? 0 : (a ^ b) == 2 ? 1 : 2;
-  const auto holds = [&](std::size_t other, int flip) {
-    const auto& across = grid.pointIds[other];
-    return across[static_cast<std::size_t>(a ^ flip)] == cell.id(a) &&
-           across[static_cast<std::size_t>(b ^ flip)] == cell.id(b);
+  const int p = (edgeAxis + 1) % 3, q = (edgeAxis + 2) % 3, flipP = 1 << p, flipQ = 1 << q;
+  // The cells around the edge: 0 this one, 1 beside across p, 2 beside across q, 3 diagonal;
+  // each one's corners are this cell's with `flips` toggled.
+  std::array<std::size_t, 4> around{cell.index, cell.neighbour(p, (a >> p) & 1), cell.neighbour(q, (a >> q) & 1),
+                                    HexCell::kNone};
+  const std::array<int, 4> flips{0, flipP, flipQ, flipP | flipQ};
+  const auto holds = [&](int n) {
+    const auto& ids = grid.pointIds[around[static_cast<std::size_t>(n)]];
+    const int flip = flips[static_cast<std::size_t>(n)];
+    return ids[static_cast<std::size_t>(a ^ flip)] == cell.id(a) &&
+           ids[static_cast<std::size_t>(b ^ flip)] == cell.id(b);
   };
   EdgeSharing sharing;
-  bool heldBeside = false;
-  for (const int axis : {(edgeAxis + 1) % 3, (edgeAxis + 2) % 3})
-    if (const std::size_t beside = cell.neighbour(axis, (a >> axis) & 1); beside != HexCell::kNone) {
-      if (holds(beside, 1 << axis))
-        heldBeside = true;
-      else
-        sharing.faultAxes |= 1 << axis;
-    }
-  if (heldBeside) return sharing;
+  std::array<bool, 4> held{true, false, false, false};
+  for (const int n : {1, 2}) {
+    if (around[static_cast<std::size_t>(n)] == HexCell::kNone) continue;
+    held[static_cast<std::size_t>(n)] = holds(n);
+    if (!held[static_cast<std::size_t>(n)]) sharing.faultAxes |= 1 << (n == 1 ? p : q);
+  }
+  // Whether cells n and m (around the edge, sharing a face: they differ by one flip) hold the
+  // whole face between them.
+  const auto shareFace = [&](int n, int m) {
+    const int across = flips[static_cast<std::size_t>(n)] ^ flips[static_cast<std::size_t>(m)];
+    const int axis = across == 1 ? 0 : across == 2 ? 1 : 2;
+    const auto& from = grid.pointIds[around[static_cast<std::size_t>(n)]];
+    const auto& to = grid.pointIds[around[static_cast<std::size_t>(m)]];
+    const int side = ((a ^ flips[static_cast<std::size_t>(n)]) >> axis) & 1;  // n's face towards m
+    for (int c = 0; c < 8; ++c)
+      if (((c >> axis) & 1) == side && from[static_cast<std::size_t>(c)] != to[static_cast<std::size_t>(c ^ across)])
+        return false;
+    return true;
+  };
+  // This cell's group: the holders reached through whole shared faces (0-1, 0-2, 1-3, 2-3).
+  // A group of three or four keeps the edge's own key (no other group can be as large, and
+  // a lone one splits off by itself): inside a grid both cells beside share their faces, and
+  // the diagonal cell is not read.
+  std::array<bool, 4> inGroup{true, false, false, false};
+  for (const int n : {1, 2}) {
+    if (!held[static_cast<std::size_t>(n)]) continue;
+    const int axis = n == 1 ? p : q;
+    std::int8_t& known = ownFaces[static_cast<std::size_t>(axis * 2 + ((a >> axis) & 1))];
+    if (known < 0) known = shareFace(0, n) ? 1 : 0;
+    inGroup[static_cast<std::size_t>(n)] = known == 1;
+  }
+  if (inGroup[1] && inGroup[2]) return sharing;
   std::array<int, 3> at = cell.ijk;
-  for (const int axis : {(edgeAxis + 1) % 3, (edgeAxis + 2) % 3}) {
+  bool inside = true;
+  for (const int axis : {p, q}) {
     int& index = at[static_cast<std::size_t>(axis)];
     index += (a >> axis) & 1 ? 1 : -1;
-    if (index < 0 || index >= grid.dims[static_cast<std::size_t>(axis)]) return sharing;
+    inside = inside && index >= 0 && index < grid.dims[static_cast<std::size_t>(axis)];
   }
-  const std::size_t diagonal = grid.cellIndex(at[0], at[1], at[2]);
-  const int flip = 7 & ~(1 << edgeAxis);
-  sharing.lone = field.usable[diagonal] && holds(diagonal, flip);
+  if (inside) {
+    const std::size_t diagonal = grid.cellIndex(at[0], at[1], at[2]);
+    if (field.usable[diagonal]) {
+      around[3] = diagonal;
+      held[3] = holds(3);
+    }
+  }
+  for (int step = 0; step < 2; ++step)
+    for (const auto& [n, m] : {std::pair{0, 1}, std::pair{0, 2}, std::pair{1, 3}, std::pair{2, 3}})
+      if (held[static_cast<std::size_t>(n)] && held[static_cast<std::size_t>(m)] &&
+          inGroup[static_cast<std::size_t>(n)] != inGroup[static_cast<std::size_t>(m)] && shareFace(n, m))
+        inGroup[static_cast<std::size_t>(n)] = inGroup[static_cast<std::size_t>(m)] = true;
+  if (inGroup == held || std::count(inGroup.begin(), inGroup.end(), true) >= 3) return sharing;
+  sharing.lone = true;
+  sharing.groupCell = cell.index;
+  for (int n = 1; n < 4; ++n)
+    if (inGroup[static_cast<std::size_t>(n)] && around[static_cast<std::size_t>(n)] < sharing.groupCell)
+      sharing.groupCell = around[static_cast<std::size_t>(n)];
+  for (int n = 0; n < 4; ++n)
+    if (inGroup[static_cast<std::size_t>(n)] && around[static_cast<std::size_t>(n)] == sharing.groupCell)
+      sharing.groupEdge = edgeId(a ^ flips[static_cast<std::size_t>(n)], b ^ flips[static_cast<std::size_t>(n)]);
+  if (!inGroup[1]) sharing.apartAxes |= 1 << p;
+  if (!inGroup[2]) sharing.apartAxes |= 1 << q;
   return sharing;
 }
 
@@ -355,6 +417,8 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
   const std::size_t cellFirst = out.keys.size();
   const auto firstVertex = static_cast<std::uint32_t>(cellFirst - block.firstKey);  // the block's numbering
   std::array<EdgeCrossing, 12> crossingOf;
+  std::array<std::int8_t, 6> ownFaces;  // edgeSharing's memo of this cell's shared faces
+  ownFaces.fill(-1);
   std::array<int, 12> vertexOf;
   vertexOf.fill(-1);
   auto vertex = [&](int edge) {
@@ -362,10 +426,11 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
     int a = edgeCorners[edge][0], b = edgeCorners[edge][1];
     if (ids[a] > ids[b]) std::swap(a, b);  // crossEdge's order
     EdgeCrossing crossing = crossEdge(grid, field, options.iso, ids[a], ids[b]);
-    const EdgeSharing sharing = edgeSharing(grid, field, hex, a, b);
+    const EdgeSharing sharing = edgeSharing(grid, field, hex, a, b, ownFaces);
     const bool lone = sharing.lone && !(crossing.key & kCornerKey);
     if (lone) {
-      crossing.key = kLoneEdgeKey | (static_cast<std::uint64_t>(cell) << 4) | static_cast<std::uint64_t>(edge);
+      crossing.key = kLoneEdgeKey | (static_cast<std::uint64_t>(sharing.groupCell) << 4) |
+                     static_cast<std::uint64_t>(sharing.groupEdge);
       out.placedPoints.emplace_back(crossing.key, crossingPosition(grid, crossing));
     }
     crossingOf[edge] = crossing;
@@ -381,7 +446,7 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
     if (lone || (!crossing.nearCorner && std::min(crossing.t, 1 - crossing.t) >= kMaxCornerOffset)) {
       Vec3d side = Vec3d::Zero();
       for (int axis = 0; axis < 3; ++axis)  // the edge's two faces, across the other two axes
-        if (!(((a ^ b) >> axis) & 1) && (lone || (sharing.faultAxes >> axis & 1)))
+        if (!(((a ^ b) >> axis) & 1) && (lone ? (sharing.apartAxes >> axis & 1) : (sharing.faultAxes >> axis & 1)))
           side += intoCell(axis, (a >> axis) & 1);
       if (side != Vec3d::Zero()) {
         growHuge(out.faultSides, 1);

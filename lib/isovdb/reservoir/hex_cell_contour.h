@@ -73,10 +73,11 @@ constexpr std::uint64_t kCentreKey = std::uint64_t{1} << 63;  ///< a loop's cent
 /// A point on a twisted face between two of its crossings (contourCell), made alike by
 /// both cells that share the face: (the lower cell << 4) | (its face << 1) | segment.
 constexpr std::uint64_t kFaceKey = std::uint64_t{1} << 61;
-/// A crossing on an edge that the cell diagonally across it holds too, but neither cell
-/// beside it (a fault, or unusable cells): the two cells' sheets met only there, at a
-/// non-manifold vertex, so each cell makes its own, (the cell << 4) | its edge, moved into
-/// the cell like a crossing on a fault face.
+/// A crossing on an edge whose cells fall apart into groups joined by whole shared faces
+/// (a cell diagonal across it with the cells beside across a fault or unusable, or a cell
+/// beside that shares the edge and not the rest of the face): their sheets met only there,
+/// at a non-manifold vertex, so each group of one or two cells makes its own, (its lowest
+/// cell << 4) | that cell's edge, moved into the group's cells like a crossing on a fault face.
 constexpr std::uint64_t kLoneEdgeKey = std::uint64_t{1} << 60;
 /// The vertices that are not keyed by their edge's points.
 constexpr std::uint64_t kSpecialKeys = kCornerKey | kCentreKey | kFaceKey | kLoneEdgeKey;
