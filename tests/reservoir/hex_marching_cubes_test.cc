@@ -321,7 +321,7 @@ TEST(HexMarchingCubes, CellsThatMeetAtAnEdgeOnlyKeepTheirOwnVertices) {
 TEST(HexMarchingCubes, CellsThatShareAnEdgeButNotTheFaceKeepTheirOwnVertices) {
   // Random depths at every cell corner (2 x 2 x 3 cells, most of them folded): cells on two
   // sides of a face that share one of its edges and nothing else of it. Their sheets met at
-  // the one vertex on that edge (a non-manifold vertex in these two decks, and in 153 of 200
+  // the one vertex on that edge (a non-manifold vertex in these two decks, and in 171 of 200
   // such decks); the cells that hold an edge now weld its vertex only within groups joined
   // by whole shared faces.
   const std::string zcorn[] = {
