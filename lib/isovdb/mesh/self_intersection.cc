@@ -81,6 +81,12 @@ Box boxOf(const Vec3f& a, const Vec3f& b, const Vec3f& c) {
 
 Point toPoint(const Vec3f& p) { return Point(double(p[0]), double(p[1]), double(p[2])); }
 
+/// A repeated index, or three collinear points: skipped (validateMesh counts them).
+bool degenerateTriangle(const Mesh& mesh, const Triangle& t) {
+  return t[0] == t[1] || t[1] == t[2] || t[0] == t[2] ||
+         CGAL::collinear(toPoint(mesh.positions[t[0]]), toPoint(mesh.positions[t[1]]), toPoint(mesh.positions[t[2]]));
+}
+
 struct Item {
   Box box;
   std::uint32_t triangle = 0;
@@ -347,10 +353,7 @@ std::vector<Item> collectItems(const Mesh& mesh, CopySets& copies) {
             detail::keepLowest(firstBad, t);
             continue;
           }
-          if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2] ||
-              CGAL::collinear(toPoint(mesh.positions[tri[0]]), toPoint(mesh.positions[tri[1]]),
-                              toPoint(mesh.positions[tri[2]])))
-            continue;
+          if (degenerateTriangle(mesh, tri)) continue;
           keys[t].code = 0;
           ++b.kept;
           const Box box = boxOfTriangle(t);
@@ -440,13 +443,9 @@ std::vector<Item> collectItems(const Mesh& mesh, CopySets& copies) {
 }  // namespace
 
 bool trianglesIntersect(const Mesh& mesh, const Triangle& a, const Triangle& b) {
-  const auto degenerate = [&](const Triangle& t) {
-    return t[0] == t[1] || t[1] == t[2] || t[0] == t[2] ||
-           CGAL::collinear(toPoint(mesh.positions[t[0]]), toPoint(mesh.positions[t[1]]), toPoint(mesh.positions[t[2]]));
-  };
-  if (degenerate(a) || degenerate(b)) return false;
-  const auto& p = mesh.positions;
+  const auto& p = mesh.positions;  // the boxes first: they settle most pairs, the exact tests few
   if (!overlaps(boxOf(p[a[0]], p[a[1]], p[a[2]]), boxOf(p[b[0]], p[b[1]], p[b[2]]))) return false;
+  if (degenerateTriangle(mesh, a) || degenerateTriangle(mesh, b)) return false;
   return PairTest(mesh).intersect(a, b);
 }
 

@@ -43,20 +43,23 @@ int edgeFactor(const Vec3d& ni, const Vec3d& nj, int maxFactor, FactorRule rule)
 
 namespace {
 
+/// The input's edges: their factors, and their numbers (in key order) for the edge points.
+struct EdgeTable {
+  std::map<std::uint64_t, int> factors;
+  std::map<std::uint64_t, std::uint32_t> index;
+};
+
 /// One tessellation of `input`, the edges in `straight` (edgeKey) kept as chords; the input
 /// triangle of each output triangle in `source`.
-mesh::Mesh tessellateOnce(const mesh::Mesh& input, const std::map<std::uint64_t, int>& factors, double inflation,
+mesh::Mesh tessellateOnce(const mesh::Mesh& input, const EdgeTable& edges, double inflation,
                           const std::set<std::uint64_t>& straight, std::vector<std::uint32_t>& source) {
+  const auto& factors = edges.factors;
+  const auto& edgeIndex = edges.index;
   mesh::Mesh out;
   out.positions = input.positions;
   out.normals = input.normals;
   source.clear();
   std::unordered_map<std::uint64_t, std::uint32_t> edgePoints;  // (edge index << 8 | q) -> vertex
-  std::map<std::uint64_t, std::uint32_t> edgeIndex;
-  {
-    std::uint32_t n = 0;
-    for (const auto& [key, f] : factors) edgeIndex[key] = n++;
-  }
   std::vector<std::uint32_t> grid;
   for (std::uint32_t triangle = 0; triangle < input.triangles.size(); ++triangle) {
     const auto& t = input.triangles[triangle];
@@ -150,7 +153,8 @@ TessellationResult tessellatePn(const mesh::Mesh& input, const TessellationOptio
     throw InputError("PN tessellation: the maximum factor must be between 1 and 255");
   TessellationResult result;
   // Edge factors and the mean edge length (for the envelope offset).
-  std::map<std::uint64_t, int> factors;
+  EdgeTable edges;
+  auto& factors = edges.factors;
   double lengthSum = 0;
   for (const auto& t : input.triangles)
     for (int e = 0; e < 3; ++e) {
@@ -166,10 +170,11 @@ TessellationResult tessellatePn(const mesh::Mesh& input, const TessellationOptio
   for (const auto& [key, f] : factors) factorSum += f;
   result.meanFactor = factors.empty() ? 0 : factorSum / factors.size();
   const double inflation = options.inflation * (factors.empty() ? 0 : lengthSum / factors.size());
+  for (const auto& [key, f] : factors) edges.index.emplace(key, static_cast<std::uint32_t>(edges.index.size()));
 
   std::set<std::uint64_t> straight;
   std::vector<std::uint32_t> source;
-  result.mesh = tessellateOnce(input, factors, inflation, straight, source);
+  result.mesh = tessellateOnce(input, edges, inflation, straight, source);
   if (!options.straightenCrossings) return result;
   // Patches that cross others: their triangles' edges become chords (both triangles of an
   // edge follow it, so no crack opens), pass after pass while a pass straightens something.
@@ -181,7 +186,7 @@ TessellationResult tessellatePn(const mesh::Mesh& input, const TessellationOptio
       for (const std::uint32_t t : {source[x], source[y]})
         for (int c = 0; c < 3; ++c) straight.insert(edgeKey(input.triangles[t][c], input.triangles[t][(c + 1) % 3]));
     if (straight.size() == before) break;
-    result.mesh = tessellateOnce(input, factors, inflation, straight, source);
+    result.mesh = tessellateOnce(input, edges, inflation, straight, source);
     result.pairsAfter = mesh::countSelfIntersections(result.mesh, &pairs);
   }
   result.straightEdges = static_cast<std::int64_t>(straight.size());
