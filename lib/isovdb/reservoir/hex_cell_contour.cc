@@ -8,7 +8,6 @@
 #include <bit>
 #include <cmath>
 #include <limits>
-#include <optional>
 
 #include "isovdb/huge_pages.h"
 #include "isovdb/reservoir/hex_cell.h"
@@ -70,6 +69,26 @@ constexpr int edgeId(int a, int b) {  // 12 edges: axis * 4 + the other two bits
   return axis * 4 + rest;
 }
 
+/// How a face is cut, indexed by which of its corners lie above the iso-value (bit e for
+/// kFaces' corner e): its sign changes and, where there are two, the positions of the
+/// edges where the sign goes above -> below (down) and below -> above (up), counter-clockwise.
+struct FaceCase {
+  int crossings = 0, down = -1, up = -1;
+};
+constexpr std::array<FaceCase, 16> kFaceCases = [] {
+  std::array<FaceCase, 16> cases{};
+  for (int mask = 0; mask < 16; ++mask) {
+    FaceCase& c = cases[static_cast<std::size_t>(mask)];
+    for (int e = 0; e < 4; ++e) {
+      const bool from = mask >> e & 1, to = mask >> ((e + 1) % 4) & 1;
+      c.crossings += from != to;
+      if (from && !to) c.down = e;
+      if (!from && to) c.up = e;
+    }
+  }
+  return cases;
+}();
+
 /// The faces (bits of kFaces) that hold each edge (edgeId's numbering).
 constexpr std::array<int, 12> kEdgeFaces = [] {
   std::array<int, 12> masks{};
@@ -91,21 +110,32 @@ constexpr std::array<int, 12> kEdgeFaces = [] {
 /// The Jacobian's determinant at the cell's centre, from its points (the corners welded:
 /// the array the edge crossings read too, where the cell's own corners would be one more
 /// stream from memory).
+/// Written per coordinate: as one Eigen expression of sixteen terms the sums were not
+/// inlined and took 5 % of Marching Cubes on Reek (the same operations, in the same order).
 double centreJacobian(const std::array<Vec3d, 8>& p) {
-  const Vec3d u = 0.25 * (p[1] - p[0] + p[3] - p[2] + p[5] - p[4] + p[7] - p[6]);
-  const Vec3d v = 0.25 * (p[2] - p[0] + p[3] - p[1] + p[6] - p[4] + p[7] - p[5]);
-  const Vec3d w = 0.25 * (p[4] - p[0] + p[5] - p[1] + p[6] - p[2] + p[7] - p[3]);
+  Vec3d u, v, w;
+  for (int i = 0; i < 3; ++i) {
+    u[i] = 0.25 * (p[1][i] - p[0][i] + p[3][i] - p[2][i] + p[5][i] - p[4][i] + p[7][i] - p[6][i]);
+    v[i] = 0.25 * (p[2][i] - p[0][i] + p[3][i] - p[1][i] + p[6][i] - p[4][i] + p[7][i] - p[5][i]);
+    w[i] = 0.25 * (p[4][i] - p[0][i] + p[5][i] - p[1][i] + p[6][i] - p[2][i] + p[7][i] - p[3][i]);
+  }
   return u.dot(v.cross(w));
 }
 
 /// Four times the cell's extent across `axis`: from the sum of the corners of its face on
 /// the low side to that of the face on the high side.
-Vec3d spanAcross(const std::array<Vec3d, 8>& p, int axis) {
-  const int bit = 1 << axis;
+template <int Axis>
+Vec3d spanAcrossAxis(const std::array<Vec3d, 8>& p) {
+  constexpr int kBit = 1 << Axis;
   Vec3d span = Vec3d::Zero();
   for (int c = 0; c < 8; ++c)
-    if (c & bit) span += p[static_cast<std::size_t>(c)] - p[static_cast<std::size_t>(c ^ bit)];
+    if (c & kBit) span += p[static_cast<std::size_t>(c)] - p[static_cast<std::size_t>(c ^ kBit)];
   return span;
+}
+Vec3d spanAcross(const std::array<Vec3d, 8>& p, int axis) {
+  // One loop per axis: with the axis a constant the tests fold away (2 % of Marching Cubes
+  // on Reek with the axis a variable).
+  return axis == 0 ? spanAcrossAxis<0>(p) : axis == 1 ? spanAcrossAxis<1>(p) : spanAcrossAxis<2>(p);
 }
 
 // A cell of zero thickness along one axis (a pinched layer): the cells on both
@@ -161,11 +191,6 @@ EdgeSharing edgeSharing(const CornerPointGrid& grid, const CornerField& field, c
   };
   EdgeSharing sharing;
   std::array<bool, 4> held{true, false, false, false};
-  for (const int n : {1, 2}) {
-    if (around[static_cast<std::size_t>(n)] == HexCell::kNone) continue;
-    held[static_cast<std::size_t>(n)] = holds(n);
-    if (!held[static_cast<std::size_t>(n)]) sharing.faultAxes |= 1 << (n == 1 ? p : q);
-  }
   // Whether cells n and m (around the edge, sharing a face: they differ by one flip) hold the
   // whole face between them.
   const auto shareFace = [&](int n, int m) {
@@ -183,11 +208,21 @@ EdgeSharing edgeSharing(const CornerPointGrid& grid, const CornerField& field, c
   // A group of three or four keeps the edge's own key (no other group can be as large, and
   // a lone one splits off by itself): inside a grid both cells beside share their faces, and
   // the diagonal cell is not read.
+  // A face known to be shared whole holds the edge too: its cell is not read again.
   std::array<bool, 4> inGroup{true, false, false, false};
   for (const int n : {1, 2}) {
-    if (!held[static_cast<std::size_t>(n)]) continue;
+    if (around[static_cast<std::size_t>(n)] == HexCell::kNone) continue;
     const int axis = n == 1 ? p : q;
     std::int8_t& known = ownFaces[static_cast<std::size_t>(axis * 2 + ((a >> axis) & 1))];
+    if (known == 1) {
+      held[static_cast<std::size_t>(n)] = inGroup[static_cast<std::size_t>(n)] = true;
+      continue;
+    }
+    held[static_cast<std::size_t>(n)] = holds(n);
+    if (!held[static_cast<std::size_t>(n)]) {
+      sharing.faultAxes |= 1 << axis;
+      continue;
+    }
     if (known < 0) known = shareFace(0, n) ? 1 : 0;
     inGroup[static_cast<std::size_t>(n)] = known == 1;
   }
@@ -233,7 +268,13 @@ EdgeSharing edgeSharing(const CornerPointGrid& grid, const CornerField& field, c
 /// four bilinear coefficients, set up once per cell.
 class CellDepth {
  public:
-  explicit CellDepth(const std::array<Vec3d, 8>& corners) {
+  /// Nothing set up (Eigen leaves the coefficients uninitialised): a cut cell sets it up
+  /// only for a loop of four or more vertices. (As a std::optional, its 576 bytes were
+  /// cleared for every cut cell: 1.5 % of Marching Cubes on Reek.)
+  CellDepth() = default;
+  bool ready() const { return ready_; }
+  void setUp(const std::array<Vec3d, 8>& corners) {
+    ready_ = true;
     for (int axis = 0; axis < 3; ++axis)
       for (int side = 0; side < 2; ++side) {
         const int p = 1 << ((axis + 1) % 3), q = 1 << ((axis + 2) % 3), base = side << axis;
@@ -259,6 +300,7 @@ class CellDepth {
 
  private:
   std::array<std::array<std::array<Vec3d, 4>, 2>, 3> faces_;  // [axis][side]: c00, d/du, d/dv, d2/dudv
+  bool ready_ = false;
 };
 
 }  // namespace
@@ -349,7 +391,7 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
 
   // Segments: next[start edge] = end edge, from an above->below crossing to a below->above one.
   std::array<int, 12> next, linkFace;
-  std::array<std::array<int, 2>, 12> edgeCorners{};
+  std::array<std::array<int, 2>, 12> edgeCorners;  // set by link() for each edge it joins
   next.fill(-1);
   linkFace.fill(-1);
   int face = 0;                                      // the face whose segments are being linked
@@ -362,17 +404,11 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
   };
   for (; face < 6; ++face) {
     const auto& f = kFaces[face];
-    int crossings = 0;
-    for (int e = 0; e < 4; ++e) crossings += above[f[e]] != above[f[(e + 1) % 4]];
-    if (crossings == 2) {
-      int down = -1, up = -1;  // edge positions (CCW) where the sign goes above->below / below->above
-      for (int e = 0; e < 4; ++e) {
-        const int a = f[e], b = f[(e + 1) % 4];
-        if (above[a] && !above[b]) down = e;
-        if (!above[a] && above[b]) up = e;
-      }
+    const FaceCase& faceCase = kFaceCases[above[f[0]] | above[f[1]] << 1 | above[f[2]] << 2 | above[f[3]] << 3];
+    if (faceCase.crossings == 2) {
+      const int down = faceCase.down, up = faceCase.up;
       link(f[down], f[(down + 1) % 4], f[up], f[(up + 1) % 4]);
-    } else if (crossings == 4) {
+    } else if (faceCase.crossings == 4) {
       ++block.ambiguousFaces;
       const double a = g[f[0]], b = g[f[1]], c = g[f[2]], d = g[f[3]];
       const double denominator = a + c - b - d;
@@ -393,7 +429,7 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
   }
 
   const double det = centreJacobian(hex.points);
-  std::optional<CellDepth> depthIn;  // set up for the first loop of four or more vertices
+  CellDepth depthIn;  // set up for the first loop of four or more vertices
   // A corner's gradient serves each of its edges that the surface crosses (up to three).
   std::array<Vec3d, 8> gradientAt;
   std::uint8_t gradientKnown = 0;
@@ -480,19 +516,22 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
   // points, parameters and thicknesses, so they decide alike. A fault face (the cell
   // across holds other points) keeps its own scheme (edgeSharing); a pinched cell's faces meet,
   // and their face points would be different vertices at one place.
+  // Set on a face's first use (faceBowKnown): filling all six for every cut cell cost 1 %.
   struct FaceBow {
-    bool known = false, candidate = false;
-    double twist2 = 0;         // (T . N)^2, N the unnormalised centre normal
-    double scale = 0;          // kFaceWarp^2 |N|^2
-    double thisScaled = 0;     // scale |span|^2 of this cell (span: 4x its thickness)
-    double acrossScaled = -1;  // the same for the cell across, once needed
-    std::size_t neighbour = HexCell::kNone;
+    bool candidate;
+    double twist2;        // (T . N)^2, N the unnormalised centre normal
+    double scale;         // kFaceWarp^2 |N|^2
+    double thisScaled;    // scale |span|^2 of this cell (span: 4x its thickness)
+    double acrossScaled;  // the same for the cell across, once needed (-1 before)
+    std::size_t neighbour;
   };
   std::array<FaceBow, 6> faceBows;
+  int faceBowKnown = 0;  // a bit per face
   const auto faceBow = [&](int f) -> FaceBow& {
     FaceBow& b = faceBows[static_cast<std::size_t>(f)];
-    if (b.known) return b;
-    b.known = true;
+    if (faceBowKnown >> f & 1) return b;
+    faceBowKnown |= 1 << f;
+    b = {false, 0, 0, 0, -1, HexCell::kNone};
     if (grid.cellShape[cell] & CornerPointGrid::kPinchedCell) return b;
     const int axis = f >> 1, side = f & 1, bit = 1 << axis;
     const int p = 1 << ((axis + 1) % 3), q = 1 << ((axis + 2) % 3), base = side << axis;
@@ -595,7 +634,7 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
   int loopIndex = 0;
   for (int start = 0; start < 12; ++start) {
     if (next[start] < 0 || visited[start]) continue;
-    std::array<int, 12> edges{};
+    std::array<int, 12> edges;
     std::size_t edgeCount = 0;
     for (int e = start; !visited[e]; e = next[e]) {
       visited[e] = true;
@@ -606,13 +645,15 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
     // lies on a twisted face (kFaceWarp). Per vertex: the faces it lies on (a fan diagonal
     // between two vertices of one face would run along it, where the neighbour's fan could
     // put the same edge), its parameters in the cell and its position.
-    std::array<int, 24> loop{}, faces{}, edgeOf{};  // edgeOf: the crossing's edge, or the segment's first
-    std::array<bool, 24> isFacePoint{};
+    // Written up to n before they are read (left uninitialised: clearing them per loop cost 4 %).
+    std::array<int, 24> loop, faces, edgeOf;  // edgeOf: the crossing's edge, or the segment's first
+    std::array<bool, 24> isFacePoint;
     std::array<Eigen::Vector3f, 24> facePosition;
     std::size_t n = 0;
     for (std::size_t i = 0; i < edgeCount; ++i) {
       const int edge = edges[i];
       edgeOf[n] = edge;
+      isFacePoint[n] = false;
       loop[n] = vertexOf[edge];
       faces[n++] = faceMask(edge);
       if (twistedSegment(edge)) {
@@ -649,7 +690,7 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
     // by 7 m over 230 m; the first apex in loop order left 10, 11 and 20 crossing pairs at
     // PORO 0.15, 0.2 and 0.25). Where the best fan's diagonals leave the cell or come within
     // kFanDepthForCentre of a face and a centre vertex stays deeper, the centre.
-    if (n > 3 && !depthIn) depthIn.emplace(hex.points);
+    if (n > 3 && !depthIn.ready()) depthIn.setUp(hex.points);
     int apex = -1;
     double apexDepth = -std::numeric_limits<double>::infinity();
     // A diagonal serves the fans of both its ends (a quad's two diagonals, its four
@@ -658,7 +699,7 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
     std::array<std::uint32_t, 24> diagonalKnown{};
     const auto depthOfDiagonal = [&](std::size_t a, std::size_t d) {
       if (!(diagonalKnown[a] >> d & 1)) {
-        diagonalDepth[a][d] = diagonalDepth[d][a] = (*depthIn)(0.5 * (at[a] + at[d]), 0.5 * (param[a] + param[d]));
+        diagonalDepth[a][d] = diagonalDepth[d][a] = depthIn(0.5 * (at[a] + at[d]), 0.5 * (param[a] + param[d]));
         diagonalKnown[a] |= 1U << d;
         diagonalKnown[d] |= 1U << a;
       }
@@ -668,8 +709,11 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
       bool ok = true;
       for (std::size_t m = 2; m + 1 < n && ok; ++m) ok = (faces[a] & faces[(a + m) % n]) == 0;
       if (!ok) continue;
-      double depth = std::numeric_limits<double>::infinity();  // a triangle has no diagonal
-      for (std::size_t m = 2; m + 1 < n; ++m) depth = std::min(depth, depthOfDiagonal(a, (a + m) % n));
+      // A triangle has no diagonal. The least depth stops as soon as it cannot beat the best
+      // apex so far (the choice is the same, with fewer diagonals evaluated).
+      double depth = std::numeric_limits<double>::infinity();
+      for (std::size_t m = 2; m + 1 < n && depth > apexDepth + 1e-9; ++m)
+        depth = std::min(depth, depthOfDiagonal(a, (a + m) % n));
       if (depth > apexDepth + 1e-9) {  // near ties: the first in loop order, as before
         apex = static_cast<int>(a);
         apexDepth = depth;
@@ -681,9 +725,9 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
         centre += at[i] / static_cast<double>(n);
         centreParam += param[i] / static_cast<double>(n);
       }
-      double depth = (*depthIn)(centre, centreParam);
-      for (std::size_t i = 0; i < n; ++i)
-        depth = std::min(depth, (*depthIn)(0.5 * (centre + at[i]), 0.5 * (centreParam + param[i])));
+      double depth = depthIn(centre, centreParam);
+      for (std::size_t i = 0; i < n && depth > apexDepth + 1e-9; ++i)  // (stops where the fan wins)
+        depth = std::min(depth, depthIn(0.5 * (centre + at[i]), 0.5 * (centreParam + param[i])));
       if (depth > apexDepth + 1e-9) apex = -1;
     }
     if (apex >= 0) {

@@ -5,6 +5,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include <Eigen/Geometry>
 
@@ -30,8 +31,9 @@ using hex::kSpecialKeys;
 using hex::ThreadOutput;
 
 /// Cells per block: blocks are the unit of parallel work and their outputs are merged in
-/// order, so the mesh does not depend on the thread count.
-constexpr std::size_t kBlockCells = 1024;
+/// order, so the mesh does not depend on the thread count. Reek's 35,838 cells made 35
+/// blocks of 1024, and the last one kept a thread busy alone: 256 is 2 % faster there.
+constexpr std::size_t kBlockCells = 256;
 
 /// A crossing on a fault face moved into its own side (`side`: the sum of its cells' vectors
 /// from the face's centre to the cell's) by a hundredth of that, and at least 16 float
@@ -102,16 +104,50 @@ std::vector<Record> weldOrder(const std::vector<BlockOutput>& outputs, const std
   return records;
 }
 
+/// Crossings on fault faces, each with the sum of its cells' sides (in block order), by key.
+std::vector<std::pair<std::uint64_t, Vec3d>> mergedFaultSides(const std::vector<BlockOutput>& outputs) {
+  std::vector<std::pair<std::uint64_t, Vec3d>> faultSides;
+  for (const BlockOutput& made : outputs)
+    faultSides.insert(faultSides.end(), made.faultSides().begin(), made.faultSides().end());
+  std::stable_sort(faultSides.begin(), faultSides.end(),
+                   [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::size_t kept = 0;
+  for (std::size_t n = 0; n < faultSides.size(); ++n)
+    if (kept > 0 && faultSides[kept - 1].first == faultSides[n].first)
+      faultSides[kept - 1].second += faultSides[n].second;
+    else
+      faultSides[kept++] = faultSides[n];
+  faultSides.resize(kept);
+  return faultSides;
+}
+
+/// Placed points by key: both cells of a face computed a face point's position alike; one
+/// of each key is kept (a lone crossing has one cell).
+std::vector<std::pair<std::uint64_t, Eigen::Vector3f>> mergedPlacedPoints(const std::vector<BlockOutput>& outputs) {
+  std::vector<std::pair<std::uint64_t, Eigen::Vector3f>> placedPoints;
+  for (const BlockOutput& made : outputs)
+    placedPoints.insert(placedPoints.end(), made.placedPoints().begin(), made.placedPoints().end());
+  std::stable_sort(placedPoints.begin(), placedPoints.end(),
+                   [](const auto& x, const auto& y) { return x.first < y.first; });
+  placedPoints.erase(std::unique(placedPoints.begin(), placedPoints.end(),
+                                 [](const auto& x, const auto& y) { return x.first == y.first; }),
+                     placedPoints.end());
+  return placedPoints;
+}
+
 /// Drops each pair of triangles with the same three vertices wound opposite ways, keeping
 /// the order of the others; returns the pairs dropped. Such a pair lies in a face of two
 /// cells: where a corner at the iso-value became the grid point's own vertex (crossEdge),
 /// the loops of both cells can run through it and the face's two crossings, each cell
 /// making the face's triangle facing out of it (Reek PORO 0.22: one pair, whose three
 /// edges had four triangles each). The two cancel: without them, each edge keeps one
-/// triangle of each cell, wound consistently. Only triangles at such a vertex
-/// (`atCorner`) can pair, so only those are compared.
+/// triangle of each cell, wound consistently. Only triangles at such a vertex (the
+/// vertices [firstCorner, endCorner): ordered by key, the grid points' are consecutive) can
+/// pair, so only those are compared, and none when there is none.
 std::size_t cancelOpposedTwins(std::vector<mesh::Triangle>& triangles, std::vector<std::uint32_t>& triangleCells,
-                               const std::vector<std::uint8_t>& atCorner) {
+                               std::uint32_t firstCorner, std::uint32_t endCorner) {
+  if (firstCorner == endCorner) return 0;
+  const auto atCorner = [&](std::uint32_t v) { return v >= firstCorner && v < endCorner; };
   struct Candidate {
     std::array<std::uint32_t, 3> sorted;
     bool even;  // the triangle's order is a rotation of the sorted one
@@ -120,7 +156,7 @@ std::size_t cancelOpposedTwins(std::vector<mesh::Triangle>& triangles, std::vect
   std::vector<Candidate> candidates;
   for (std::size_t n = 0; n < triangles.size(); ++n) {
     const mesh::Triangle& t = triangles[n];
-    if (!(atCorner[t[0]] || atCorner[t[1]] || atCorner[t[2]])) continue;
+    if (!(atCorner(t[0]) || atCorner(t[1]) || atCorner(t[2]))) continue;
     Candidate c{{t[0], t[1], t[2]}, true, static_cast<std::uint32_t>(n)};
     // Three compare-and-swaps sort the triple; each swap flips the permutation's parity.
     for (const auto& [i, j] : {std::pair{0, 1}, std::pair{1, 2}, std::pair{0, 1}})
@@ -173,7 +209,7 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
   std::vector<BlockOutput> outputs((cells + kBlockCells - 1) / kBlockCells);
   tbb::enumerable_thread_specific<ThreadOutput> threadOutputs;
   // Groups of blocks in parallel; progress and cancellation between groups, on this thread.
-  constexpr std::size_t kGroupBlocks = 64;
+  constexpr std::size_t kGroupBlocks = 256;
   const ProgressStage progress(interrupter, "marching cubes");
   const auto nx = static_cast<std::size_t>(grid.dims[0]), ny = static_cast<std::size_t>(grid.dims[1]);
   for (std::size_t group = 0; group < outputs.size(); group += kGroupBlocks) {
@@ -227,7 +263,15 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
   const std::size_t slots = firstSlot.back();
   if (slots >= std::numeric_limits<std::uint32_t>::max())
     throw std::length_error("marching cubes: more than 2^32 vertex records; mesh indices are 32-bit");
-  const std::vector<Record> records = weldOrder(outputs, firstSlot, grid.points.size());
+  // The fault sides and placed points are gathered while the records are ordered.
+  std::vector<Record> records;
+  std::vector<std::pair<std::uint64_t, Vec3d>> faultSides;
+  std::vector<std::pair<std::uint64_t, Eigen::Vector3f>> placedPoints;
+  tbb::parallel_invoke([&] { records = weldOrder(outputs, firstSlot, grid.points.size()); },
+                       [&] {
+                         faultSides = mergedFaultSides(outputs);
+                         placedPoints = mergedPlacedPoints(outputs);
+                       });
   std::vector<std::uint32_t> vertexOfSlot, runStart;
   resizeHuge(vertexOfSlot, slots);
   reserveHuge(runStart, slots + 1);
@@ -238,33 +282,7 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
   const std::size_t vertices = runStart.size();
   runStart.push_back(static_cast<std::uint32_t>(slots));
 
-  // Crossings on fault faces, each with the sum of its cells' sides (in block order).
-  std::vector<std::pair<std::uint64_t, Vec3d>> faultSides;
-  for (const BlockOutput& made : outputs)
-    faultSides.insert(faultSides.end(), made.faultSides().begin(), made.faultSides().end());
-  std::stable_sort(faultSides.begin(), faultSides.end(),
-                   [](const auto& x, const auto& y) { return x.first < y.first; });
-  {
-    std::size_t kept = 0;
-    for (std::size_t n = 0; n < faultSides.size(); ++n)
-      if (kept > 0 && faultSides[kept - 1].first == faultSides[n].first)
-        faultSides[kept - 1].second += faultSides[n].second;
-      else
-        faultSides[kept++] = faultSides[n];
-    faultSides.resize(kept);
-    result.faultVertices = static_cast<std::int64_t>(kept);
-  }
-
-  // Placed points: both cells of a face computed a face point's position alike; one of each
-  // key is kept (a lone crossing has one cell).
-  std::vector<std::pair<std::uint64_t, Eigen::Vector3f>> placedPoints;
-  for (const BlockOutput& made : outputs)
-    placedPoints.insert(placedPoints.end(), made.placedPoints().begin(), made.placedPoints().end());
-  std::stable_sort(placedPoints.begin(), placedPoints.end(),
-                   [](const auto& x, const auto& y) { return x.first < y.first; });
-  placedPoints.erase(std::unique(placedPoints.begin(), placedPoints.end(),
-                                 [](const auto& x, const auto& y) { return x.first == y.first; }),
-                     placedPoints.end());
+  result.faultVertices = static_cast<std::int64_t>(faultSides.size());
   result.facePoints = std::count_if(placedPoints.begin(), placedPoints.end(),
                                     [](const auto& point) { return (point.first & kFaceKey) != 0; });
 
@@ -303,15 +321,28 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
                            static_cast<std::uint32_t>(key & 0xffffffffU));
         position = hex::crossingPosition(grid, crossing);
       }
-      const auto fault = std::lower_bound(faultSides.begin(), faultSides.end(), key,
-                                          [](const auto& side, std::uint64_t k) { return side.first < k; });
-      if (fault != faultSides.end() && fault->first == key) position = offFault(position, fault->second);
     }
     m.positions[v] = {position.x(), position.y(), position.z()};
     if (!options.normals) return;
     Vec3d sum = Vec3d::Zero();
     for (std::uint32_t n = runStart[v]; n < runStart[v + 1]; ++n) sum += *gradientOfSlot[records[n].slot];
     gradients[v] = sum;
+  });
+
+  // The first record, and so the first vertex, whose key is not below `key`.
+  const auto firstRecordFrom = [&](std::uint64_t key) {
+    return std::lower_bound(records.begin(), records.end(), key,
+                            [](const Record& r, std::uint64_t k) { return r.key < k; });
+  };
+  // Crossings off fault faces: each found among the records, a few thousand searches where
+  // one per vertex among the fault sides took longer.
+  tbb::parallel_for(std::size_t{0}, faultSides.size(), [&](std::size_t n) {
+    const auto& [key, side] = faultSides[n];
+    const auto record = firstRecordFrom(key);
+    if (record == records.end() || record->key != key) return;
+    auto& at = m.positions[vertexOfSlot[record->slot]];
+    const Eigen::Vector3f moved = offFault(Eigen::Vector3f(at[0], at[1], at[2]), side);
+    at = {moved.x(), moved.y(), moved.z()};
   });
 
   // Triangles in block order, those that welding collapsed dropped: counted, then written.
@@ -338,9 +369,14 @@ HexContourResult contourHexahedra(const CornerPointGrid& grid, const CornerField
       }
   });
   {
-    std::vector<std::uint8_t> atCorner(vertices);
-    for (std::size_t v = 0; v < vertices; ++v) atCorner[v] = (records[runStart[v]].key & kCornerKey) != 0;
-    result.cancelledTwins = static_cast<std::int64_t>(cancelOpposedTwins(m.triangles, result.triangleCells, atCorner));
+    // Corner keys sort after the crossings', face points' and lone crossings', before the centres'.
+    const auto firstVertexFrom = [&](std::uint64_t key) {
+      const auto record = firstRecordFrom(key);
+      return record == records.end() ? static_cast<std::uint32_t>(vertices) : vertexOfSlot[record->slot];
+    };
+    static_assert(kCornerKey > (kFaceKey | kLoneEdgeKey) && kCentreKey > kCornerKey);
+    result.cancelledTwins = static_cast<std::int64_t>(cancelOpposedTwins(
+        m.triangles, result.triangleCells, firstVertexFrom(kCornerKey), firstVertexFrom(kCentreKey)));
   }
   if (options.normals) {
     // Fallback for vertices without a usable gradient (collapsed cells): area-weighted face
