@@ -69,6 +69,19 @@ constexpr int edgeId(int a, int b) {  // 12 edges: axis * 4 + the other two bits
   return axis * 4 + rest;
 }
 
+/// edgeId of each pair of corners that share an edge (-1 for the others), looked up where
+/// cells are contoured (computed there bit by bit: 1-2 % of Marching Cubes on Reek).
+constexpr std::array<std::array<std::int8_t, 8>, 8> kEdgeIds = [] {
+  std::array<std::array<std::int8_t, 8>, 8> ids{};
+  for (int a = 0; a < 8; ++a)
+    for (int b = 0; b < 8; ++b) {
+      const int bit = a ^ b;
+      ids[static_cast<std::size_t>(a)][static_cast<std::size_t>(b)] =
+          static_cast<std::int8_t>(bit == 1 || bit == 2 || bit == 4 ? edgeId(a, b) : -1);
+    }
+  return ids;
+}();
+
 /// How a face is cut, indexed by which of its corners lie above the iso-value (bit e for
 /// kFaces' corner e): its sign changes and, where there are two, the positions of the
 /// edges where the sign goes above -> below (down) and below -> above (up), counter-clockwise.
@@ -87,6 +100,43 @@ constexpr std::array<FaceCase, 16> kFaceCases = [] {
     }
   }
   return cases;
+}();
+
+/// The faces a cell's surface cuts, in face order, by which of its corners lie above the
+/// iso-value (bit c for corner c): for a face with two crossings its segment, from the
+/// crossing on edge (a0, b0) to the one on (a1, b1); a face with four is ambiguous and is
+/// resolved per cell (the asymptotic decider). One look-up per cell where each of the six
+/// faces was tested: Marching Cubes on Reek 2.6 % faster.
+struct FaceCut {
+  std::int8_t face = 0;
+  bool ambiguous = false;
+  std::int8_t a0 = 0, b0 = 0, a1 = 0, b1 = 0;
+};
+struct CellCuts {
+  int count = 0;
+  std::array<FaceCut, 6> faces{};
+};
+constexpr std::array<CellCuts, 256> kCellCuts = [] {
+  std::array<CellCuts, 256> table{};
+  for (int cellCase = 0; cellCase < 256; ++cellCase) {
+    CellCuts& cuts = table[static_cast<std::size_t>(cellCase)];
+    for (int face = 0; face < 6; ++face) {
+      const auto& f = kFaces[face];
+      int faceMask = 0;
+      for (int e = 0; e < 4; ++e) faceMask |= (cellCase >> f[e] & 1) << e;
+      const FaceCase& faceCase = kFaceCases[static_cast<std::size_t>(faceMask)];
+      if (faceCase.crossings == 0) continue;
+      FaceCut& cut = cuts.faces[static_cast<std::size_t>(cuts.count++)];
+      cut.face = static_cast<std::int8_t>(face);
+      cut.ambiguous = faceCase.crossings == 4;
+      if (cut.ambiguous) continue;
+      cut.a0 = static_cast<std::int8_t>(f[faceCase.down]);
+      cut.b0 = static_cast<std::int8_t>(f[(faceCase.down + 1) & 3]);
+      cut.a1 = static_cast<std::int8_t>(f[faceCase.up]);
+      cut.b1 = static_cast<std::int8_t>(f[(faceCase.up + 1) & 3]);
+    }
+  }
+  return table;
 }();
 
 /// The faces (bits of kFaces) that hold each edge (edgeId's numbering).
@@ -371,13 +421,13 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
   const auto& ids = grid.pointIds[cell];
   std::array<double, 8> g;
   std::array<bool, 8> above;
-  int aboveCount = 0;
+  int cellCase = 0;  // bit c: corner c above
   for (int c = 0; c < 8; ++c) {
     g[c] = field.pointValues[ids[c]] - options.iso;
     above[c] = g[c] >= 0;
-    aboveCount += above[c];
+    cellCase |= above[c] << c;
   }
-  if (aboveCount == 0 || aboveCount == 8) return;
+  if (cellCase == 0 || cellCase == 255) return;
   if (collapsed(grid, cell)) return;
   ++block.cutCells;
   const HexCell hex(grid, field, cell, ijk);
@@ -396,19 +446,21 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
   linkFace.fill(-1);
   int face = 0;                                      // the face whose segments are being linked
   auto link = [&](int a0, int b0, int a1, int b1) {  // crossing (a0,b0) -> crossing (a1,b1)
-    const int from = edgeId(a0, b0), to = edgeId(a1, b1);
+    const int from = kEdgeIds[static_cast<std::size_t>(a0)][static_cast<std::size_t>(b0)];
+    const int to = kEdgeIds[static_cast<std::size_t>(a1)][static_cast<std::size_t>(b1)];
     next[from] = to;
     linkFace[from] = face;
     edgeCorners[from] = {a0, b0};
     edgeCorners[to] = {a1, b1};
   };
-  for (; face < 6; ++face) {
-    const auto& f = kFaces[face];
-    const FaceCase& faceCase = kFaceCases[above[f[0]] | above[f[1]] << 1 | above[f[2]] << 2 | above[f[3]] << 3];
-    if (faceCase.crossings == 2) {
-      const int down = faceCase.down, up = faceCase.up;
-      link(f[down], f[(down + 1) % 4], f[up], f[(up + 1) % 4]);
-    } else if (faceCase.crossings == 4) {
+  const CellCuts& cuts = kCellCuts[static_cast<std::size_t>(cellCase)];
+  for (int i = 0; i < cuts.count; ++i) {
+    const FaceCut& cut = cuts.faces[static_cast<std::size_t>(i)];
+    face = cut.face;
+    if (!cut.ambiguous) {
+      link(cut.a0, cut.b0, cut.a1, cut.b1);
+    } else {
+      const auto& f = kFaces[face];
       ++block.ambiguousFaces;
       const double a = g[f[0]], b = g[f[1]], c = g[f[2]], d = g[f[3]];
       const double denominator = a + c - b - d;
@@ -690,7 +742,15 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
     // by 7 m over 230 m; the first apex in loop order left 10, 11 and 20 crossing pairs at
     // PORO 0.15, 0.2 and 0.25). Where the best fan's diagonals leave the cell or come within
     // kFanDepthForCentre of a face and a centre vertex stays deeper, the centre.
-    if (n > 3 && !depthIn.ready()) depthIn.setUp(hex.points);
+    // A triangle is its own fan (the search below would choose its first vertex).
+    if (n == 3) {
+      emit(loop[0], loop[1], loop[2]);
+      ++loopIndex;
+      continue;
+    }
+    if (!depthIn.ready()) depthIn.setUp(hex.points);
+    // Vertex i of the loop, i < 2n (std::size_t's % by a variable n cost a division).
+    const auto wrap = [n](std::size_t i) { return i >= n ? i - n : i; };
     int apex = -1;
     double apexDepth = -std::numeric_limits<double>::infinity();
     // A diagonal serves the fans of both its ends (a quad's two diagonals, its four
@@ -707,13 +767,13 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
     };
     for (std::size_t a = 0; a < n; ++a) {
       bool ok = true;
-      for (std::size_t m = 2; m + 1 < n && ok; ++m) ok = (faces[a] & faces[(a + m) % n]) == 0;
+      for (std::size_t m = 2; m + 1 < n && ok; ++m) ok = (faces[a] & faces[wrap(a + m)]) == 0;
       if (!ok) continue;
       // A triangle has no diagonal. The least depth stops as soon as it cannot beat the best
       // apex so far (the choice is the same, with fewer diagonals evaluated).
       double depth = std::numeric_limits<double>::infinity();
       for (std::size_t m = 2; m + 1 < n && depth > apexDepth + 1e-9; ++m)
-        depth = std::min(depth, depthOfDiagonal(a, (a + m) % n));
+        depth = std::min(depth, depthOfDiagonal(a, wrap(a + m)));
       if (depth > apexDepth + 1e-9) {  // near ties: the first in loop order, as before
         apex = static_cast<int>(a);
         apexDepth = depth;
@@ -731,7 +791,7 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
       if (depth > apexDepth + 1e-9) apex = -1;
     }
     if (apex >= 0) {
-      for (std::size_t m = 1; m + 1 < n; ++m) emit(loop[apex], loop[(apex + m) % n], loop[(apex + m + 1) % n]);
+      for (std::size_t m = 1; m + 1 < n; ++m) emit(loop[apex], loop[wrap(apex + m)], loop[wrap(apex + m + 1)]);
     } else {
       const std::uint64_t key = kCentreKey | (static_cast<std::uint64_t>(cell) << 4) | loopIndex;
       Eigen::Vector3f sum = Eigen::Vector3f::Zero();
@@ -745,7 +805,7 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
       const int c = static_cast<int>(out.keys.size() - cellFirst);
       out.keys.push_back(key);
       if (options.normals) out.gradients.push_back(gradient / static_cast<double>(n));
-      for (std::size_t m = 0; m < n; ++m) emit(c, loop[m], loop[(m + 1) % n]);
+      for (std::size_t m = 0; m < n; ++m) emit(c, loop[m], loop[wrap(m + 1)]);
     }
     ++loopIndex;
   }
