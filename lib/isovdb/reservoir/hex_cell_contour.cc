@@ -769,8 +769,8 @@ void contourCell(const CornerPointGrid& grid, const CornerField& field, std::siz
       bool ok = true;
       for (std::size_t m = 2; m + 1 < n && ok; ++m) ok = (faces[a] & faces[wrap(a + m)]) == 0;
       if (!ok) continue;
-      // A triangle has no diagonal. The least depth stops as soon as it cannot beat the best
-      // apex so far (the choice is the same, with fewer diagonals evaluated).
+      // The least depth stops as soon as it cannot beat the best apex so far (the choice is
+      // the same, with fewer diagonals evaluated).
       double depth = std::numeric_limits<double>::infinity();
       for (std::size_t m = 2; m + 1 < n && depth > apexDepth + 1e-9; ++m)
         depth = std::min(depth, depthOfDiagonal(a, wrap(a + m)));
