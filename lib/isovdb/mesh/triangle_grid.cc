@@ -118,6 +118,18 @@ bool TriangleGrid::anyTriangleNear(const Vec3d& lo, const Vec3d& hi, double reac
   return false;
 }
 
+std::vector<std::uint32_t> TriangleGrid::trianglesNear(const Vec3d& lo, const Vec3d& hi) const {
+  std::vector<std::uint32_t> found;
+  anyTriangleNear(lo, hi, 0.0, [&](const Triangle& t) {
+    found.push_back(static_cast<std::uint32_t>(&t - mesh_.triangles.data()));
+    return false;  // all of them
+  });
+  // A triangle binned in several of the box's bins came once per bin.
+  std::sort(found.begin(), found.end());
+  found.erase(std::unique(found.begin(), found.end()), found.end());
+  return found;
+}
+
 bool TriangleGrid::within(const Vec3f& p, double distance, std::uint32_t* hint) const {
   const Vec3d q = toDouble(p);
   const double limit = distance * distance;

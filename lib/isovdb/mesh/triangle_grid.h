@@ -4,7 +4,8 @@
 /// @brief A mesh's triangles binned in a uniform grid, to ask whether a point lies
 ///        within a given distance of the surface: adaptive mode's error bound asks
 ///        it of the full-resolution vertices inside every coarse leaf
-///        (contour/error_bound.h), hundreds of thousands of times per meta-cell.
+///        (contour/error_bound.h), hundreds of thousands of times per meta-cell; and
+///        which triangles lie in a box (reservoir/untangle_loops.h).
 ///
 /// A yes/no question with a small radius is cheaper than a nearest-triangle search
 /// (CGAL's AABB tree, which `isovdb compare` uses): it visits the bins the query
@@ -35,6 +36,10 @@ class TriangleGrid {
   /// in and out) is a triangle to try first and receives the one found: queries that
   /// walk along the surface mostly find the previous answer close enough again.
   bool within(const Vec3f& p, double distance, std::uint32_t* hint = nullptr) const;
+
+  /// The triangles whose bounding boxes meet the box [lo, hi], each once, in index order
+  /// (untangle_loops: the triangles around a loop, without a pass over the whole mesh).
+  std::vector<std::uint32_t> trianglesNear(const Vec3d& lo, const Vec3d& hi) const;
 
  private:
   const Mesh& mesh_;

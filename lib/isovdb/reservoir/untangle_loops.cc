@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "isovdb/mesh/self_intersection.h"
+#include "isovdb/mesh/triangle_grid.h"
 
 namespace isovdb::reservoir {
 namespace {
@@ -34,73 +35,6 @@ Box boxOf(const mesh::Mesh& m, const Triangle& t) {
   }
   return box;
 }
-
-/// The triangles' boxes binned in a uniform grid (bins about the mean box's size, at most
-/// 128 along an axis): the triangles around a loop without a pass over the whole mesh
-/// (thousands of loops on a mesh of millions would take that many passes).
-class TriangleBins {
- public:
-  explicit TriangleBins(const std::vector<Box>& boxes) : boxes_(boxes), stamp_(boxes.size(), 0) {
-    if (boxes.empty()) return;
-    Box all = boxes.front();
-    double extent = 0;
-    for (const Box& b : boxes)
-      for (int k = 0; k < 3; ++k) {
-        all.lo[k] = std::min(all.lo[k], b.lo[k]);
-        all.hi[k] = std::max(all.hi[k], b.hi[k]);
-        extent += double(b.hi[k]) - b.lo[k];
-      }
-    const double mean = extent / (3.0 * static_cast<double>(boxes.size()));
-    for (int k = 0; k < 3; ++k) {
-      lo_[k] = all.lo[k];
-      const double span = double(all.hi[k]) - all.lo[k];
-      bins_[k] = static_cast<int>(std::clamp(span / std::max(mean, 1e-30) + 1, 1.0, 128.0));
-      size_[k] = std::max(span / bins_[k], 1e-30);
-    }
-    start_.assign(static_cast<std::size_t>(bins_[0]) * bins_[1] * bins_[2] + 1, 0);
-    for (std::size_t t = 0; t < boxes.size(); ++t) forBins(boxes[t], [&](std::size_t bin) { ++start_[bin + 1]; });
-    std::partial_sum(start_.begin(), start_.end(), start_.begin());
-    std::vector<std::uint32_t> fill(start_.begin(), start_.end() - 1);
-    triangles_.resize(start_.back());
-    for (std::size_t t = 0; t < boxes.size(); ++t)
-      forBins(boxes[t], [&](std::size_t bin) { triangles_[fill[bin]++] = static_cast<std::uint32_t>(t); });
-  }
-
-  /// Calls f(triangle) once for each triangle whose box overlaps `box`, in no fixed order.
-  template <class F>
-  void forEachNear(const Box& box, F&& f) {
-    ++query_;
-    forBins(box, [&](std::size_t bin) {
-      for (std::uint32_t n = start_[bin]; n < start_[bin + 1]; ++n) {
-        const std::uint32_t t = triangles_[n];
-        if (stamp_[t] == query_ || !box.overlaps(boxes_[t])) continue;
-        stamp_[t] = query_;
-        f(t);
-      }
-    });
-  }
-
- private:
-  template <class F>
-  void forBins(const Box& box, F&& f) const {
-    std::array<int, 3> from{}, to{};
-    for (int k = 0; k < 3; ++k) {
-      // Clamped as doubles: a cast of an out-of-range double to int is undefined.
-      const double last = bins_[k] - 1;
-      from[k] = static_cast<int>(std::clamp((box.lo[k] - lo_[k]) / size_[k], 0.0, last));
-      to[k] = static_cast<int>(std::clamp((box.hi[k] - lo_[k]) / size_[k], 0.0, last));
-    }
-    for (int z = from[2]; z <= to[2]; ++z)
-      for (int y = from[1]; y <= to[1]; ++y)
-        for (int x = from[0]; x <= to[0]; ++x) f((static_cast<std::size_t>(z) * bins_[1] + y) * bins_[0] + x);
-  }
-
-  const std::vector<Box>& boxes_;
-  std::array<double, 3> lo_{}, size_{1, 1, 1};
-  std::array<int, 3> bins_{1, 1, 1};
-  std::vector<std::uint32_t> start_, triangles_, stamp_;
-  std::uint32_t query_ = 0;
-};
 
 /// A triangle with no area to speak of (a fan across three nearly collinear loop vertices):
 /// never a better choice, though the exact test skips it.
@@ -181,7 +115,13 @@ std::int64_t refanPass(mesh::Mesh& m, std::vector<std::uint32_t>& triangleCells,
   const std::size_t count = m.triangles.size();
   std::vector<Box> boxes(count);
   for (std::size_t t = 0; t < count; ++t) boxes[t] = boxOf(m, m.triangles[t]);
-  TriangleBins bins(boxes);
+  // Bins about the mean triangle box's size: the triangles around a loop without a pass over
+  // the whole mesh (thousands of loops on a mesh of millions would take that many passes).
+  double extent = 0;
+  for (const Box& b : boxes)
+    for (int k = 0; k < 3; ++k) extent += double(b.hi[k]) - b.lo[k];
+  const mesh::TriangleGrid grid(m,
+                                std::max(extent / (3.0 * static_cast<double>(std::max<std::size_t>(count, 1))), 1e-30));
   std::vector<std::uint8_t> removed(count, 0);
   std::map<std::uint32_t, std::vector<Triangle>> replacement;  // at a loop's first triangle
   std::vector<Triangle> added;                                 // every replacement, for later loops
@@ -219,9 +159,9 @@ std::int64_t refanPass(mesh::Mesh& m, std::vector<std::uint32_t>& triangleCells,
         }
       }
       std::vector<std::uint32_t> around;
-      bins.forEachNear(loopBox, [&](std::uint32_t t) {
+      for (const std::uint32_t t : grid.trianglesNear({loopBox.lo[0], loopBox.lo[1], loopBox.lo[2]},
+                                                      {loopBox.hi[0], loopBox.hi[1], loopBox.hi[2]}))
         if (!removed[t] && std::find(loop.begin(), loop.end(), t) == loop.end()) around.push_back(t);
-      });
       std::int64_t best = crossings(current, around, loopBox);
       if (best == 0) continue;
       // A diagonal that is already an edge around the loop (another cell's fan between two
