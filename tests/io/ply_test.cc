@@ -275,15 +275,22 @@ TEST(PlyStreamWriter, PiecesMakeTheSameBytesAsWritePly) {
   // Only the temporaries' names hold the output's name: none is left behind.
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 1);
   // Without a scale, streamed and whole are the same bytes (a run's output does not
-  // depend on which writer the method uses).
-  {
-    PlyStreamWriter writer(dir / "identity.ply", {1, 1, 1}, {0, 0, 0});
-    writer.addVertices(mesh.positions);
-    writer.addTriangles(mesh.triangles);
-    writer.commit();
-  }
+  // depend on which writer the method uses), whether the triangles wait in memory or
+  // spill to a temporary file before it (a budget of none, or of two triangles' bytes:
+  // the first piece waits, the rest spill).
   writePly(dir / "whole.ply", mesh);
-  EXPECT_EQ(test::readFile(dir / "identity.ply"), test::readFile(dir / "whole.ply"));
+  for (const std::size_t budget : {PlyStreamWriter::kDefaultTriangleBytesInMemory, std::size_t{0}, std::size_t{26}}) {
+    SCOPED_TRACE(budget);
+    {
+      PlyStreamWriter writer(dir / "identity.ply", {1, 1, 1}, {0, 0, 0}, budget);
+      writer.addVertices(mesh.positions);
+      writer.addTriangles(std::span(mesh.triangles).first(2));
+      writer.addTriangles(std::span(mesh.triangles).subspan(2));
+      writer.commit();
+    }
+    EXPECT_EQ(test::readFile(dir / "identity.ply"), test::readFile(dir / "whole.ply"));
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 3);  // no spill file left
+  }
 }
 
 TEST(PlyStreamWriter, ABadTriangleOrAnAbandonedWriterLeavesNoFile) {
@@ -298,6 +305,11 @@ TEST(PlyStreamWriter, ABadTriangleOrAnAbandonedWriterLeavesNoFile) {
   {
     PlyStreamWriter writer(dir / "abandoned.ply");  // an interrupted run never commits
     writer.addVertices(mesh.positions);
+  }
+  {
+    PlyStreamWriter writer(dir / "spilled.ply", {1, 1, 1}, {0, 0, 0}, 0);  // nor its spilled triangles
+    writer.addVertices(mesh.positions);
+    writer.addTriangles(mesh.triangles);
   }
   EXPECT_TRUE(std::filesystem::is_empty(dir.path()));
   EXPECT_THROW(PlyStreamWriter(dir / "no" / "dir.ply"), IoError);
