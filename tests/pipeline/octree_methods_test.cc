@@ -12,6 +12,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "generators/shapes.h"
 #include "isovdb/mesh/validate.h"
@@ -160,6 +162,29 @@ TEST(OctreeMethodsRealSample, FrogSkeletonRegularHasTheSkeletonsTopologyAndNeeds
   }
 }
 
+// The skeleton end to end as `extract --method regular` runs it: meta-cells of every size
+// (seams through tubes and split faces) and the caps where the bones leave the data. Its 67
+// self-intersecting pairs all had a triangle of a polygon fanned from a corner.
+TEST(OctreeMethodsRealSample, FrogSkeletonRegularHasEveryGuaranteeAtEveryMetaCellSize) {
+  const volume::Volume mask = frogSkeletonMask();
+  const std::int64_t solid = volume::eulerCharacteristic(mask);
+  std::size_t triangles = 0;
+  for (const int metaCellSize : {0, 16, 128}) {
+    SCOPED_TRACE("meta-cell " + std::to_string(metaCellSize));
+    ExtractOptions options;
+    options.contour.method = ContourMethod::Regular;
+    options.metaCellSize = metaCellSize;
+    const mesh::Mesh mesh = extractMesh(mask, options);
+    const mesh::MeshReport report = mesh::validateMesh(mesh);
+    EXPECT_TRUE(report.closed);
+    EXPECT_TRUE(report.manifold);
+    EXPECT_EQ(report.eulerCharacteristic, 2 * solid);
+    EXPECT_EQ(report.selfIntersectingPairs, 0);
+    if (triangles == 0) triangles = mesh.triangles.size();
+    EXPECT_EQ(mesh.triangles.size(), triangles);  // seams change no polygon
+  }
+}
+
 TEST(OctreeMethodsRealSample, FrogSkeletonAdaptiveIsClosedManifoldWithRegularsTopology) {
   // The skeleton is full of 1-voxel ambiguous faces, doubled faces and 1-voxel cavities
   // inside coarse cells: adaptive mode must come out as closed, manifold and of the same
@@ -209,8 +234,8 @@ TEST(OctreeMethodsTopology, RegularMeshIsTheSixEighteenReadingPlusTheFixedPairs)
 }
 
 /// Regular mode's default reading is the voxel object's: 26-connected inside, 6-connected
-/// outside, whatever the meta-cell size (seams cut through split faces and tubes), and both
-/// the split faces and the tubes are needed for it. Random voxels at several densities are
+/// outside, whatever the meta-cell size (seams cut through split faces and tubes), free of
+/// self-intersections, and both the split faces and the tubes are needed for it. Random voxels at several densities are
 /// full of bridges (face-diagonal contacts with the outside going round) and vertex contacts.
 TEST(OctreeMethodsTopology, RegularMeshHasTheVoxelObjectsTopology) {
   for (unsigned seed : {1u, 2u, 3u, 6u}) {
@@ -228,13 +253,14 @@ TEST(OctreeMethodsTopology, RegularMeshHasTheVoxelObjectsTopology) {
       Statistics stats;
       const mesh::Mesh mesh =
           contourWithOctree(sdf, {.method = ContourMethod::Regular}, {}, metaCellSize, nullptr, &stats);
-      const mesh::MeshReport report = mesh::validateMesh(mesh, {.selfIntersections = false});
+      const mesh::MeshReport report = mesh::validateMesh(mesh);
       const auto& figures = stats[metaCellSize == 0 ? "octree" : "meta_cells"];
       EXPECT_TRUE(report.closed);
       EXPECT_EQ(report.nonManifoldEdges, 0);
       EXPECT_EQ(report.nonManifoldVertices, 0);
       EXPECT_EQ(report.inconsistentlyOrientedEdges, 0);
       EXPECT_EQ(report.eulerCharacteristic, 2 * solid);
+      EXPECT_EQ(report.selfIntersectingPairs, 0);                   // inside the box: no cap is flattened
       EXPECT_GT(figures["manifold_fixes"].get<std::int64_t>(), 0);  // split faces
       EXPECT_GT(figures["tube_cells"].get<std::int64_t>(), 0);
       std::printf(
@@ -249,6 +275,52 @@ TEST(OctreeMethodsTopology, RegularMeshHasTheVoxelObjectsTopology) {
     const mesh::MeshReport unsplit = mesh::validateMesh(
         contourWithOctree(sdf, {.method = ContourMethod::Regular, .manifoldFix = false}), {.selfIntersections = false});
     EXPECT_GT(unsplit.nonManifoldEdges, 0) << seed;
+  }
+}
+
+/// The voxel reading keeps every polygon inside its edge's envelope: those of more than
+/// four corners (a tube cell's two sectors, a split face's vertex) are fanned from the
+/// edge's crossing, so each triangle stays in the one or two cells of its corners, and a
+/// quad whose diagonal leaves Ju–Udeshi's envelope takes the other diagonal or the same
+/// fan. Without that (--no-intersection-free: corner fans, the better diagonal) these
+/// chains of voxels touching at corners (tubes) and at edges (split faces), pairs touching
+/// along an edge and a plate with diagonal holes have 15 self-intersecting pairs.
+TEST(OctreeMethodsTopology, RegularVoxelReadingContactsAreFreeOfSelfIntersections) {
+  std::vector<std::array<int, 3>> voxels;
+  for (int i = 2; i < 10; ++i) {
+    voxels.push_back({i, i, i});           // a body-diagonal chain
+    voxels.push_back({i, 11 - i, i});      // and another, crossing it
+    voxels.push_back({14 + i % 2, i, 3});  // face-diagonal staircases
+    voxels.push_back({14, i, 6 + i % 2});
+  }
+  for (int i = 3; i < 20; i += 3) {
+    voxels.push_back({i, 18, 18});  // edge-touching pairs
+    voxels.push_back({i + 1, 19, 18});
+  }
+  auto stream = test::VectorSliceStream::fromFunction({24, 24, 24}, [&](int x, int y, int z) {
+    const bool plate = x >= 4 && x < 20 && y >= 4 && y < 20 && z == 20;
+    const bool hole = x == y && x >= 5 && x < 20;  // diagonal holes through the plate
+    const bool listed = std::find(voxels.begin(), voxels.end(), std::array<int, 3>{x, y, z}) != voxels.end();
+    return listed || (plate && !hole) ? 1.f : 0.f;
+  });
+  auto again = stream.rewound();
+  const std::int64_t solid = volume::eulerCharacteristic(again, {});
+  const volume::Volume sdf = toContourable(volume::ingestMask(stream, {}), {});
+  for (const int metaCellSize : {0, 16}) {
+    SCOPED_TRACE("meta-cell " + std::to_string(metaCellSize));
+    Statistics stats;
+    const mesh::Mesh mesh =
+        contourWithOctree(sdf, {.method = ContourMethod::Regular}, {}, metaCellSize, nullptr, &stats);
+    const mesh::MeshReport report = mesh::validateMesh(mesh);
+    EXPECT_GT(stats[metaCellSize == 0 ? "octree" : "meta_cells"]["tube_cells"].get<std::int64_t>(), 0);
+    EXPECT_TRUE(report.closed);
+    EXPECT_TRUE(report.manifold);
+    EXPECT_EQ(report.eulerCharacteristic, 2 * solid);
+    EXPECT_EQ(report.selfIntersectingPairs, 0);
+    const mesh::Mesh plain =
+        contourWithOctree(sdf, {.method = ContourMethod::Regular, .intersectionFree = false}, {}, metaCellSize);
+    EXPECT_GT(mesh::validateMesh(plain).selfIntersectingPairs, 0);
+    EXPECT_LT(plain.triangles.size(), mesh.triangles.size());  // the fans' extra triangles
   }
 }
 

@@ -53,21 +53,22 @@ void expectSameGuaranteesAsOneBlock(const volume::Volume& sdf, ContourMethod met
   const bool regular = method == ContourMethod::Regular;
   const Contoured single = contour(sdf, method, 0);
   const Contoured stitched = contour(sdf, method, metaCellSize);
-  const mesh::MeshReport one = mesh::validateMesh(single.mesh, {.selfIntersections = !regular});
-  const mesh::MeshReport many = mesh::validateMesh(stitched.mesh, {.selfIntersections = !regular});
+  const mesh::MeshReport one = mesh::validateMesh(single.mesh);
+  const mesh::MeshReport many = mesh::validateMesh(stitched.mesh);
   SCOPED_TRACE((regular ? "regular, meta-cell " : "adaptive, meta-cell ") + std::to_string(metaCellSize));
   ASSERT_GT(many.triangles, 0);
   EXPECT_TRUE(many.closed);
   EXPECT_EQ(many.inconsistentlyOrientedEdges, 0);
   EXPECT_EQ(many.eulerCharacteristic, one.eulerCharacteristic);
   EXPECT_EQ(many.components, one.components);
+  EXPECT_EQ(many.selfIntersectingPairs, 0);
   if (regular) {
     EXPECT_EQ(many.nonManifoldEdges, 0);
     EXPECT_EQ(many.nonManifoldVertices, 0);
-    // Regular leaves are 1-voxel cells on the same grid either way: the same quads.
-    EXPECT_EQ(many.triangles, one.triangles);
-  } else {
-    EXPECT_EQ(many.selfIntersectingPairs, 0);
+    // Regular leaves are 1-voxel cells on the same grid either way: the same polygons. Only
+    // a quad lying on its envelope's boundary (flat, across a one-voxel sheet) may be fanned
+    // (two more triangles) on one side of the vertices' last bits and not on the other.
+    EXPECT_NEAR(static_cast<double>(many.triangles), static_cast<double>(one.triangles), 0.01 * one.triangles);
   }
   // The seams were really stitched, and no deferred edge lacked a kept cell.
   const auto& st = stitched.stats.json()["stitch"];

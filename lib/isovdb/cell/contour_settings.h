@@ -68,9 +68,10 @@ struct ContourSettings {
   /// Wenger's fix on doubled ambiguous faces (regular voxels: split doubled faces);
   /// off only in tests that show it matters.
   bool manifoldFix = true;
-  /// Adaptive, and regular in Wenger's reading: Ju–Udeshi fans where the plain
-  /// triangulation would leave its envelope; off = plain dual contouring (regular:
-  /// manifold DMC's quads), for comparison.
+  /// Ju–Udeshi fans where the plain triangulation would leave its edge's envelope: adaptive
+  /// mode, regular mode in Wenger's reading, and in the voxel reading (its polygons of more
+  /// than four corners always fanned from the edge point, contour/voxel_dmc.h); off = plain
+  /// dual contouring (regular: the better diagonal, polygons fanned from a corner), for comparison.
   bool intersectionFree = true;
   /// Regular: the reading of ambiguous cells.
   RegularTopology topology = RegularTopology::Voxels;
@@ -84,6 +85,10 @@ struct ContourSettings {
   /// voxel reading it gets it only where the background lies inside the surface (beyond
   /// the box it reads far outside; its caps are flattened onto the box afterwards).
   std::optional<DataBox> dataBox{};
+  /// The sampled box where the caps are flattened onto it after contouring instead (the
+  /// voxel reading where the background lies outside): its polygons whose cells reach
+  /// beyond it keep a fan from a corner (contour/voxel_dmc.h).
+  std::optional<DataBox> flattenedBox{};
 
   /// Contoured by minimal edges with Ju–Udeshi fans (contour/adaptive_contour.h): adaptive
   /// mode, and regular mode in Wenger's reading (fields) unless intersectionFree is off.

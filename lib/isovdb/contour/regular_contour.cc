@@ -11,12 +11,14 @@
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "isovdb/cell/dmc_table.h"
 #include "isovdb/cell/dual_vertex.h"
+#include "isovdb/cell/edge_intersection.h"
 #include "isovdb/contour/leaf_groups.h"
 #include "isovdb/contour/voxel_dmc.h"
 #include "isovdb/errors.h"
@@ -34,6 +36,24 @@ using octree::LinearOctree;
 using octree::OctreeLeaf;
 
 constexpr std::size_t kGrain = 256;
+/// Provisional ids of a chunk's edge points (a block has far fewer than 2^31 vertices).
+constexpr std::uint32_t kChunkVertex = std::uint32_t{1} << 31;
+/// Edge points stay this fraction of the edge away from its ends.
+constexpr float kEdgePointMargin = 1e-3f;
+
+/// Where the surface crosses a leaf's edge from `start` (meta-cell offsets) along `axis`,
+/// `length` voxels long: voxels from `start`, kept off the ends (the midpoint where the
+/// samples show no crossing, which a bipolar edge always has).
+float edgeCrossingOffset(const MetaCellSamples& samples, const std::array<int, 3>& start, int axis, int length,
+                         float iso) {
+  cell::EdgeIntersection hit;
+  const float t =
+      cell::intersectEdge(samples, start, axis, length, iso, hit)
+          ? hit.point[static_cast<std::size_t>(axis)] - static_cast<float>(start[static_cast<std::size_t>(axis)])
+          : 0.5f * static_cast<float>(length);
+  const float margin = kEdgePointMargin * static_cast<float>(length);
+  return std::clamp(t, margin, static_cast<float>(length) - margin);
+}
 
 /// Shape quality of a triangle in [0, 1]: 4 sqrt(3) area / sum of squared edge lengths (1 = equilateral).
 double triangleQuality(const mesh::Vec3f& a, const mesh::Vec3f& b, const mesh::Vec3f& c) noexcept {
@@ -139,13 +159,32 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
   // left to stitching. Chunks of leaves in order keep the output independent of the threads.
   const std::size_t chunks = (n + kGrain - 1) / kGrain;
   std::vector<std::vector<mesh::Triangle>> chunkTriangles(chunks);
+  std::vector<std::vector<mesh::Vec3f>> chunkPoints(chunks);  // edge points of fanned polygons
   std::vector<std::int64_t> chunkEdges(chunks, 0);
   std::vector<std::int32_t> leafBoundaryEdges(n, 0);
   // Constant-time lookups of the cells around an edge, where the index pays for its memory.
   std::optional<octree::UnitLeafIndex> unitLeaves;
   if (octree::UnitLeafIndex::pays(metaSize, n)) unitLeaves.emplace(regularTree);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks), [&](const tbb::blocked_range<std::size_t>& r) {
+    // A fanned polygon's edge point is a vertex of its own, numbered after the cells' vertices
+    // once every chunk's count is known. Made once per range (a std::function per edge
+    // allocated): it reads the edge from these.
+    std::array<int, 3> edgeStart{};
+    const OctreeLeaf* edgeLeaf = nullptr;
+    int edgeAxis = 0;
+    std::size_t chunk = 0;
+    const EdgePointFn noEdgePoint;
+    const EdgePointFn addEdgePoint = [&] {
+      const float t = edgeCrossingOffset(samples, edgeLeaf->origin, edgeAxis, edgeLeaf->size, options.iso);
+      mesh::Vec3f point{};
+      for (int a = 0; a < 3; ++a)
+        point[static_cast<std::size_t>(a)] =
+            static_cast<float>(edgeStart[static_cast<std::size_t>(a)]) + (a == edgeAxis ? t : 0.0f);
+      chunkPoints[chunk].push_back(point);
+      return kChunkVertex | static_cast<std::uint32_t>(chunkPoints[chunk].size() - 1);
+    };
     for (std::size_t c = r.begin(); c != r.end(); ++c) {
+      chunk = c;
       std::vector<mesh::Triangle>& triangles = chunkTriangles[c];
       for (std::size_t i = c * kGrain; i < std::min(n, (c + 1) * kGrain); ++i) {
         const std::uint16_t bipolar = octree::bipolarEdgeMask(config[i]);
@@ -167,26 +206,47 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
           if (!regular) continue;
           ++chunkEdges[c];
           // The voxel reading's cells without tube sectors or split faces give the edge one
-          // vertex each: its plain quad (voxelEdgeTriangles' own first case), without
-          // gathering every vertex of the four cells.
+          // vertex each: its quad (voxelEdgeTriangles' own first case), without gathering
+          // every vertex of the four cells.
           const bool plainVoxelQuad = groups.voxels && std::all_of(around.begin(), around.end(), [&](std::int64_t j) {
                                         const auto u = static_cast<std::size_t>(j);
                                         return groups.splitFaces[u] == 0 && !isTubeConfig(config[u]);
                                       });
-          if (groups.voxels && !plainVoxelQuad) {
+          if (groups.voxels) {
+            for (int a = 0; a < 3; ++a) edgeStart[static_cast<std::size_t>(a)] = samples.origin[a] + leaf.origin[a];
+            edgeLeaf = &leaf;
+            edgeAxis = axis;
+            // Near a box the caps are flattened onto afterwards, the envelope of the edge
+            // would be tested at positions that still move: plain polygons there.
+            const EdgePointFn& edgePoint =
+                options.intersectionFree && edgePointFanKeepsShape(edgeStart, axis, leaf.size, options.flattenedBox)
+                    ? addEdgePoint
+                    : noEdgePoint;
+            if (plainVoxelQuad) {
+              std::array<std::uint32_t, 4> ids{};
+              std::array<mesh::Vec3f, 4> positions{};
+              for (int q = 0; q < 4; ++q) {
+                const auto j = static_cast<std::size_t>(around[static_cast<std::size_t>(q)]);
+                const int g = voxelDmcEntry(config[j]).vertexOfEdge[static_cast<std::size_t>(4 * axis + 3 - q)];
+                assert(g >= 0);
+                ids[static_cast<std::size_t>(q)] = vertexBase[j] + static_cast<std::uint32_t>(g);
+                positions[static_cast<std::size_t>(q)] = out.positions[ids[static_cast<std::size_t>(q)]];
+              }
+              voxelQuadTriangles(ids, positions, axis, (config[i] & 1) != 0, edgeStart, leaf.size, edgePoint,
+                                 triangles);
+              continue;
+            }
             std::array<VoxelEdgeCell, 4> cells;
             for (int q = 0; q < 4; ++q)
               cells[static_cast<std::size_t>(q)] =
                   voxelEdgeCell(groups, out.positions, static_cast<std::size_t>(around[static_cast<std::size_t>(q)]));
-            voxelEdgeTriangles(cells, axis, triangles);
+            voxelEdgeTriangles(cells, axis, edgeStart, leaf.size, triangles, edgePoint);
             continue;
           }
           appendRegularEdgeQuad(
               [&](int q) -> std::optional<EdgeVertex> {
                 const auto j = static_cast<std::size_t>(around[static_cast<std::size_t>(q)]);
-                const int g = plainVoxelQuad
-                                  ? voxelDmcEntry(config[j]).vertexOfEdge[static_cast<std::size_t>(4 * axis + 3 - q)]
-                                  : cell::dmcVertexOfEdge(config[j], alternative[j] != 0, axis, q);
+                const int g = cell::dmcVertexOfEdge(config[j], alternative[j] != 0, axis, q);
                 assert(g >= 0);
                 const std::uint32_t id = vertexBase[j] + static_cast<std::uint32_t>(g);
                 return EdgeVertex{id, out.positions[id]};
@@ -197,6 +257,14 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
     }
   });
 
+  // The edge points after the cells' vertices, chunk by chunk (independent of the threads).
+  for (std::size_t c = 0; c < chunks; ++c) {
+    const auto base = static_cast<std::uint32_t>(out.positions.size());
+    for (mesh::Triangle& t : chunkTriangles[c])
+      for (std::uint32_t& v : t)
+        if (v != kNoVertex && (v & kChunkVertex) != 0) v = base + (v & ~kChunkVertex);
+    out.positions.insert(out.positions.end(), chunkPoints[c].begin(), chunkPoints[c].end());
+  }
   std::size_t triangleCount = 0;
   for (const auto& t : chunkTriangles) triangleCount += t.size();
   out.triangles.reserve(triangleCount);
@@ -211,6 +279,18 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
     const cell::DmcEntry& entry = groups.entry(i);
     if (entry.vertexCount == 0 || !touchesMetaCellBoundary(leaf.origin, leaf.size, metaSize)) continue;
     SeamCell cell = seamCellOf(leaf, samples.origin, alternative[i] != 0);  // config[i] is leaf.cornerSigns
+    if (groups.voxels) {  // the stitcher's edge points (voxelEdgeTriangles)
+      const std::uint16_t bipolar = octree::bipolarEdgeMask(config[i]);
+      for (int e = 0; e < 12; ++e) {
+        float& t = cell.edgeCrossing[static_cast<std::size_t>(e)];
+        t = std::numeric_limits<float>::quiet_NaN();
+        if (((bipolar >> e) & 1) == 0) continue;
+        const int c0 = octree::cellEdgeCorner(e, 0);
+        std::array<int, 3> start = leaf.origin;
+        for (int a = 0; a < 3; ++a) start[static_cast<std::size_t>(a)] += ((c0 >> a) & 1) * leaf.size;
+        t = edgeCrossingOffset(samples, start, octree::cellEdgeAxis(e), leaf.size, options.iso);
+      }
+    }
     const VoxelEdgeCell vertices = voxelEdgeCell(groups, out.positions, i);
     cell.vertices = vertices.vertices;
     cell.positions = vertices.positions;

@@ -56,8 +56,8 @@ struct SeamCell {
   /// axis a is split, and the ids of those faces' split vertices (by splitVertexSlot).
   std::uint8_t splitFaces = 0;
   std::array<std::uint32_t, 6> splitVertices{kNoVertex, kNoVertex, kNoVertex, kNoVertex, kNoVertex, kNoVertex};
-  /// Adaptive: crossing of each bipolar cell edge as a fraction of the edge (NaN for the others),
-  /// for the edge points of Ju–Udeshi fans.
+  /// Crossing of each bipolar cell edge, voxels from its start (NaN for the others): the edge
+  /// points of adaptive mode's Ju–Udeshi fans and of the voxel reading's fanned polygons.
   std::array<float, 12> edgeCrossing{};
 };
 

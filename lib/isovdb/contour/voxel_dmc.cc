@@ -2,10 +2,12 @@
 // Copyright Contributors to the isovdb project.
 #include "isovdb/contour/voxel_dmc.h"
 
+#include <algorithm>
 #include <bit>
 #include <cassert>
 
 #include "isovdb/bit_count.h"
+#include "isovdb/contour/ju_udeshi.h"
 #include "isovdb/contour/regular_contour.h"
 #include "isovdb/octree/morton.h"
 
@@ -106,7 +108,9 @@ std::array<std::uint16_t, 2> splitVertexEdges(std::uint8_t config, int face) noe
           static_cast<std::uint16_t>(bipolar & octree::cellFaceEdgesAtCorner(face, corners[1]))};
 }
 
-int voxelEdgeTriangles(const std::array<VoxelEdgeCell, 4>& cells, int axis, std::vector<mesh::Triangle>& out) {
+int voxelEdgeTriangles(const std::array<VoxelEdgeCell, 4>& cells, int axis, const std::array<int, 3>& edgeStart,
+                       int cellSize, std::vector<mesh::Triangle>& out,
+                       const std::function<std::uint32_t()>& edgePoint) {
   static constexpr std::array<int, 4> kCounterClockwise{0, 1, 3, 2};
   std::array<std::uint32_t, 12> polygon{};
   std::size_t size = 0;
@@ -154,11 +158,17 @@ int voxelEdgeTriangles(const std::array<VoxelEdgeCell, 4>& cells, int axis, std:
       v[static_cast<std::size_t>(q)] = cell.vertices[static_cast<std::size_t>(g)];
       p[static_cast<std::size_t>(q)] = cell.positions[static_cast<std::size_t>(g)];
     }
-    const auto quad = regularEdgeQuad(v, p, axis, minEndInside);
-    out.insert(out.end(), quad.begin(), quad.end());
-    return 2;
+    return voxelQuadTriangles(v, p, axis, minEndInside, edgeStart, cellSize, edgePoint, out);
   }
   const bool reversed = minEndInside != (axis != 1);
+  if (edgePoint) {
+    const std::uint32_t centre = edgePoint();
+    for (std::size_t i = 0; i < size; ++i) {
+      const std::size_t from = reversed ? (size - i) % size : i, to = reversed ? size - 1 - i : (i + 1) % size;
+      out.push_back(mesh::Triangle{centre, polygon[from], polygon[to]});
+    }
+    return static_cast<int>(size);
+  }
   if (apex < 0) apex = 0;
   // Fanned from the apex, walking the polygon forwards or backwards.
   const auto at = [&](std::size_t i) {
@@ -167,6 +177,99 @@ int voxelEdgeTriangles(const std::array<VoxelEdgeCell, 4>& cells, int axis, std:
   };
   for (std::size_t i = 1; i + 1 < size; ++i) out.push_back(mesh::Triangle{at(0), at(i), at(i + 1)});
   return static_cast<int>(size) - 2;
+}
+
+int voxelQuadTriangles(const std::array<std::uint32_t, 4>& v, const std::array<mesh::Vec3f, 4>& p, int axis,
+                       bool minEndInside, const std::array<int, 3>& edgeStart, int size,
+                       const std::function<std::uint32_t()>& edgePoint, std::vector<mesh::Triangle>& out) {
+  const auto quad = regularEdgeQuad(v, p, axis, minEndInside);
+  if (!edgePoint) {
+    out.insert(out.end(), quad.begin(), quad.end());
+    return 2;
+  }
+  // Ju–Udeshi's envelope of the edge: the cells' vertices in cyclic order (quadrants 0, 1,
+  // 3, 2) and the points where the segments between neighbours cross their shared faces.
+  static constexpr std::array<int, 4> kCycle{0, 1, 3, 2};
+  const auto uv = otherAxes(axis);
+  EdgeEnvelope envelope;
+  bool crossed = true;
+  for (int a = 0; a < 3; ++a) {
+    envelope.edgeStart[a] = edgeStart[static_cast<std::size_t>(a)];
+    envelope.edgeEnd[a] = edgeStart[static_cast<std::size_t>(a)] + (a == axis ? size : 0);
+  }
+  const auto point = [&](int q) {
+    const mesh::Vec3f& x = p[static_cast<std::size_t>(q)];
+    return Vec3d{x[0], x[1], x[2]};
+  };
+  for (int k = 0; k < 4; ++k) {
+    const int q = kCycle[static_cast<std::size_t>(k)], next = kCycle[static_cast<std::size_t>((k + 1) % 4)];
+    envelope.cellPoints[static_cast<std::size_t>(k)] = point(q);
+    // The face between them lies on the plane of the edge across which their quadrants differ.
+    const int bit = (q ^ next) == 1 ? 0 : 1, other = 1 - bit;
+    const int n = uv[static_cast<std::size_t>(bit)], m = uv[static_cast<std::size_t>(other)];
+    MinimalFace face;
+    face.axis = n;
+    face.coordinate = edgeStart[static_cast<std::size_t>(n)];
+    face.size = size;
+    for (int a = 0; a < 3; ++a) face.min[a] = edgeStart[static_cast<std::size_t>(a)];
+    if (((q >> other) & 1) == 0) face.min[m] -= size;
+    const bool qOnMinSide = ((q >> bit) & 1) == 0;
+    const FacePoint fp =
+        qOnMinSide ? computeFacePoint(point(q), point(next), face) : computeFacePoint(point(next), point(q), face);
+    envelope.facePoints[static_cast<std::size_t>(k)] = fp.point;
+    crossed = crossed && fp.crossed;
+  }
+  const auto position = [&](std::uint32_t id) {
+    for (int q = 0; q < 4; ++q)
+      if (v[static_cast<std::size_t>(q)] == id) return point(q);
+    return Vec3d{0, 0, 0};
+  };
+  const auto inside = [&](const std::array<mesh::Triangle, 2>& pair) {
+    // The diagonal joins cyclic positions 0 and 2 (quadrants 0, 3) or 1 and 3.
+    const bool diagonal03 = std::find(pair[1].begin(), pair[1].end(), v[0]) != pair[1].end() &&
+                            std::find(pair[0].begin(), pair[0].end(), v[0]) != pair[0].end();
+    if (crossed && clearlyInsideEnvelope(envelope, diagonal03 ? 0 : 1)) return true;
+    for (const mesh::Triangle& t : pair)
+      if (!triangleInEnvelope(envelope, position(t[0]), position(t[1]), position(t[2]))) return false;
+    return true;
+  };
+  if (inside(quad)) {
+    out.insert(out.end(), quad.begin(), quad.end());
+    return 2;
+  }
+  // The other diagonal, else the fan through the edge's crossing, both in the quad's
+  // orientation: its corners in order are (V0, V1, V2) + V3 whichever diagonal it took.
+  const mesh::Triangle& a = quad[0];
+  const mesh::Triangle& b = quad[1];
+  const bool diagonal02 = a[0] == b[0];  // (V0, V1, V2), (V0, V2, V3); else (V0, V1, V3), (V1, V2, V3)
+  const std::array<std::uint32_t, 4> ring = diagonal02 ? std::array<std::uint32_t, 4>{a[0], a[1], a[2], b[2]}
+                                                       : std::array<std::uint32_t, 4>{a[0], a[1], b[1], b[2]};
+  const std::array<mesh::Triangle, 2> other =
+      diagonal02 ? std::array<mesh::Triangle, 2>{mesh::Triangle{ring[0], ring[1], ring[3]},
+                                                 mesh::Triangle{ring[1], ring[2], ring[3]}}
+                 : std::array<mesh::Triangle, 2>{mesh::Triangle{ring[0], ring[1], ring[2]},
+                                                 mesh::Triangle{ring[0], ring[2], ring[3]}};
+  if (inside(other)) {
+    out.insert(out.end(), other.begin(), other.end());
+    return 2;
+  }
+  const std::uint32_t centre = edgePoint();
+  for (int k = 0; k < 4; ++k)
+    out.push_back(
+        mesh::Triangle{centre, ring[static_cast<std::size_t>(k)], ring[static_cast<std::size_t>((k + 1) % 4)]});
+  return 4;
+}
+
+bool edgePointFanKeepsShape(const std::array<int, 3>& start, int axis, int size,
+                            const std::optional<cell::DataBox>& flattenedBox) noexcept {
+  if (!flattenedBox) return true;
+  for (int a = 0; a < 3; ++a) {
+    const int lo = start[static_cast<std::size_t>(a)] - (a == axis ? 0 : size);
+    const int hi = start[static_cast<std::size_t>(a)] + size;
+    if (lo < (*flattenedBox)[0][static_cast<std::size_t>(a)] || hi > (*flattenedBox)[1][static_cast<std::size_t>(a)])
+      return false;
+  }
+  return true;
 }
 
 }  // namespace isovdb::contour

@@ -36,6 +36,8 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <vector>
 
 #include "isovdb/cell/contour_settings.h"
@@ -82,10 +84,45 @@ struct VoxelEdgeCell {
   std::array<std::uint32_t, 6> splitVertices{};  ///< ids of its split vertices, by splitVertexSlot
 };
 
-/// @brief Appends the triangles (outward) of the polygon of the bipolar edge
-///        along `axis` that the four cells surround (cells[q]: bit 0 of q = +u
-///        side, bit 1 = +v; the edge is cell q's local edge 4 * axis + 3 - q).
-/// @return the number of triangles appended (2 for a quad).
-int voxelEdgeTriangles(const std::array<VoxelEdgeCell, 4>& cells, int axis, std::vector<mesh::Triangle>& out);
+/// Adds the vertex at an edge's crossing and returns its id (empty: no such vertex).
+using EdgePointFn = std::function<std::uint32_t()>;
+
+/// @brief Appends the triangles (outward) of the polygon of the bipolar edge from
+///        `edgeStart` (global index coordinates) along `axis`, between four cells of side
+///        `cellSize` (cells[q]: bit 0 of q = +u side, bit 1 = +v; the edge is cell q's
+///        local edge 4 * axis + 3 - q).
+///
+/// With `edgePoint`: polygons of more than four corners are fanned from the edge's crossing
+/// (a vertex `edgePoint` adds, called only when needed): each triangle joins it to two
+/// consecutive corners, which lie in one cell (a tube's two sectors; a cell vertex and a
+/// split vertex on its face) or in two cells across their shared face, so it stays within
+/// them. A fan from one of the corners spans the four cells and crossed its neighbours'
+/// triangles (frog skeleton: 67 self-intersecting pairs, each with such a triangle; with
+/// the edge point: none). Quads go to voxelQuadTriangles. Without `edgePoint` (the caller's
+/// `--no-intersection-free`, or cells beyond a box their caps are flattened onto), polygons
+/// are fanned from their first split vertex, else their first corner, and quads take the
+/// better diagonal (regularEdgeQuad).
+/// @return the number of triangles appended.
+int voxelEdgeTriangles(const std::array<VoxelEdgeCell, 4>& cells, int axis, const std::array<int, 3>& edgeStart,
+                       int cellSize, std::vector<mesh::Triangle>& out, const EdgePointFn& edgePoint);
+
+/// @brief The voxel reading's quad of one edge (four cells, one vertex each; `vertices` and
+///        `positions` by quadrant as in regularEdgeQuad): the better diagonal if its two
+///        triangles stay inside the edge's Ju–Udeshi envelope (contour/ju_udeshi.h), else the
+///        other if they do, else the fan of four triangles through the edge's crossing
+///        (`edgePoint`). Without `edgePoint`, the better diagonal (no test).
+/// @return the number of triangles appended (2 or 4).
+int voxelQuadTriangles(const std::array<std::uint32_t, 4>& vertices, const std::array<mesh::Vec3f, 4>& positions,
+                       int axis, bool minEndInside, const std::array<int, 3>& edgeStart, int cellSize,
+                       const EdgePointFn& edgePoint, std::vector<mesh::Triangle>& out);
+
+/// @brief Whether the polygon of the edge from `start` (global index coordinates) along
+///        `axis`, between four cells of side `size`, may be fanned from its edge point:
+///        yes unless a cell reaches beyond `flattenedBox`, the box its caps are flattened
+///        onto after contouring (pipeline/data_boundary.h). Flattening moves the vertices
+///        beyond it onto its face, and a fan around a point of the edge, flattened, folded
+///        over itself (random 24^3 masks touching the box: 3-10x the pairs of a corner fan).
+bool edgePointFanKeepsShape(const std::array<int, 3>& start, int axis, int size,
+                            const std::optional<cell::DataBox>& flattenedBox) noexcept;
 
 }  // namespace isovdb::contour

@@ -246,6 +246,7 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
   } else {
     octree::OctreeOptions tree = options.octree;
     if (capsMade) settings.dataBox = {{box->min, box->max}};
+    if (box && !capsMade) settings.flattenedBox = {{box->min, box->max}};
     if (part && part->received) {
       SeamedMeshAssembler assembler(settings, options.metaCellSize, capped);
       volume::MetaCellIndex index{};

@@ -107,8 +107,8 @@ std::vector<Setting> extractSettings(ExtractChoices& c) {
            "on smooth bodies; <= 0 off",
            &o.octree.maxError},
           {"intersection-free",
-           "adaptive, and regular on fields (--topology mdmc): Ju-Udeshi fans where plain dual contouring would "
-           "self-intersect (off: plain DC, regular: manifold DMC's quads, for comparison)",
+           "adaptive and regular: Ju-Udeshi fans where plain dual contouring would self-intersect (off: plain DC, "
+           "regular: the better quad diagonal and polygons fanned from a corner, for comparison)",
            &o.contour.intersectionFree, /*negatable=*/true},
           {"sharp-features",
            "adaptive: keep the sharp edges and corners of an exact distance field (e.g. a CAD level set .vdb). Off by "

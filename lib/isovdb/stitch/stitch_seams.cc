@@ -35,9 +35,11 @@ contour::VoxelEdgeCell voxelEdgeCell(const SeamCell& cell) {
 
 /// Regular mode: the quad (voxel topology: polygon) of every bipolar edge the seam owns, by its owner (the leaf in
 /// quadrant 3).
-void stitchRegular(const Seam& seam, const EdgeOctree& edgeTree, int s, bool voxels, mesh::Mesh& out,
-                   StitchStats& stats) {
+void stitchRegular(const Seam& seam, const EdgeOctree& edgeTree, int s, bool voxels, bool intersectionFree,
+                   const std::optional<cell::DataBox>& flattenedBox, const contour::VertexAdder& addVertex,
+                   mesh::Mesh& out, StitchStats& stats) {
   const LinearOctree& tree = edgeTree.tree;
+  const contour::EdgePointFn none;
   for (std::size_t i = 0; i < tree.leafCount(); ++i) {
     const octree::OctreeLeaf& leaf = tree.leaf(i);
     const std::uint16_t bipolar = octree::bipolarEdgeMask(leaf.cornerSigns);
@@ -57,7 +59,18 @@ void stitchRegular(const Seam& seam, const EdgeOctree& edgeTree, int s, bool vox
           ++stats.missingCells;
           continue;
         }
-        contour::voxelEdgeTriangles(cells, axis, out.triangles);
+        // The owner's local edge 4 * axis starts at its origin; its crossing came with the cell.
+        const SeamCell& owner = *edgeTree.cells[i];
+        const contour::EdgePointFn addEdgePoint = [&] {
+          contour::Vec3d point{static_cast<double>(owner.origin[0]), static_cast<double>(owner.origin[1]),
+                               static_cast<double>(owner.origin[2])};
+          point[static_cast<std::size_t>(axis)] +=
+              static_cast<double>(owner.edgeCrossing[static_cast<std::size_t>(4 * axis)]);
+          return addVertex(point);
+        };
+        const bool fans =
+            intersectionFree && contour::edgePointFanKeepsShape(owner.origin, axis, owner.size, flattenedBox);
+        contour::voxelEdgeTriangles(cells, axis, owner.origin, owner.size, out.triangles, fans ? addEdgePoint : none);
         ++stats.edges;
         continue;
       }
@@ -198,7 +211,8 @@ void SeamStitcher::stitchBelow(int z, Interrupter* interrupter) {
     }
     const EdgeOctree edgeTree = buildEdgeOctree(seam, around, s);
     if (!settings_.contoursByMinimalEdges())
-      stitchRegular(seam, edgeTree, s, settings_.topology == cell::RegularTopology::Voxels, tail_, stats_);
+      stitchRegular(seam, edgeTree, s, settings_.topology == cell::RegularTopology::Voxels, settings_.intersectionFree,
+                    settings_.flattenedBox, addVertex, tail_, stats_);
     else
       stitchAdaptive(seam, edgeTree, s, settings_.intersectionFree, addVertex, faceVertices_, tail_, stats_);
     ++(seam.kind == Seam::Kind::Face ? stats_.metaFaces : stats_.metaEdges);
