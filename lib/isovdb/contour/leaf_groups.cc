@@ -79,7 +79,16 @@ LeafGroups groupLeaves(const cell::MetaCellSamples& samples, const octree::Linea
 
 std::vector<mesh::Vec3f> placeGroupVertices(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
                                             const LeafGroups& groups, const cell::DualVertexOptions& options,
-                                            const octree::UnitEdgeCrossings* crossings) {
+                                            const octree::UnitEdgeCrossings* crossings,
+                                            const std::optional<cell::DataBox>& flattenedBox) {
+  const auto beyondBox = [&](const octree::OctreeLeaf& leaf) {
+    if (!flattenedBox) return false;
+    for (std::size_t a = 0; a < 3; ++a) {
+      const int lo = samples.origin[a] + leaf.origin[a];
+      if (lo < (*flattenedBox)[0][a] || lo + leaf.size > (*flattenedBox)[1][a]) return true;
+    }
+    return false;
+  };
   std::vector<mesh::Vec3f> positions(groups.totalVertices());
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, tree.leafCount(), kGrain / 4), [&](const tbb::blocked_range<std::size_t>& r) {
@@ -87,7 +96,8 @@ std::vector<mesh::Vec3f> placeGroupVertices(const cell::MetaCellSamples& samples
           const cell::DmcEntry& entry = groups.entry(i);
           const octree::OctreeLeaf& leaf = tree.leaf(i);
           const bool hasSplits = groups.voxels && groups.splitFaces[i] != 0;
-          if (entry.vertexCount == 1 && !hasSplits && !options.massPointOnly &&
+          const bool flattened = beyondBox(leaf);
+          if (entry.vertexCount == 1 && !hasSplits && !options.massPointOnly && !flattened &&
               leaf.vertexTruncation == options.singularValueThreshold &&
               leaf.vertexSharpFeatures == options.sharpFeatures) {
             // The construction's geometric criterion solved this QEF already.
@@ -98,7 +108,7 @@ std::vector<mesh::Vec3f> placeGroupVertices(const cell::MetaCellSamples& samples
           // among its own crossings (a QEF minimiser may wander towards the other sheet).
           // Tube sectors and split faces are pieces of a sheet: their mass points too.
           cell::DualVertexOptions groupOptions = options;
-          groupOptions.massPointOnly = entry.vertexCount > 1;
+          groupOptions.massPointOnly = entry.vertexCount > 1 || flattened;
           const std::uint8_t config = groups.configs[i];
           const bool tube = groups.voxels && isTubeConfig(config);
           std::array<std::uint16_t, 10> vertexEdges{};

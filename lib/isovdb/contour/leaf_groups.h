@@ -25,6 +25,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "isovdb/bit_count.h"
@@ -76,9 +77,13 @@ LeafGroups groupLeaves(const cell::MetaCellSamples& samples, const octree::Linea
 ///        point of their crossings), numbered by LeafGroups::firstVertex.
 ///        Parallel with TBB; deterministic. Global voxel index coordinates.
 ///        1-voxel leaves read their crossings from `crossings` if given (the same
-///        values, found once per edge; unit_edge_crossings.h).
+///        values, found once per edge; unit_edge_crossings.h). Cells reaching beyond
+///        `flattenedBox` (the box the caps are flattened onto afterwards) get the mass
+///        point too: flattened, it is the mean of the crossings as seen on the box's face,
+///        where a QEF minimiser, flattened, could land beside its neighbours' and fold the cap.
 std::vector<mesh::Vec3f> placeGroupVertices(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
                                             const LeafGroups& groups, const cell::DualVertexOptions& options,
-                                            const octree::UnitEdgeCrossings* crossings = nullptr);
+                                            const octree::UnitEdgeCrossings* crossings = nullptr,
+                                            const std::optional<cell::DataBox>& flattenedBox = std::nullopt);
 
 }  // namespace isovdb::contour

@@ -152,7 +152,8 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
   if (octree::UnitEdgeCrossings::pays(metaSize, unitLeafCount))
     crossings.emplace(samples, options.iso, options.sharpFeatures);
   out.positions = placeGroupVertices(samples, regularTree, groups, cell::dualVertexOptions(options),
-                                     crossings ? &*crossings : nullptr);
+                                     crossings ? &*crossings : nullptr,
+                                     groups.voxels && options.intersectionFree ? options.flattenedBox : std::nullopt);
 
   // 4. Quads (voxel topology: polygons): each interior bipolar edge by its owner leaf (the edge is
   // the owner's local edge 4 * axis, the owner in quadrant 3); edges on the meta-cell boundary are
@@ -216,8 +217,8 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
             for (int a = 0; a < 3; ++a) edgeStart[static_cast<std::size_t>(a)] = samples.origin[a] + leaf.origin[a];
             edgeLeaf = &leaf;
             edgeAxis = axis;
-            // Near a box the caps are flattened onto afterwards, the envelope of the edge
-            // would be tested at positions that still move: plain polygons there.
+            // Near a box the caps are flattened onto afterwards, the envelope of the edge would
+            // be tested at positions that still move: plain polygons there.
             const EdgePointFn& edgePoint =
                 options.intersectionFree && edgePointFanKeepsShape(edgeStart, axis, leaf.size, options.flattenedBox)
                     ? addEdgePoint

@@ -109,8 +109,7 @@ std::array<std::uint16_t, 2> splitVertexEdges(std::uint8_t config, int face) noe
 }
 
 int voxelEdgeTriangles(const std::array<VoxelEdgeCell, 4>& cells, int axis, const std::array<int, 3>& edgeStart,
-                       int cellSize, std::vector<mesh::Triangle>& out,
-                       const std::function<std::uint32_t()>& edgePoint) {
+                       int cellSize, std::vector<mesh::Triangle>& out, const EdgePointFn& edgePoint) {
   static constexpr std::array<int, 4> kCounterClockwise{0, 1, 3, 2};
   std::array<std::uint32_t, 12> polygon{};
   std::size_t size = 0;
@@ -180,8 +179,8 @@ int voxelEdgeTriangles(const std::array<VoxelEdgeCell, 4>& cells, int axis, cons
 }
 
 int voxelQuadTriangles(const std::array<std::uint32_t, 4>& v, const std::array<mesh::Vec3f, 4>& p, int axis,
-                       bool minEndInside, const std::array<int, 3>& edgeStart, int size,
-                       const std::function<std::uint32_t()>& edgePoint, std::vector<mesh::Triangle>& out) {
+                       bool minEndInside, const std::array<int, 3>& edgeStart, int size, const EdgePointFn& edgePoint,
+                       std::vector<mesh::Triangle>& out) {
   const auto quad = regularEdgeQuad(v, p, axis, minEndInside);
   if (!edgePoint) {
     out.insert(out.end(), quad.begin(), quad.end());
