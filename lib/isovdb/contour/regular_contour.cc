@@ -168,8 +168,8 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
   if (octree::UnitLeafIndex::pays(metaSize, n)) unitLeaves.emplace(regularTree);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks), [&](const tbb::blocked_range<std::size_t>& r) {
     // A fanned polygon's edge point is a vertex of its own, numbered after the cells' vertices
-    // once every chunk's count is known. Made once per range (a std::function per edge
-    // allocated): it reads the edge from these.
+    // once every chunk's count is known. Made once per range (a std::function made per edge
+    // would allocate), it reads the edge from these.
     std::array<int, 3> edgeStart{};
     const OctreeLeaf* edgeLeaf = nullptr;
     int edgeAxis = 0;
@@ -260,6 +260,7 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
 
   // The edge points after the cells' vertices, chunk by chunk (independent of the threads).
   for (std::size_t c = 0; c < chunks; ++c) {
+    if (chunkPoints[c].empty()) continue;  // a chunk's triangles name only its own edge points
     const auto base = static_cast<std::uint32_t>(out.positions.size());
     for (mesh::Triangle& t : chunkTriangles[c])
       for (std::uint32_t& v : t)

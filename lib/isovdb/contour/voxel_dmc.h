@@ -28,10 +28,11 @@
 /// A bipolar edge's polygon lists, counter-clockwise, each cell's vertices on
 /// the faces it shares with its two neighbours around the edge, and a split
 /// vertex between two cells whose shared face is split: 4 to 8 corners. Four
-/// are a quad (regularEdgeQuad, the better diagonal); more are fanned from a
-/// split vertex if there is one, else from the first corner, which never
-/// creates an edge that already exists (two cells sharing a face are joined
-/// only through their shared curves).
+/// are a quad (the better diagonal where it stays in the edge's Ju–Udeshi
+/// envelope); more are fanned from the edge's crossing, a vertex of its own,
+/// which creates no edge between corners that could already exist (two cells
+/// sharing a face are joined only through their shared curves). See
+/// voxelEdgeTriangles.
 #pragma once
 
 #include <array>
