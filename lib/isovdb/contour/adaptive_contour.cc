@@ -15,7 +15,6 @@
 #include "isovdb/bit_count.h"
 #include "isovdb/contour/adaptive_edges.h"
 #include "isovdb/cell/dual_vertex.h"
-#include "isovdb/cell/edge_intersection.h"
 #include "isovdb/contour/leaf_groups.h"
 #include "isovdb/errors.h"
 #include "isovdb/octree/morton.h"
@@ -76,18 +75,7 @@ MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const
   // Crossing on edge e of a leaf, in voxels from the edge's start corner (NaN: none).
   auto crossing = [&](std::size_t leafIndex, int e) -> double {
     const octree::OctreeLeaf& leaf = tree.leaf(leafIndex);
-    const int c0 = octree::cellEdgeCorner(e, 0);
-    const int axis = octree::cellEdgeAxis(e);
-    std::array<int, 3> start = leaf.origin;
-    for (int a = 0; a < 3; ++a) start[a] += ((c0 >> a) & 1) * leaf.size;
-    cell::EdgeIntersection ix;
-    const cell::EdgeIntersection* hit = &ix;
-    if (crossings != nullptr && leaf.size == 1)
-      hit = crossings->find(start, axis);
-    else if (!cell::intersectEdge(samples, start, axis, leaf.size, options.iso, ix, options.sharpFeatures))
-      hit = nullptr;
-    if (hit == nullptr) return std::numeric_limits<double>::quiet_NaN();
-    return static_cast<double>(hit->point[axis] - static_cast<float>(start[axis]));
+    return octree::leafEdgeCrossing(samples, leaf.origin, leaf.size, e, options.iso, options.sharpFeatures, crossings);
   };
   // Constant-time lookups of the leaves around each edge where the index pays for its
   // memory, as in regular contouring: a binary search in Z order missed the cache on every

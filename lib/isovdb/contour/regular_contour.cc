@@ -18,7 +18,6 @@
 
 #include "isovdb/cell/dmc_table.h"
 #include "isovdb/cell/dual_vertex.h"
-#include "isovdb/cell/edge_intersection.h"
 #include "isovdb/contour/leaf_groups.h"
 #include "isovdb/contour/voxel_dmc.h"
 #include "isovdb/errors.h"
@@ -41,18 +40,16 @@ constexpr std::uint32_t kChunkVertex = std::uint32_t{1} << 31;
 /// Edge points stay this fraction of the edge away from its ends.
 constexpr float kEdgePointMargin = 1e-3f;
 
-/// Where the surface crosses a leaf's edge from `start` (meta-cell offsets) along `axis`,
-/// `length` voxels long: voxels from `start`, kept off the ends (the midpoint where the
-/// samples show no crossing, which a bipolar edge always has).
-float edgeCrossingOffset(const MetaCellSamples& samples, const std::array<int, 3>& start, int axis, int length,
-                         float iso) {
-  cell::EdgeIntersection hit;
-  const float t =
-      cell::intersectEdge(samples, start, axis, length, iso, hit)
-          ? hit.point[static_cast<std::size_t>(axis)] - static_cast<float>(start[static_cast<std::size_t>(axis)])
-          : 0.5f * static_cast<float>(length);
-  const float margin = kEdgePointMargin * static_cast<float>(length);
-  return std::clamp(t, margin, static_cast<float>(length) - margin);
+/// Where the surface crosses edge `e` of `leaf`, in voxels from the edge's start corner,
+/// kept off its ends (the midpoint where the samples show no crossing, which a bipolar edge
+/// always has).
+float edgePointOffset(const MetaCellSamples& samples, const OctreeLeaf& leaf, int e,
+                      const cell::ContourSettings& options, const octree::UnitEdgeCrossings* crossings) {
+  const double t =
+      octree::leafEdgeCrossing(samples, leaf.origin, leaf.size, e, options.iso, options.sharpFeatures, crossings);
+  const auto length = static_cast<float>(leaf.size);
+  const float margin = kEdgePointMargin * length;
+  return std::clamp(std::isfinite(t) ? static_cast<float>(t) : 0.5f * length, margin, length - margin);
 }
 
 /// Shape quality of a triangle in [0, 1]: 4 sqrt(3) area / sum of squared edge lengths (1 = equilateral).
@@ -176,7 +173,8 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
     std::size_t chunk = 0;
     const EdgePointFn noEdgePoint;
     const EdgePointFn addEdgePoint = [&] {
-      const float t = edgeCrossingOffset(samples, edgeLeaf->origin, edgeAxis, edgeLeaf->size, options.iso);
+      // The leaf's local edge 4 * axis starts at its origin.
+      const float t = edgePointOffset(samples, *edgeLeaf, 4 * edgeAxis, options, crossings ? &*crossings : nullptr);
       mesh::Vec3f point{};
       for (int a = 0; a < 3; ++a)
         point[static_cast<std::size_t>(a)] =
@@ -287,10 +285,7 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
         float& t = cell.edgeCrossing[static_cast<std::size_t>(e)];
         t = std::numeric_limits<float>::quiet_NaN();
         if (((bipolar >> e) & 1) == 0) continue;
-        const int c0 = octree::cellEdgeCorner(e, 0);
-        std::array<int, 3> start = leaf.origin;
-        for (int a = 0; a < 3; ++a) start[static_cast<std::size_t>(a)] += ((c0 >> a) & 1) * leaf.size;
-        t = edgeCrossingOffset(samples, start, octree::cellEdgeAxis(e), leaf.size, options.iso);
+        t = edgePointOffset(samples, leaf, e, options, crossings ? &*crossings : nullptr);
       }
     }
     const VoxelEdgeCell vertices = voxelEdgeCell(groups, out.positions, i);

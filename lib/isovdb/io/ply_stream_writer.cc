@@ -34,16 +34,16 @@ void PlyStreamWriter::addVertices(std::span<const mesh::Vec3f> positions) {
 }
 
 void PlyStreamWriter::addTriangles(std::span<const mesh::Triangle> triangles) {
-  for (const mesh::Triangle& t : triangles)
-    for (const std::uint32_t v : t)
-      if (v >= vertices_)
-        throw InputError("cannot write '" + path_.string() + "': a triangle refers to vertex " + std::to_string(v) +
-                         " of " + std::to_string(vertices_));
-  std::vector<char> batch;
+  std::vector<char> batch;  // nothing is kept or written before every index is checked
   batch.reserve(triangles.size() * 13);
   for (const mesh::Triangle& t : triangles) {
     appendLittleEndian(batch, std::uint8_t{3});
-    for (const std::uint32_t v : t) appendLittleEndian(batch, v);
+    for (const std::uint32_t v : t) {
+      if (v >= vertices_)
+        throw InputError("cannot write '" + path_.string() + "': a triangle refers to vertex " + std::to_string(v) +
+                         " of " + std::to_string(vertices_));
+      appendLittleEndian(batch, v);
+    }
   }
   // Past the budget, the waiting batches go to the spill file, and every batch after them.
   if (!spilled_ && waitingBytes_ + batch.size() > triangleBytesInMemory_) {

@@ -16,8 +16,10 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
+#include "isovdb/cell/cell_geometry.h"
 #include "isovdb/cell/dual_vertex.h"
 #include "isovdb/cell/edge_intersection.h"
 #include "isovdb/cell/meta_cell_samples.h"
@@ -97,6 +99,28 @@ inline cell::DualVertex cellDualVertex(const cell::MetaCellSamples& samples, con
           return nullptr;  // an even number of crossings: computeDualVertex takes none
         return crossings->findFirst(start, axis, size);
       });
+}
+
+/// @brief Where the surface crosses edge `e` of the cell of `size` at `origin` (meta-cell
+///        offsets), in voxels from the edge's start corner; NaN where the samples show no
+///        crossing. Unit edges read `crossings` where there is a table (intersectEdge's
+///        values, found once), longer ones intersectEdge.
+/// @pre `crossings` (if any) were found from `samples` at `iso`, with `sharpFeatures`.
+inline double leafEdgeCrossing(const cell::MetaCellSamples& samples, const std::array<int, 3>& origin, int size, int e,
+                               float iso, bool sharpFeatures, const UnitEdgeCrossings* crossings) {
+  const int c0 = cell::cellEdgeCorner(e, 0);
+  const int axis = cell::cellEdgeAxis(e);
+  std::array<int, 3> start = origin;
+  for (int a = 0; a < 3; ++a) start[static_cast<std::size_t>(a)] += ((c0 >> a) & 1) * size;
+  cell::EdgeIntersection ix;
+  const cell::EdgeIntersection* hit = &ix;
+  if (crossings != nullptr && size == 1)
+    hit = crossings->find(start, axis);
+  else if (!cell::intersectEdge(samples, start, axis, size, iso, ix, sharpFeatures))
+    hit = nullptr;
+  if (hit == nullptr) return std::numeric_limits<double>::quiet_NaN();
+  return static_cast<double>(hit->point[static_cast<std::size_t>(axis)] -
+                             static_cast<float>(start[static_cast<std::size_t>(axis)]));
 }
 
 }  // namespace isovdb::octree
