@@ -91,8 +91,8 @@ void bindExtract(py::module_& m) {
                          "Every setting is the CLI flag of the same name with the same default: method='adaptive'\n"
                          "(closed, manifold, free of self-intersections, on the data boundary's caps too, far\n"
                          "fewer triangles; within max_error=1 voxel of the full-resolution surface), 'regular'\n"
-                         "(the mask's topology, free of self-intersections but where a mask's caps on the\n"
-                         "data boundary fold) or 'vdb' (OpenVDB's\n"
+                         "(the mask's topology, closed, manifold, free of self-intersections, caps included)\n"
+                         "or 'vdb' (OpenVDB's\n"
                          "volumeToMesh, the reference).");
 }
 

@@ -324,62 +324,6 @@ TEST(OctreeMethodsTopology, RegularVoxelReadingContactsAreFreeOfSelfIntersection
   }
 }
 
-/// Random masks that fill the data's box to its faces, through extract: their caps are
-/// flattened onto the box afterwards. A flattened QEF vertex could land beside its
-/// neighbour's and fold the cap; the cells beyond the box take their crossings' mass point.
-/// Smoothed noise then keeps every guarantee. Voxel noise still folds at the caps' rims
-/// (polygons across the box's face, whose corners move after the envelope would have been
-/// tested): 178 pairs over these four masks, 414 with QEF vertices beyond the box.
-TEST(OctreeMethodsTopology, RegularCapsOfMasksFillingTheBox) {
-  std::int64_t noisePairs = 0;
-  for (unsigned seed = 1; seed <= 8; ++seed) {
-    const bool smooth = seed % 2 == 0;
-    std::mt19937 random(seed);
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
-    constexpr int kSize = 24;
-    std::vector<float> noise(kSize * kSize * kSize);
-    for (float& v : noise) v = uniform(random);
-    const auto at = [&](int x, int y, int z) -> float& {
-      return noise[static_cast<std::size_t>((z * kSize + y) * kSize + x)];
-    };
-    for (int pass = 0; pass < (smooth ? 6 : 0); ++pass) {  // a box filter of 3 along each axis, twice (periodic)
-      const int axis = pass % 3;
-      std::vector<float> out(noise.size());
-      for (int z = 0; z < kSize; ++z)
-        for (int y = 0; y < kSize; ++y)
-          for (int x = 0; x < kSize; ++x) {
-            std::array<int, 3> lo{x, y, z}, hi{x, y, z};
-            lo[static_cast<std::size_t>(axis)] = (lo[static_cast<std::size_t>(axis)] + kSize - 1) % kSize;
-            hi[static_cast<std::size_t>(axis)] = (hi[static_cast<std::size_t>(axis)] + 1) % kSize;
-            out[static_cast<std::size_t>((z * kSize + y) * kSize + x)] =
-                (at(lo[0], lo[1], lo[2]) + at(x, y, z) + at(hi[0], hi[1], hi[2])) / 3.0f;
-          }
-      noise.swap(out);
-    }
-    std::vector<float> sorted = noise;
-    const std::size_t inside = sorted.size() * (smooth ? 6 : 3) / 10;  // 60 % or 30 % inside
-    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(inside), sorted.end());
-    const float threshold = sorted[inside];
-    auto stream = test::VectorSliceStream::fromFunction(
-        {kSize, kSize, kSize}, [&](int x, int y, int z) { return at(x, y, z) < threshold ? 1.f : 0.f; });
-    const volume::Volume mask = volume::ingestMask(stream, {});
-    ExtractOptions options;
-    options.contour.method = ContourMethod::Regular;
-    options.metaCellSize = 16;
-    const mesh::MeshReport report = mesh::validateMesh(extractMesh(mask, options));
-    EXPECT_TRUE(report.closed);
-    EXPECT_TRUE(report.manifold);
-    std::printf("seed %u (%s): %lld self-intersecting pairs\n", seed, smooth ? "smoothed" : "voxel noise",
-                static_cast<long long>(report.selfIntersectingPairs));
-    if (smooth) {
-      EXPECT_EQ(report.selfIntersectingPairs, 0) << seed;
-    } else {
-      noisePairs += report.selfIntersectingPairs;
-    }
-  }
-  EXPECT_LT(noisePairs, 250);
-}
-
 /// Adaptive mode has regular mode's topology on the same voxels: one vertex per DMC
 /// group at the finest level with the same fix, and coarse leaves only where one
 /// vertex stands for a disk.

@@ -80,15 +80,18 @@ struct ContourSettings {
   /// face. Adaptive mode makes that cap while contouring: samples beyond the box read as
   /// far outside (pipeline/octree_contour.cc), leaves across a face are refined to one
   /// voxel (octree/build.cc) and their vertices kept within 2 * kInteriorMargin of it
-  /// (contour/adaptive_contour.cc), so Ju–Udeshi's test sees the cap's final positions.
-  /// Regular mode in Wenger's reading does the same (contoursByMinimalEdges); in the
-  /// voxel reading it gets it only where the background lies inside the surface (beyond
-  /// the box it reads far outside; its caps are flattened onto the box afterwards).
+  /// (contour/box_caps.h), so Ju–Udeshi's test sees the cap's final positions.
+  /// Regular mode in Wenger's reading does the same (contoursByMinimalEdges); the voxel
+  /// reading where the background lies inside the surface (a numpy field 40 - r at iso 0)
+  /// too, else the background beyond the array would close a box around it.
   std::optional<DataBox> dataBox{};
-  /// The sampled box where the caps are flattened onto it after contouring instead (the
-  /// voxel reading where the background lies outside): its polygons whose cells reach
-  /// beyond it keep a fan from a corner (contour/voxel_dmc.h).
-  std::optional<DataBox> flattenedBox{};
+  /// The sampled box where regular mode makes its caps on the field as it is (the voxel
+  /// reading's mask distance fields, outside beyond the box; plain dual contouring with
+  /// intersectionFree off): the vertices of the cells just beyond a face sit at their
+  /// crossings' mass point, within 2 * kInteriorMargin of the face, and the edges that
+  /// leave the box have their edge point there too (contour/box_caps.h). Nothing moves
+  /// after the polygons' envelope tests.
+  std::optional<DataBox> capBox{};
 
   /// Contoured by minimal edges with Ju–Udeshi fans (contour/adaptive_contour.h): adaptive
   /// mode, and regular mode in Wenger's reading (fields) unless intersectionFree is off.

@@ -14,38 +14,13 @@
 
 #include "isovdb/bit_count.h"
 #include "isovdb/contour/adaptive_edges.h"
+#include "isovdb/contour/box_caps.h"
 #include "isovdb/cell/dual_vertex.h"
 #include "isovdb/contour/leaf_groups.h"
 #include "isovdb/errors.h"
 #include "isovdb/octree/morton.h"
 
 namespace isovdb::contour {
-
-namespace {
-
-/// A cap's vertex (its leaf lies beyond a face of the data's box) moved to within
-/// 2 * kInteriorMargin of that face, still strictly inside its leaf: the cap is then flat
-/// on the face to that margin before the triangulation is chosen, and no vertex moves
-/// after it (cell::ContourSettings::dataBox).
-Vec3d besideDataBox(Vec3d p, const octree::OctreeLeaf& leaf, const std::array<int, 3>& origin,
-                    const std::optional<cell::DataBox>& box) {
-  if (!box) return p;
-  const double m = 2 * kInteriorMargin * leaf.size;
-  // The float nearest face - m on the leaf's side of the face (the mesh stores floats).
-  const auto beside = [m](int face, double side) {
-    const auto f = static_cast<float>(face + side * m);
-    return static_cast<double>(
-        f != static_cast<float>(face) ? f : std::nextafter(static_cast<float>(face), static_cast<float>(face + side)));
-  };
-  for (int a = 0; a < 3; ++a) {
-    const int lo = origin[a] + leaf.origin[a], hi = lo + leaf.size;
-    if (hi == (*box)[0][a]) p[a] = std::max(p[a], beside((*box)[0][a], -1.0));
-    if (lo == (*box)[1][a]) p[a] = std::min(p[a], beside((*box)[1][a], 1.0));
-  }
-  return p;
-}
-
-}  // namespace
 
 MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
                                      const cell::ContourSettings& options, AdaptiveContourStats* stats,
@@ -66,11 +41,18 @@ MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const
   const std::vector<mesh::Vec3f> positions =
       placeGroupVertices(samples, tree, groups, cell::dualVertexOptions(options), crossings);
   std::vector<Vec3d> cellPoints(positions.size());
+  // A cap's vertex (its leaf lies beyond a face of the data's box) within 2 * kInteriorMargin
+  // of that face: the cap is flat on the face before the triangulation is chosen (box_caps.h).
+  const auto capVertex = [&](const Vec3d& p, const octree::OctreeLeaf& leaf) {
+    if (!options.dataBox) return p;
+    std::array<int, 3> lo{};
+    for (std::size_t a = 0; a < 3; ++a) lo[a] = samples.origin[a] + leaf.origin[a];
+    return besideDataBox(p, lo, leaf.size, *options.dataBox);
+  };
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leafCount, 256), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t i = r.begin(); i != r.end(); ++i)
       for (std::uint32_t v = groups.firstVertex[i]; v < groups.firstVertex[i + 1]; ++v)
-        cellPoints[v] = besideDataBox(cellPointInside(positions[v], tree.leaf(i), samples.origin), tree.leaf(i),
-                                      samples.origin, options.dataBox);
+        cellPoints[v] = capVertex(cellPointInside(positions[v], tree.leaf(i), samples.origin), tree.leaf(i));
   });
   // Crossing on edge e of a leaf, in voxels from the edge's start corner (NaN: none).
   auto crossing = [&](std::size_t leafIndex, int e) -> double {

@@ -5,6 +5,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "isovdb/contour/box_caps.h"
 #include "isovdb/octree/criteria.h"
 
 namespace isovdb::contour {
@@ -80,14 +81,21 @@ LeafGroups groupLeaves(const cell::MetaCellSamples& samples, const octree::Linea
 std::vector<mesh::Vec3f> placeGroupVertices(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
                                             const LeafGroups& groups, const cell::DualVertexOptions& options,
                                             const octree::UnitEdgeCrossings* crossings,
-                                            const std::optional<cell::DataBox>& flattenedBox) {
+                                            const std::optional<cell::DataBox>& capBox) {
   const auto beyondBox = [&](const octree::OctreeLeaf& leaf) {
-    if (!flattenedBox) return false;
+    if (!capBox) return false;
     for (std::size_t a = 0; a < 3; ++a) {
       const int lo = samples.origin[a] + leaf.origin[a];
-      if (lo < (*flattenedBox)[0][a] || lo + leaf.size > (*flattenedBox)[1][a]) return true;
+      if (lo < (*capBox)[0][a] || lo + leaf.size > (*capBox)[1][a]) return true;
     }
     return false;
+  };
+  // Held beside the face it lies beyond, where the cap is (box_caps.h).
+  const auto capVertex = [&](const mesh::Vec3f& p, const octree::OctreeLeaf& leaf) {
+    std::array<int, 3> lo{};
+    for (std::size_t a = 0; a < 3; ++a) lo[a] = samples.origin[a] + leaf.origin[a];
+    const Vec3d q = besideDataBox(Vec3d{p[0], p[1], p[2]}, lo, leaf.size, *capBox);
+    return mesh::Vec3f{static_cast<float>(q[0]), static_cast<float>(q[1]), static_cast<float>(q[2])};
   };
   std::vector<mesh::Vec3f> positions(groups.totalVertices());
   tbb::parallel_for(
@@ -96,8 +104,8 @@ std::vector<mesh::Vec3f> placeGroupVertices(const cell::MetaCellSamples& samples
           const cell::DmcEntry& entry = groups.entry(i);
           const octree::OctreeLeaf& leaf = tree.leaf(i);
           const bool hasSplits = groups.voxels && groups.splitFaces[i] != 0;
-          const bool flattened = beyondBox(leaf);
-          if (entry.vertexCount == 1 && !hasSplits && !options.massPointOnly && !flattened &&
+          const bool capped = beyondBox(leaf);
+          if (entry.vertexCount == 1 && !hasSplits && !options.massPointOnly && !capped &&
               leaf.vertexTruncation == options.singularValueThreshold &&
               leaf.vertexSharpFeatures == options.sharpFeatures) {
             // The construction's geometric criterion solved this QEF already.
@@ -108,7 +116,7 @@ std::vector<mesh::Vec3f> placeGroupVertices(const cell::MetaCellSamples& samples
           // among its own crossings (a QEF minimiser may wander towards the other sheet).
           // Tube sectors and split faces are pieces of a sheet: their mass points too.
           cell::DualVertexOptions groupOptions = options;
-          groupOptions.massPointOnly = entry.vertexCount > 1 || flattened;
+          groupOptions.massPointOnly = entry.vertexCount > 1 || capped;
           const std::uint8_t config = groups.configs[i];
           const bool tube = groups.voxels && isTubeConfig(config);
           std::array<std::uint16_t, 10> vertexEdges{};
@@ -136,6 +144,7 @@ std::vector<mesh::Vec3f> placeGroupVertices(const cell::MetaCellSamples& samples
             if (!v.valid())  // cannot happen for bipolar edges; keep the cell centre rather than garbage
               for (std::size_t a = 0; a < 3; ++a)
                 p[a] = static_cast<float>(samples.origin[a] + leaf.origin[a]) + 0.5f * static_cast<float>(leaf.size);
+            if (capped) p = capVertex(p, leaf);
             positions[groups.firstVertex[i] + static_cast<std::size_t>(k)] = p;
           }
         }

@@ -77,13 +77,14 @@ LeafGroups groupLeaves(const cell::MetaCellSamples& samples, const octree::Linea
 ///        point of their crossings), numbered by LeafGroups::firstVertex.
 ///        Parallel with TBB; deterministic. Global voxel index coordinates.
 ///        1-voxel leaves read their crossings from `crossings` if given (the same
-///        values, found once per edge; unit_edge_crossings.h). Cells reaching beyond
-///        `flattenedBox` (the box the caps are flattened onto afterwards) get the mass
-///        point too: flattened, it is the mean of the crossings as seen on the box's face,
-///        where a QEF minimiser, flattened, could land beside its neighbours' and fold the cap.
+///        values, found once per edge; unit_edge_crossings.h). Cells just beyond a face of
+///        `capBox` (regular mode's caps, cell::ContourSettings::capBox) get the
+///        mass point too, held within 2 * kInteriorMargin of that face (box_caps.h): there
+///        it is the mean of the crossings as seen on the face, where a QEF minimiser could
+///        land beside its neighbours' and fold the cap.
 std::vector<mesh::Vec3f> placeGroupVertices(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
                                             const LeafGroups& groups, const cell::DualVertexOptions& options,
                                             const octree::UnitEdgeCrossings* crossings = nullptr,
-                                            const std::optional<cell::DataBox>& flattenedBox = std::nullopt);
+                                            const std::optional<cell::DataBox>& capBox = std::nullopt);
 
 }  // namespace isovdb::contour

@@ -18,6 +18,7 @@
 
 #include "isovdb/cell/dmc_table.h"
 #include "isovdb/cell/dual_vertex.h"
+#include "isovdb/contour/box_caps.h"
 #include "isovdb/contour/leaf_groups.h"
 #include "isovdb/contour/voxel_dmc.h"
 #include "isovdb/errors.h"
@@ -49,7 +50,13 @@ float edgePointOffset(const MetaCellSamples& samples, const OctreeLeaf& leaf, in
       octree::leafEdgeCrossing(samples, leaf.origin, leaf.size, e, options.iso, options.sharpFeatures, crossings);
   const auto length = static_cast<float>(leaf.size);
   const float margin = kEdgePointMargin * length;
-  return std::clamp(std::isfinite(t) ? static_cast<float>(t) : 0.5f * length, margin, length - margin);
+  const float offset = std::clamp(std::isfinite(t) ? static_cast<float>(t) : 0.5f * length, margin, length - margin);
+  if (!options.capBox) return offset;
+  // An edge that leaves the box has its point on the cap, beside the face (box_caps.h).
+  const int c0 = cell::cellEdgeCorner(e, 0);
+  std::array<int, 3> start{};
+  for (std::size_t a = 0; a < 3; ++a) start[a] = samples.origin[a] + leaf.origin[a] + ((c0 >> a) & 1) * leaf.size;
+  return edgePointBesideDataBox(offset, start, cell::cellEdgeAxis(e), leaf.size, margin, *options.capBox);
 }
 
 /// Shape quality of a triangle in [0, 1]: 4 sqrt(3) area / sum of squared edge lengths (1 = equilateral).
@@ -149,8 +156,7 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
   if (octree::UnitEdgeCrossings::pays(metaSize, unitLeafCount))
     crossings.emplace(samples, options.iso, options.sharpFeatures);
   out.positions = placeGroupVertices(samples, regularTree, groups, cell::dualVertexOptions(options),
-                                     crossings ? &*crossings : nullptr,
-                                     groups.voxels && options.intersectionFree ? options.flattenedBox : std::nullopt);
+                                     crossings ? &*crossings : nullptr, options.capBox);
 
   // 4. Quads (voxel topology: polygons): each interior bipolar edge by its owner leaf (the edge is
   // the owner's local edge 4 * axis, the owner in quadrant 3); edges on the meta-cell boundary are
@@ -215,12 +221,7 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
             for (int a = 0; a < 3; ++a) edgeStart[static_cast<std::size_t>(a)] = samples.origin[a] + leaf.origin[a];
             edgeLeaf = &leaf;
             edgeAxis = axis;
-            // Near a box the caps are flattened onto afterwards, the envelope of the edge would
-            // be tested at positions that still move: plain polygons there.
-            const EdgePointFn& edgePoint =
-                options.intersectionFree && edgePointFanKeepsShape(edgeStart, axis, leaf.size, options.flattenedBox)
-                    ? addEdgePoint
-                    : noEdgePoint;
+            const EdgePointFn& edgePoint = options.intersectionFree ? addEdgePoint : noEdgePoint;
             if (plainVoxelQuad) {
               std::array<std::uint32_t, 4> ids{};
               std::array<mesh::Vec3f, 4> positions{};

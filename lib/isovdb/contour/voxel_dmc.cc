@@ -259,16 +259,4 @@ int voxelQuadTriangles(const std::array<std::uint32_t, 4>& v, const std::array<m
   return 4;
 }
 
-bool edgePointFanKeepsShape(const std::array<int, 3>& start, int axis, int size,
-                            const std::optional<cell::DataBox>& flattenedBox) noexcept {
-  if (!flattenedBox) return true;
-  for (int a = 0; a < 3; ++a) {
-    const int lo = start[static_cast<std::size_t>(a)] - (a == axis ? 0 : size);
-    const int hi = start[static_cast<std::size_t>(a)] + size;
-    if (lo < (*flattenedBox)[0][static_cast<std::size_t>(a)] || hi > (*flattenedBox)[1][static_cast<std::size_t>(a)])
-      return false;
-  }
-  return true;
-}
-
 }  // namespace isovdb::contour

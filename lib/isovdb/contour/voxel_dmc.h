@@ -100,9 +100,8 @@ using EdgePointFn = std::function<std::uint32_t()>;
 /// them. A fan from one of the corners spans the four cells and crossed its neighbours'
 /// triangles (frog skeleton: 67 self-intersecting pairs, each with such a triangle; with
 /// the edge point: none). Quads go to voxelQuadTriangles. Without `edgePoint` (the caller's
-/// `--no-intersection-free`, or cells beyond a box their caps are flattened onto), polygons
-/// are fanned from their first split vertex, else their first corner, and quads take the
-/// better diagonal (regularEdgeQuad).
+/// `--no-intersection-free`), polygons are fanned from their first split vertex, else their
+/// first corner, and quads take the better diagonal (regularEdgeQuad).
 /// @return the number of triangles appended.
 int voxelEdgeTriangles(const std::array<VoxelEdgeCell, 4>& cells, int axis, const std::array<int, 3>& edgeStart,
                        int cellSize, std::vector<mesh::Triangle>& out, const EdgePointFn& edgePoint);
@@ -116,14 +115,5 @@ int voxelEdgeTriangles(const std::array<VoxelEdgeCell, 4>& cells, int axis, cons
 int voxelQuadTriangles(const std::array<std::uint32_t, 4>& vertices, const std::array<mesh::Vec3f, 4>& positions,
                        int axis, bool minEndInside, const std::array<int, 3>& edgeStart, int cellSize,
                        const EdgePointFn& edgePoint, std::vector<mesh::Triangle>& out);
-
-/// @brief Whether the polygon of the edge from `start` (global index coordinates) along
-///        `axis`, between four cells of side `size`, may be fanned from its edge point:
-///        yes unless a cell reaches beyond `flattenedBox`, the box its caps are flattened
-///        onto after contouring (pipeline/data_boundary.h). Flattening moves the vertices
-///        beyond it onto its face, and a fan around a point of the edge, flattened, folded
-///        over itself (random 24^3 masks touching the box: 3-10x the pairs of a corner fan).
-bool edgePointFanKeepsShape(const std::array<int, 3>& start, int axis, int size,
-                            const std::optional<cell::DataBox>& flattenedBox) noexcept;
 
 }  // namespace isovdb::contour

@@ -9,15 +9,15 @@
 /// surface that leaves the data with a cap just beyond the last samples. The
 /// box is the sampled box's sample positions, [min, max] in index space: the
 /// outermost traces and samples, not half a voxel beyond.
-/// - Cap: the mesh stays closed and its caps lie on the box faces. Adaptive mode
-///   makes them flat on the faces while contouring (cell::ContourSettings::dataBox:
-///   every vertex within 2 * 10^-3 voxel beyond them), so nothing moves afterwards
-///   and Ju–Udeshi's guarantee holds on the caps too. The other methods' caps lie up
-///   to a voxel beyond and are flattened here: vertices beyond the box are moved
-///   onto it (clamped per axis), which can fold their triangles.
+/// - Cap: the mesh stays closed and its caps lie on the box faces. The octree modes
+///   make them flat on the faces while contouring (cell::ContourSettings::dataBox and
+///   capBox: every vertex within 2 * 10^-3 voxel beyond them, contour/box_caps.h), so
+///   nothing moves afterwards and Ju–Udeshi's guarantee holds on the caps too. The vdb
+///   method's caps lie up to a voxel beyond and are flattened here: vertices beyond the
+///   box are moved onto it (clamped per axis), which can fold their triangles.
 /// - Open: the same, then the cap triangles (all three vertices on or beyond one
 ///   box face) are dropped and unused vertices removed. The mesh's boundary edges
-///   lie on the box faces (adaptive mode: within 2 * 10^-3 voxel), and only there.
+///   lie on the box faces (octree modes: within 2 * 10^-3 voxel), and only there.
 #pragma once
 
 #include <cstdint>

@@ -216,19 +216,20 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
   // Caps are flattened piece by piece (the mesh still streams); dropping them
   // (Open) needs the whole mesh, so it is collected first.
   const bool open = box && options.boundary == BoundaryMode::Open;
-  // Beyond the box the octree methods read far outside: always where they contour by minimal
-  // edges (adaptive mode, regular mode in Wenger's reading), and in the voxel reading where the
-  // background lies inside the surface (a numpy field 40 - r at iso 0: else the background
-  // beyond the array made a box around it). Their caps then lie on the box (within
-  // rounding: the crossings sit next to the last samples) and are not flattened; the vdb
-  // method's and regular mode's others are flattened here.
+  // The octree methods make their caps while contouring, beside the box's faces: beyond the
+  // box they read far outside where they contour by minimal edges (adaptive mode, regular
+  // mode in Wenger's reading) and in the voxel reading where the background lies inside the
+  // surface (a numpy field 40 - r at iso 0: else the background beyond the array made a box
+  // around it); regular mode's others keep the field as it is (capBox). Only the
+  // vdb method's caps are flattened onto the box afterwards.
   cell::ContourSettings settings = options.contour;
   settings.iso = iso;
   settings.topology = regularTopologyFor(options.regularTopology, kind);
   const bool capsMade = box && (settings.contoursByMinimalEdges() || (method == ContourMethod::Regular && !byLayers &&
                                                                       volume::backgroundInside(field, iso)));
   mesh::MeshCollector whole;
-  CappingSink capped(open ? static_cast<mesh::MeshSink&>(whole) : sink, capsMade ? std::nullopt : box);
+  const bool flattened = box && method == ContourMethod::Vdb;
+  CappingSink capped(open ? static_cast<mesh::MeshSink&>(whole) : sink, flattened ? box : std::nullopt);
   if (method == ContourMethod::Vdb) {
     Statistics::StageTimer timer(stats, "contour");
     // volumeToMesh meshes every crossing, the background's too: a background inside the
@@ -246,7 +247,7 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
   } else {
     octree::OctreeOptions tree = options.octree;
     if (capsMade) settings.dataBox = {{box->min, box->max}};
-    if (box && !capsMade) settings.flattenedBox = {{box->min, box->max}};
+    if (box && !capsMade) settings.capBox = {{box->min, box->max}};
     if (part && part->received) {
       SeamedMeshAssembler assembler(settings, options.metaCellSize, capped);
       volume::MetaCellIndex index{};
@@ -269,7 +270,7 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
   }
   std::int64_t dropped = 0;
   if (open) {
-    dropped = applyDataBoundary(whole.mesh, *box, BoundaryMode::Open, !capsMade);
+    dropped = applyDataBoundary(whole.mesh, *box, BoundaryMode::Open, flattened);
     sink.addVertices(whole.mesh.positions);
     sink.addTriangles(whole.mesh.triangles);
   }

@@ -66,7 +66,7 @@ std::vector<Setting> extractSettings(ExtractChoices& c) {
       {"method",
        "Contouring method: adaptive (adaptive octree + dual contouring with Ju-Udeshi fans: closed, "
        "manifold, far fewer triangles, within --max-error of the full-resolution surface), regular (octree + "
-       "manifold DMC: closed, manifold, the mask's topology; on fields free of self-intersections), vdb (OpenVDB's "
+       "manifold DMC: closed, manifold, the mask's topology, free of self-intersections), vdb (OpenVDB's "
        "volumeToMesh, the reference)",
        &c.method},
       {"iso",

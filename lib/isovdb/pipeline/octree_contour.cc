@@ -207,10 +207,10 @@ void farOutsideBeyondDataBox(cell::MetaCellSamples& samples, float iso, float bo
     }
 }
 
-/// The box beyond which the contouring reads far outside (set by extract where the caps are
-/// made while contouring: adaptive mode and regular mode in Wenger's reading, whose caps lie
-/// on it, and the voxel reading where the background lies inside; the voxel reading's other
-/// caps are flattened onto the box afterwards, pipeline/data_boundary.h).
+/// The box beyond which the contouring reads far outside (set by extract for adaptive mode
+/// and regular mode in Wenger's reading, and the voxel reading where the background lies
+/// inside; the voxel reading's other caps are made on the field as it is,
+/// cell::ContourSettings::capBox).
 std::optional<volume::IndexBox> capsIndexBox(const cell::ContourSettings& settings) {
   if (!settings.dataBox) return std::nullopt;
   return volume::IndexBox{(*settings.dataBox)[0], (*settings.dataBox)[1]};

@@ -36,8 +36,7 @@ contour::VoxelEdgeCell voxelEdgeCell(const SeamCell& cell) {
 /// Regular mode: the quad (voxel topology: polygon) of every bipolar edge the seam owns, by its owner (the leaf in
 /// quadrant 3).
 void stitchRegular(const Seam& seam, const EdgeOctree& edgeTree, int s, bool voxels, bool intersectionFree,
-                   const std::optional<cell::DataBox>& flattenedBox, const contour::VertexAdder& addVertex,
-                   mesh::Mesh& out, StitchStats& stats) {
+                   const contour::VertexAdder& addVertex, mesh::Mesh& out, StitchStats& stats) {
   const LinearOctree& tree = edgeTree.tree;
   const contour::EdgePointFn none;
   for (std::size_t i = 0; i < tree.leafCount(); ++i) {
@@ -68,9 +67,8 @@ void stitchRegular(const Seam& seam, const EdgeOctree& edgeTree, int s, bool vox
               static_cast<double>(owner.edgeCrossing[static_cast<std::size_t>(4 * axis)]);
           return addVertex(point);
         };
-        const bool fans =
-            intersectionFree && contour::edgePointFanKeepsShape(owner.origin, axis, owner.size, flattenedBox);
-        contour::voxelEdgeTriangles(cells, axis, owner.origin, owner.size, out.triangles, fans ? addEdgePoint : none);
+        contour::voxelEdgeTriangles(cells, axis, owner.origin, owner.size, out.triangles,
+                                    intersectionFree ? addEdgePoint : none);
         ++stats.edges;
         continue;
       }
@@ -212,7 +210,7 @@ void SeamStitcher::stitchBelow(int z, Interrupter* interrupter) {
     const EdgeOctree edgeTree = buildEdgeOctree(seam, around, s);
     if (!settings_.contoursByMinimalEdges())
       stitchRegular(seam, edgeTree, s, settings_.topology == cell::RegularTopology::Voxels, settings_.intersectionFree,
-                    settings_.flattenedBox, addVertex, tail_, stats_);
+                    addVertex, tail_, stats_);
     else
       stitchAdaptive(seam, edgeTree, s, settings_.intersectionFree, addVertex, faceVertices_, tail_, stats_);
     ++(seam.kind == Seam::Kind::Face ? stats_.metaFaces : stats_.metaEdges);
