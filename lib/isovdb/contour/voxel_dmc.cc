@@ -89,12 +89,6 @@ std::uint32_t vertexOnFace(const VoxelEdgeCell& cell, int edge, int face) noexce
 
 const cell::DmcEntry& voxelDmcEntry(std::uint8_t config) noexcept { return tables().entries[config]; }
 
-bool isTubeConfig(std::uint8_t config) noexcept {
-  if (countBits(static_cast<unsigned>(config)) != 2) return false;
-  const int a = std::countr_zero(static_cast<unsigned>(config));
-  return inside(config, a ^ 7);
-}
-
 const TubeSectors& tubeSectors(std::uint8_t config) noexcept { return tables().tubes[config]; }
 
 int voxelCellVertexCount(std::uint8_t config) noexcept {

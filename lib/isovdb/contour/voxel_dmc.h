@@ -36,6 +36,7 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -55,7 +56,12 @@ using cell::RegularTopology;  // which reading: cell/contour_settings.h
 const cell::DmcEntry& voxelDmcEntry(std::uint8_t config) noexcept;
 
 /// @brief True for the four configurations whose only inside corners are the two ends of a body diagonal.
-bool isTubeConfig(std::uint8_t config) noexcept;
+/// (Inline: the quad loop asks it of four cells per edge.)
+constexpr bool isTubeConfig(std::uint8_t config) noexcept {
+  const auto bits = static_cast<unsigned>(config);
+  if (std::popcount(bits) != 2) return false;
+  return ((bits >> (std::countr_zero(bits) ^ 7)) & 1u) != 0;
+}
 
 /// Sectors of a tube cell.
 struct TubeSectors {
