@@ -4,7 +4,9 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <regex>
 #include <sstream>
+#include <string>
 
 #include "bindings.h"
 #include "isovdb/pipeline/extract.h"
@@ -39,8 +41,14 @@ std::string noSurfaceMessage(const volume::Volume& volume, pipeline::Statistics&
   return message.str();
 }
 
-py::object extract(const PyVolume& volume, const py::dict& settings, const py::object& progress,
-                   const std::optional<std::filesystem::path>& output, const py::object& level) {
+/// `message` with the word "iso" named "level", for a caller who gave level=.
+std::string withLevel(const std::string& message) {
+  static const std::regex iso(R"(\biso\b)");
+  return std::regex_replace(message, iso, "level");
+}
+
+py::object extractWith(const PyVolume& volume, const py::dict& settings, const py::object& progress,
+                       const std::optional<std::filesystem::path>& output, const py::object& level) {
   pipeline::ExtractChoices choices;
   assignSettings(pipeline::extractSettings(choices), settings);
   if (!level.is_none()) {
@@ -60,6 +68,24 @@ py::object extract(const PyVolume& volume, const py::dict& settings, const py::o
   if (result.mesh.triangles.empty()) throw py::value_error(noSurfaceMessage(volume.volume, stats));
   result.statistics = std::move(stats.json());
   return py::cast(std::move(result));
+}
+
+py::object extract(const PyVolume& volume, const py::dict& settings, const py::object& progress,
+                   const std::optional<std::filesystem::path>& output, const py::object& level) {
+  if (level.is_none()) return extractWith(volume, settings, progress, output, level);
+  // The messages name the setting iso; a caller who wrote level= reads level.
+  if (settings.contains("iso") && !settings["iso"].is_none())
+    throw py::value_error("give iso= or level= (the same setting), not both");
+  try {
+    return extractWith(volume, settings, progress, output, level);
+  } catch (const InputError& e) {
+    throw InputError(withLevel(e.what()));
+  } catch (const py::value_error& e) {
+    throw py::value_error(withLevel(e.what()));
+  } catch (py::error_already_set& e) {
+    if (!e.matches(PyExc_ValueError)) throw;
+    throw py::value_error(withLevel(py::str(e.value()).cast<std::string>()));
+  }
 }
 
 }  // namespace

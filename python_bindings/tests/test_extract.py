@@ -239,6 +239,13 @@ def test_without_iso_a_field_is_contoured_at_the_middle_of_its_values():
     assert np.array_equal(isovdb.extract(ct, level=700.0).triangles, at.triangles)
     with pytest.raises(ValueError, match="iso= or level="):
         isovdb.extract(ct, iso=700.0, level=700.0)
+    # Its errors name the keyword the caller wrote.
+    with pytest.raises(ValueError, match=r"level 5000 lies outside the values' range \[200, 1200\]"):
+        isovdb.extract(ct, level=5000.0)
+    with pytest.raises(ValueError, match=r"iso 5000 lies outside"):
+        isovdb.extract(ct, iso=5000.0)
+    with pytest.raises(ValueError, match=r"^level: expected a finite number"):
+        isovdb.extract(ct, level=float("nan"))
     # A mask and a distance field keep 0: their boundary.
     assert isovdb.extract(ct > 700).statistics["contour"]["iso"] == 0.0
     # A constant field has no middle: refused, naming its value, as scikit-image refuses it.
