@@ -78,6 +78,29 @@ constexpr std::uint16_t bipolarEdgeMask(std::uint8_t cornerSigns) noexcept {
       mask = static_cast<std::uint16_t>(mask | (1u << e));
   return mask;
 }
+
+/// @brief True where the voxel reading of masks (26-connected inside, 6-connected outside;
+///        contour/voxel_dmc.h) and Wenger's manifold DMC can read a cell differently: a face
+///        whose inside corners are the two ends of one diagonal, or inside corners that are
+///        only the two ends of a body diagonal (a tube). Every other configuration has one
+///        reading: its DMC groups.
+constexpr bool voxelReadingDiffers(std::uint8_t cornerSigns) noexcept {
+  const auto inside = [cornerSigns](int c) { return ((cornerSigns >> c) & 1) != 0; };
+  for (int face = 0; face < 6; ++face) {
+    const int axis = face >> 1, side = face & 1;
+    const auto uv = otherAxes(axis);
+    const auto corner = [&](int du, int dv) { return (side << axis) | (du << uv[0]) | (dv << uv[1]); };
+    const bool a = inside(corner(0, 0)), b = inside(corner(1, 0)), c = inside(corner(0, 1)), d = inside(corner(1, 1));
+    if (a == d && b == c && a != b) return true;
+  }
+  int count = 0, first = -1;
+  for (int c = 0; c < 8; ++c)
+    if (inside(c)) {
+      if (first < 0) first = c;
+      ++count;
+    }
+  return count == 2 && inside(first ^ 7);
+}
 /// @}
 
 }  // namespace isovdb::cell

@@ -93,6 +93,17 @@ struct ContourSettings {
   /// after the polygons' envelope tests.
   std::optional<DataBox> capBox{};
 
+  /// Adaptive mode reads the cells where the voxel reading and MDMC's differ
+  /// (cell::voxelReadingDiffers) as regular mode does on masks (adaptiveReadsVoxels).
+  bool adaptiveVoxelReading = false;
+  /// Adaptive mode with adaptiveVoxelReading: its mesh has the voxel object's topology.
+  /// Those cells and their neighbours stay one voxel (octree/build.cc), and the edges of
+  /// those cells get the voxel reading's polygons (contour/adaptive_contour.cc). Set for
+  /// masks whose finest leaves are one voxel (pipeline/extract.cc).
+  constexpr bool adaptiveReadsVoxels() const noexcept {
+    return method == ContourMethod::Adaptive && adaptiveVoxelReading;
+  }
+
   /// Contoured by minimal edges with Ju–Udeshi fans (contour/adaptive_contour.h): adaptive
   /// mode, and regular mode in Wenger's reading (fields) unless intersectionFree is off.
   /// There regular mode's tree (every surface cell at the finest depth) is contoured like an

@@ -37,7 +37,18 @@ MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const
   // strictly inside its cell.
   std::vector<std::uint8_t> configs(leafCount);
   for (std::size_t i = 0; i < leafCount; ++i) configs[i] = tree.leaf(i).cornerSigns;
-  const LeafGroups groups = groupLeaves(samples, tree, std::move(configs), options.iso, options.manifoldFix);
+  // A mask read as the voxel object: the cells where that reading differs from MDMC's are
+  // one voxel, with one-voxel neighbours (octree/build.cc); they take the voxel reading's
+  // groups, tubes and split faces, every other leaf has one reading.
+  const bool voxels = options.adaptiveReadsVoxels();
+  const LeafGroups groups = groupLeaves(samples, tree, std::move(configs), options.iso, options.manifoldFix,
+                                        voxels ? cell::RegularTopology::Voxels : cell::RegularTopology::Mdmc);
+  std::vector<char> voxelCells;
+  if (voxels) {
+    voxelCells.resize(leafCount);
+    for (std::size_t i = 0; i < leafCount; ++i)
+      voxelCells[i] = tree.leaf(i).size == 1 && cell::voxelReadingDiffers(tree.leaf(i).cornerSigns);
+  }
   const std::vector<mesh::Vec3f> positions =
       placeGroupVertices(samples, tree, groups, cell::dualVertexOptions(options), crossings);
   std::vector<Vec3d> cellPoints(positions.size());
@@ -50,9 +61,16 @@ MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const
     return besideDataBox(p, lo, leaf.size, *options.dataBox);
   };
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leafCount, 256), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t i = r.begin(); i != r.end(); ++i)
-      for (std::uint32_t v = groups.firstVertex[i]; v < groups.firstVertex[i + 1]; ++v)
-        cellPoints[v] = capVertex(cellPointInside(positions[v], tree.leaf(i), samples.origin), tree.leaf(i));
+    for (std::size_t i = r.begin(); i != r.end(); ++i) {
+      // A split vertex lies on its face, which both cells' polygons share (voxel_dmc.h): kept
+      // there, not moved into the cell that owns it.
+      const std::uint32_t splits = groups.firstVertex[i] + static_cast<std::uint32_t>(groups.cellVertexCount(i));
+      for (std::uint32_t v = groups.firstVertex[i]; v < groups.firstVertex[i + 1]; ++v) {
+        const mesh::Vec3f& p = positions[v];
+        cellPoints[v] = capVertex(
+            v < splits ? cellPointInside(p, tree.leaf(i), samples.origin) : Vec3d{p[0], p[1], p[2]}, tree.leaf(i));
+      }
+    }
   });
   // Crossing on edge e of a leaf, in voxels from the edge's start corner (NaN: none).
   auto crossing = [&](std::size_t leafIndex, int e) -> double {
@@ -71,7 +89,8 @@ MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const
                             .alternative = &groups.alternative,
                             .crossing = crossing,
                             .inRegion = {},
-                            .unitLeaves = unitLeaves ? &*unitLeaves : nullptr};
+                            .unitLeaves = unitLeaves ? &*unitLeaves : nullptr,
+                            .voxelCells = voxels ? &voxelCells : nullptr};
   // Records in fixed chunks of leaves, in leaf order (the mesh does not depend on the
   // threads): one vector per leaf cost an allocation or two for each surface leaf.
   constexpr std::size_t kChunkLeaves = 256;
@@ -98,9 +117,51 @@ MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const
     isSeam[i] = groups.vertexCount(i) > 0 && touchesMetaCellBoundary(leaf.origin, leaf.size, metaSize);
   }
 
+  // The edges of leaves read as voxels, by the leaf whose local edge 4 * axis they are (the
+  // leaf in quadrant 3), as regular mode finds them: the four leaves around.
+  struct VoxelEdge {
+    std::array<std::int64_t, 4> around;
+    std::size_t owner;
+    int axis;
+  };
+  std::vector<VoxelEdge> voxelEdges;
+  if (voxels)
+    for (std::size_t i = 0; i < leafCount; ++i) {
+      const octree::OctreeLeaf& leaf = tree.leaf(i);
+      if (leaf.size != 1) continue;
+      const std::uint16_t bipolar = octree::bipolarEdgeMask(leaf.cornerSigns);
+      for (int axis = 0; axis < 3; ++axis) {
+        if (((bipolar >> (4 * axis)) & 1) == 0) continue;
+        const auto around =
+            unitLeaves ? unitLeaves->leavesAroundEdge(leaf.origin, axis) : tree.leavesAroundEdge(leaf.origin, axis);
+        if (std::none_of(around.begin(), around.end(), [&](std::int64_t l) {
+              return l != octree::LinearOctree::kNone && voxelCells[static_cast<std::size_t>(l)] != 0;
+            }))
+          continue;
+        if (std::find(around.begin(), around.end(), octree::LinearOctree::kNone) != around.end()) {
+          ++local.boundaryEdges;  // left to stitching
+          continue;
+        }
+        if (std::any_of(around.begin(), around.end(),
+                        [&](std::int64_t l) { return tree.leaf(static_cast<std::size_t>(l)).size != 1; }))
+          throw std::logic_error("contourAdaptive: a cell read as voxels has a coarser neighbour");
+        voxelEdges.push_back({around, i, axis});
+      }
+    }
+
   // Vertices: the used cell vertices in leaf and group order, then face and edge points in edge order.
   std::vector<std::uint32_t> meshVertex(cellPoints.size(), kNoVertex);
   constexpr std::uint32_t kUsed = 0;
+  // Every vertex of the leaves around a voxel edge, and of the seam's leaves read as voxels
+  // (the stitcher cannot add their split vertices: it has no positions for them).
+  const auto useAll = [&](std::size_t l) {
+    for (std::uint32_t v = groups.firstVertex[l]; v < groups.firstVertex[l + 1]; ++v) meshVertex[v] = kUsed;
+  };
+  for (const VoxelEdge& e : voxelEdges)
+    for (const std::int64_t l : e.around) useAll(static_cast<std::size_t>(l));
+  if (voxels)
+    for (std::size_t i = 0; i < leafCount; ++i)
+      if (voxelCells[i] && isSeam[i]) useAll(i);
   for (const LeafEdges& le : perLeaf) {
     local.boundaryEdges += le.boundary;
     local.edgesWithoutVertex += le.withoutVertex;
@@ -130,6 +191,23 @@ MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const
     }
   }
   local.trianglesAddedByFans = static_cast<std::int64_t>(mesh.triangles.size()) - (2 * local.quads + local.triangles3);
+  for (const VoxelEdge& e : voxelEdges) {
+    VoxelReadingEdge edge;
+    edge.axis = e.axis;
+    for (std::size_t a = 0; a < 3; ++a) edge.start[a] = samples.origin[a] + tree.leaf(e.owner).origin[a];
+    edge.crossing = crossing(e.owner, 4 * e.axis);
+    for (int q = 0; q < 4; ++q) {
+      const auto l = static_cast<std::size_t>(e.around[static_cast<std::size_t>(q)]);
+      const auto uq = static_cast<std::size_t>(q);
+      edge.cells[uq] = voxelEdgeCell(groups, l, meshVertex, {});
+      edge.voxelCell[uq] = voxelCells[l] != 0;
+      const int g = voxelDmcEntry(groups.configs[l]).vertexOfEdge[static_cast<std::size_t>(4 * e.axis + 3 - q)];
+      edge.groups[uq] = g;
+      edge.points[uq] = cellPoints[groups.firstVertex[l] + static_cast<std::size_t>(std::max(g, 0))];
+    }
+    emitVoxelReadingEdge(edge, addVertex, faceVertices, mesh.triangles);
+    ++local.voxelEdges;
+  }
 
   // The seam: boundary leaves with their vertex (if a polygon here used it) and edge crossings,
   // and the face points made here on faces that touch the boundary.
@@ -137,7 +215,12 @@ MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const
     if (!isSeam[i]) continue;
     const octree::OctreeLeaf& leaf = tree.leaf(i);
     SeamCell cell = seamCellOf(leaf, samples.origin, groups.alternative[i] != 0);
-    for (std::size_t g = 0; g < groups.vertexCount(i); ++g) {
+    if (voxels) {
+      const VoxelEdgeCell vertices = voxelEdgeCell(groups, i, meshVertex, {});
+      cell.splitFaces = vertices.splitFaces;
+      cell.splitVertices = vertices.splitVertices;
+    }
+    for (std::size_t g = 0; g < static_cast<std::size_t>(groups.cellVertexCount(i)); ++g) {
       cell.vertices[g] = meshVertex[groups.firstVertex[i] + g];
       const Vec3d& p = cellPoints[groups.firstVertex[i] + g];  // float-exact (cellPointInside)
       cell.positions[g] = {static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])};

@@ -74,7 +74,8 @@ struct AdaptiveContourStats {
   std::int64_t edgesWithoutVertex = 0;    ///< skipped because a leaf around had no dual vertex (should stay 0)
   std::int64_t seamCells = 0;             ///< leaves kept for stitching
   std::int64_t multiVertexCells = 0;      ///< leaves with more than one vertex (DMC groups, maximum depth only)
-  std::int64_t manifoldFixes = 0;         ///< leaves with Wenger's alternative grouping
+  std::int64_t manifoldFixes = 0;         ///< leaves with Wenger's alternative grouping (voxels: split faces)
+  std::int64_t voxelEdges = 0;            ///< edges of leaves read as the voxel object (adaptiveReadsVoxels)
 
   /// Sums the figures of several meta-cells.
   AdaptiveContourStats& operator+=(const AdaptiveContourStats& o) noexcept {
@@ -88,6 +89,7 @@ struct AdaptiveContourStats {
     edgesWithoutVertex += o.edgesWithoutVertex;
     seamCells += o.seamCells;
     multiVertexCells += o.multiVertexCells;
+    voxelEdges += o.voxelEdges;
     manifoldFixes += o.manifoldFixes;
     return *this;
   }

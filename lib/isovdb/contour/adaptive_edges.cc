@@ -94,6 +94,10 @@ void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool
       if (size == s && q < own) owner = false;
     }
     if (!minimal || !owner) continue;
+    if (source.voxelCells && std::any_of(around.begin(), around.end(), [&](std::int64_t l) {
+          return l != LinearOctree::kNone && (*source.voxelCells)[static_cast<std::size_t>(l)] != 0;
+        }))
+      continue;  // the voxel reading's polygon (emitVoxelReadingEdge)
     if (outside) {
       ++out.boundary;
       continue;
@@ -202,6 +206,55 @@ void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool
     r.how = chooseTriangulation(env, crossed, intersectionFree);
     if (intersectionFree) r.crossed = crossed;
   }
+}
+
+std::size_t emitVoxelReadingEdge(const VoxelReadingEdge& edge, const VertexAdder& addVertex,
+                                 FaceVertexMap& faceVertices, std::vector<mesh::Triangle>& triangles) {
+  const int axis = edge.axis;
+  const auto uv = octree::otherAxes(axis);
+  // A face between two leaves not read as voxels: its v_f where the segment between their
+  // vertices misses it, keyed as collectMinimalEdges keys it (the min side's face and group).
+  const FaceCornerFn between = [&](int q, int next, std::uint32_t, std::uint32_t) -> std::uint32_t {
+    const auto uq = static_cast<std::size_t>(q), un = static_cast<std::size_t>(next);
+    if (edge.voxelCell[uq] || edge.voxelCell[un]) return kNoVertex;
+    const int bit = (q ^ next) == 1 ? 0 : 1, other = 1 - bit;
+    const int n = uv[static_cast<std::size_t>(bit)], m = uv[static_cast<std::size_t>(other)];
+    const std::size_t lo = ((q >> bit) & 1) == 0 ? uq : un, hi = lo == uq ? un : uq;
+    FaceKey key;
+    key.axis = n;
+    key.size = 1;
+    key.part = edge.groups[lo];
+    key.min = edge.start;
+    if (((lo >> other) & 1) == 0) key.min[static_cast<std::size_t>(m)] -= 1;
+    MinimalFace face;
+    face.axis = n;
+    face.coordinate = static_cast<double>(key.min[static_cast<std::size_t>(n)]);
+    for (int x = 0; x < 3; ++x) face.min[x] = static_cast<double>(key.min[static_cast<std::size_t>(x)]);
+    face.size = 1;
+    const FacePoint fp = computeFacePoint(edge.points[lo], edge.points[hi], face);
+    if (fp.crossed) return kNoVertex;
+    auto [it, inserted] = faceVertices.try_emplace(key, 0u);
+    if (inserted) it->second = addVertex(fp.point);
+    return it->second;
+  };
+  const VoxelEdgePolygon polygon = voxelEdgePolygon(edge.cells, axis, between);
+  Vec3d point{static_cast<double>(edge.start[0]), static_cast<double>(edge.start[1]),
+              static_cast<double>(edge.start[2])};
+  const double t = std::isfinite(edge.crossing) ? edge.crossing : 0.5;
+  point[axis] += std::clamp(t, kInteriorMargin, 1.0 - kInteriorMargin);
+  if (!polygon.plainQuad) return static_cast<std::size_t>(fanVoxelEdgePolygon(polygon, addVertex(point), triangles));
+  // Four corners, each face crossed: a quad in its envelope keeps a diagonal, as regular
+  // mode's quads (voxelQuadTriangles), else the same fan.
+  std::array<std::uint32_t, 4> vertices{};
+  std::array<mesh::Vec3f, 4> positions{};
+  for (std::size_t q = 0; q < 4; ++q) {
+    vertices[q] = edge.cells[q].vertices[static_cast<std::size_t>(std::max(edge.groups[q], 0))];
+    positions[q] = {static_cast<float>(edge.points[q][0]), static_cast<float>(edge.points[q][1]),
+                    static_cast<float>(edge.points[q][2])};
+  }
+  const EdgePointFn edgePoint = [&] { return addVertex(point); };
+  return static_cast<std::size_t>(
+      voxelQuadTriangles(vertices, positions, axis, polygon.minEndInside, edge.start, 1, edgePoint, triangles));
 }
 
 VertexAdder appendingTo(mesh::Mesh& mesh, std::uint32_t base) {

@@ -21,6 +21,7 @@
 
 #include "isovdb/contour/ju_udeshi.h"
 #include "isovdb/contour/seam_cell.h"
+#include "isovdb/contour/voxel_dmc.h"
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/octree/linear_octree.h"
 #include "isovdb/octree/unit_leaf_index.h"
@@ -54,6 +55,9 @@ struct AdaptiveTree {
   bool partial = false;
   /// Constant-time lookups of `tree`'s 1-voxel leaves (optional: the tree's own search otherwise).
   const octree::UnitLeafIndex* unitLeaves = nullptr;
+  /// Per leaf: read as the voxel object (cell::ContourSettings::adaptiveReadsVoxels). The
+  /// edges of such leaves are left to emitVoxelReadingEdge (optional: none).
+  const std::vector<char>* voxelCells = nullptr;
 };
 
 /// One sign-changing minimal edge, ready to be triangulated.
@@ -102,6 +106,28 @@ using CellVertexFn = std::function<std::uint32_t(std::int64_t leaf, int group)>;
 
 std::size_t emitEdgeRecord(const EdgeRecord& record, const CellVertexFn& cellVertex, const VertexAdder& addVertex,
                            FaceVertexMap& faceVertices, std::vector<mesh::Triangle>& triangles);
+
+/// One edge of a leaf read as the voxel object (AdaptiveTree::voxelCells), between four
+/// 1-voxel leaves: its polygon is the voxel reading's (voxel_dmc.h), with the face point of
+/// each face between two leaves not read as voxels where the cell-to-cell segment misses
+/// it, as adaptive mode's polygons have it there; fanned from the edge's crossing, or, with
+/// four corners and every face crossed, split along a diagonal that stays in the edge's
+/// envelope (voxelQuadTriangles).
+struct VoxelReadingEdge {
+  std::array<VoxelEdgeCell, 4> cells{};  ///< by quadrant around the edge; vertices are mesh ids
+  std::array<bool, 4> voxelCell{};       ///< the quadrant's leaf is read as voxels
+  std::array<Vec3d, 4> points{};         ///< v_c of each leaf's vertex on the edge (a tube's: any)
+  std::array<int, 4> groups{};           ///< that vertex's group
+  std::array<int, 3> start{0, 0, 0};     ///< the edge's min end, global index coordinates
+  int axis = 0;
+  double crossing = 0.5;  ///< the surface's crossing, voxels from `start` (NaN: unknown)
+};
+
+/// @brief Appends the triangles of `edge` (outward), adding its face points (shared through
+///        `faceVertices`, as emitEdgeRecord's) and its edge point.
+/// @return the number of triangles appended.
+std::size_t emitVoxelReadingEdge(const VoxelReadingEdge& edge, const VertexAdder& addVertex,
+                                 FaceVertexMap& faceVertices, std::vector<mesh::Triangle>& triangles);
 
 /// @brief A VertexAdder that appends to `mesh.positions` (ids = positions' indices + `base`).
 VertexAdder appendingTo(mesh::Mesh& mesh, std::uint32_t base = 0);

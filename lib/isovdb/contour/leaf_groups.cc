@@ -78,6 +78,29 @@ LeafGroups groupLeaves(const cell::MetaCellSamples& samples, const octree::Linea
   return groups;
 }
 
+VoxelEdgeCell voxelEdgeCell(const LeafGroups& groups, std::size_t i, const std::vector<std::uint32_t>& ids,
+                            const std::vector<mesh::Vec3f>& positions) {
+  const auto id = [&](std::uint32_t v) { return ids.empty() ? v : ids[v]; };
+  VoxelEdgeCell cell;
+  cell.config = groups.configs[i];
+  cell.vertices.fill(kNoVertex);
+  cell.splitVertices.fill(kNoVertex);
+  const int count = groups.cellVertexCount(i);
+  for (int g = 0; g < count; ++g) {
+    const std::uint32_t v = groups.firstVertex[i] + static_cast<std::uint32_t>(g);
+    cell.vertices[static_cast<std::size_t>(g)] = id(v);
+    if (!positions.empty()) cell.positions[static_cast<std::size_t>(g)] = positions[v];
+  }
+  if (!groups.voxels) return cell;
+  cell.splitFaces = groups.splitFaces[i];
+  for (int axis = 0; axis < 3; ++axis)
+    if ((cell.splitFaces >> axis) & 1)
+      for (int slot = 0; slot < 2; ++slot)
+        cell.splitVertices[static_cast<std::size_t>(splitVertexSlot(axis, slot))] =
+            id(groups.splitVertex(i, axis, slot));
+  return cell;
+}
+
 std::vector<mesh::Vec3f> placeGroupVertices(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
                                             const LeafGroups& groups, const cell::DualVertexOptions& options,
                                             const octree::UnitEdgeCrossings* crossings,

@@ -65,6 +65,12 @@ struct LeafGroups {
   std::uint32_t totalVertices() const noexcept { return firstVertex.back(); }
 };
 
+/// @brief Leaf `i`'s vertices as a cell around a bipolar edge (voxel_dmc.h; both readings,
+///        split vertices in the voxel reading): vertex v of `groups`' numbering as `ids[v]`
+///        (empty: v), with its position `positions[v]` where given (regular mode's quads).
+VoxelEdgeCell voxelEdgeCell(const LeafGroups& groups, std::size_t i, const std::vector<std::uint32_t>& ids,
+                            const std::vector<mesh::Vec3f>& positions);
+
 /// @brief Groups the leaves with configurations `configs` (one per leaf of `tree`).
 /// @param manifoldFix apply Wenger's fix, or split doubled faces with `topology` Voxels (false only in tests).
 LeafGroups groupLeaves(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,

@@ -73,26 +73,6 @@ double squaredTriangleQuality(const mesh::Vec3f& a, const mesh::Vec3f& b, const 
   return sum > 0.0 ? area2 / (sum * sum) : 0.0;
 }
 
-/// Leaf i's vertices as a cell around a bipolar edge (both topologies; split vertices in voxel mode).
-VoxelEdgeCell voxelEdgeCell(const LeafGroups& groups, const std::vector<mesh::Vec3f>& positions, std::size_t i) {
-  VoxelEdgeCell cell;
-  cell.config = groups.configs[i];
-  cell.vertices.fill(kNoVertex);
-  cell.splitVertices.fill(kNoVertex);
-  const int count = groups.cellVertexCount(i);
-  for (int g = 0; g < count; ++g) {
-    cell.vertices[static_cast<std::size_t>(g)] = groups.firstVertex[i] + static_cast<std::uint32_t>(g);
-    cell.positions[static_cast<std::size_t>(g)] = positions[cell.vertices[static_cast<std::size_t>(g)]];
-  }
-  if (!groups.voxels) return cell;
-  cell.splitFaces = groups.splitFaces[i];
-  for (int axis = 0; axis < 3; ++axis)
-    if ((cell.splitFaces >> axis) & 1)
-      for (int slot = 0; slot < 2; ++slot)
-        cell.splitVertices[static_cast<std::size_t>(splitVertexSlot(axis, slot))] = groups.splitVertex(i, axis, slot);
-  return cell;
-}
-
 }  // namespace
 
 std::array<mesh::Triangle, 2> regularEdgeQuad(const std::array<std::uint32_t, 4>& v,
@@ -237,8 +217,8 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
             }
             std::array<VoxelEdgeCell, 4> cells;
             for (int q = 0; q < 4; ++q)
-              cells[static_cast<std::size_t>(q)] =
-                  voxelEdgeCell(groups, out.positions, static_cast<std::size_t>(around[static_cast<std::size_t>(q)]));
+              cells[static_cast<std::size_t>(q)] = voxelEdgeCell(
+                  groups, static_cast<std::size_t>(around[static_cast<std::size_t>(q)]), {}, out.positions);
             voxelEdgeTriangles(cells, axis, edgeStart, leaf.size, triangles, edgePoint);
             continue;
           }
@@ -288,7 +268,7 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
         t = edgePointOffset(samples, leaf, e, options, crossings ? &*crossings : nullptr);
       }
     }
-    const VoxelEdgeCell vertices = voxelEdgeCell(groups, out.positions, i);
+    const VoxelEdgeCell vertices = voxelEdgeCell(groups, i, {}, out.positions);
     cell.vertices = vertices.vertices;
     cell.positions = vertices.positions;
     cell.splitFaces = vertices.splitFaces;

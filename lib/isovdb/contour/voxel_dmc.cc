@@ -102,13 +102,11 @@ std::array<std::uint16_t, 2> splitVertexEdges(std::uint8_t config, int face) noe
           static_cast<std::uint16_t>(bipolar & octree::cellFaceEdgesAtCorner(face, corners[1]))};
 }
 
-int voxelEdgeTriangles(const std::array<VoxelEdgeCell, 4>& cells, int axis, const std::array<int, 3>& edgeStart,
-                       int cellSize, std::vector<mesh::Triangle>& out, const EdgePointFn& edgePoint) {
+VoxelEdgePolygon voxelEdgePolygon(const std::array<VoxelEdgeCell, 4>& cells, int axis, const FaceCornerFn& between) {
   static constexpr std::array<int, 4> kCounterClockwise{0, 1, 3, 2};
-  std::array<std::uint32_t, 12> polygon{};
-  std::size_t size = 0;
-  int apex = -1;  // first split vertex
-  bool plainQuad = true;
+  VoxelEdgePolygon polygon;
+  auto& corners = polygon.corners;
+  std::size_t& size = polygon.size;
   for (int k = 0; k < 4; ++k) {
     const int q = kCounterClockwise[static_cast<std::size_t>(k)];
     const int prev = kCounterClockwise[static_cast<std::size_t>((k + 3) % 4)];
@@ -118,10 +116,10 @@ int voxelEdgeTriangles(const std::array<VoxelEdgeCell, 4>& cells, int axis, cons
     const int towardNext = sharedFace(axis, q, next);
     const std::uint32_t first = vertexOnFace(cell, edge, sharedFace(axis, q, prev));
     const std::uint32_t second = vertexOnFace(cell, edge, towardNext);
-    polygon[size++] = first;
+    corners[size++] = first;
     if (second != first) {
-      polygon[size++] = second;
-      plainQuad = false;
+      corners[size++] = second;
+      polygon.plainQuad = false;
     }
     // The face to the next cell is split if its owner (the cell on its min side) says so.
     const bool ownerIsThis = (towardNext & 1) != 0;
@@ -129,20 +127,45 @@ int voxelEdgeTriangles(const std::array<VoxelEdgeCell, 4>& cells, int axis, cons
     const int ownerFace = ownerIsThis ? towardNext : (towardNext ^ 1);
     const VoxelEdgeCell& ownerCell = cells[static_cast<std::size_t>(owner)];
     const int faceAxis = ownerFace >> 1;
-    if (((ownerCell.splitFaces >> faceAxis) & 1) == 0) continue;
+    if (((ownerCell.splitFaces >> faceAxis) & 1) == 0) {
+      if (!between) continue;
+      const std::uint32_t nextFirst =
+          vertexOnFace(cells[static_cast<std::size_t>(next)], 4 * axis + (3 - next), towardNext ^ 1);
+      const std::uint32_t corner = between(q, next, second, nextFirst);
+      if (corner == kNoVertex) continue;
+      corners[size++] = corner;
+      polygon.plainQuad = false;
+      continue;
+    }
     const int ownerEdge = 4 * axis + (3 - owner);
     const int c0 = cellEdgeCorner(ownerEdge, 0), c1 = cellEdgeCorner(ownerEdge, 1);
     const int outsideEnd = inside(ownerCell.config, c0) ? c1 : c0;
     const int slot = outsideCornersOf(ownerCell.config, ownerFace)[1] == outsideEnd ? 1 : 0;
-    if (apex < 0) apex = static_cast<int>(size);
-    polygon[size++] = ownerCell.splitVertices[static_cast<std::size_t>(splitVertexSlot(faceAxis, slot))];
-    plainQuad = false;
+    if (polygon.apex < 0) polygon.apex = static_cast<int>(size);
+    corners[size++] = ownerCell.splitVertices[static_cast<std::size_t>(splitVertexSlot(faceAxis, slot))];
+    polygon.plainQuad = false;
   }
-
   // Counter-clockwise in (u, v) is +axis for x and z, -axis for y; outward = from the inside end
   // (the min end is corner 0 of cell 3) to the outside end.
-  const bool minEndInside = inside(cells[3].config, 0);
-  if (plainQuad) {
+  polygon.minEndInside = inside(cells[3].config, 0);
+  polygon.reversed = polygon.minEndInside != (axis != 1);
+  return polygon;
+}
+
+int fanVoxelEdgePolygon(const VoxelEdgePolygon& polygon, std::uint32_t centre, std::vector<mesh::Triangle>& out) {
+  const std::size_t size = polygon.size;
+  for (std::size_t i = 0; i < size; ++i) {
+    const std::size_t from = polygon.reversed ? (size - i) % size : i;
+    const std::size_t to = polygon.reversed ? size - 1 - i : (i + 1) % size;
+    out.push_back(mesh::Triangle{centre, polygon.corners[from], polygon.corners[to]});
+  }
+  return static_cast<int>(size);
+}
+
+int voxelEdgeTriangles(const std::array<VoxelEdgeCell, 4>& cells, int axis, const std::array<int, 3>& edgeStart,
+                       int cellSize, std::vector<mesh::Triangle>& out, const EdgePointFn& edgePoint) {
+  const VoxelEdgePolygon polygon = voxelEdgePolygon(cells, axis);
+  if (polygon.plainQuad) {
     std::array<std::uint32_t, 4> v{};
     std::array<mesh::Vec3f, 4> p{};
     for (int q = 0; q < 4; ++q) {
@@ -151,22 +174,14 @@ int voxelEdgeTriangles(const std::array<VoxelEdgeCell, 4>& cells, int axis, cons
       v[static_cast<std::size_t>(q)] = cell.vertices[static_cast<std::size_t>(g)];
       p[static_cast<std::size_t>(q)] = cell.positions[static_cast<std::size_t>(g)];
     }
-    return voxelQuadTriangles(v, p, axis, minEndInside, edgeStart, cellSize, edgePoint, out);
+    return voxelQuadTriangles(v, p, axis, polygon.minEndInside, edgeStart, cellSize, edgePoint, out);
   }
-  const bool reversed = minEndInside != (axis != 1);
-  if (edgePoint) {
-    const std::uint32_t centre = edgePoint();
-    for (std::size_t i = 0; i < size; ++i) {
-      const std::size_t from = reversed ? (size - i) % size : i, to = reversed ? size - 1 - i : (i + 1) % size;
-      out.push_back(mesh::Triangle{centre, polygon[from], polygon[to]});
-    }
-    return static_cast<int>(size);
-  }
-  if (apex < 0) apex = 0;
+  if (edgePoint) return fanVoxelEdgePolygon(polygon, edgePoint(), out);
+  const std::size_t size = polygon.size;
+  const auto apex = static_cast<std::size_t>(std::max(polygon.apex, 0));
   // Fanned from the apex, walking the polygon forwards or backwards.
   const auto at = [&](std::size_t i) {
-    const std::size_t a = static_cast<std::size_t>(apex);
-    return polygon[reversed ? (a + size - i) % size : (a + i) % size];
+    return polygon.corners[polygon.reversed ? (apex + size - i) % size : (apex + i) % size];
   };
   for (std::size_t i = 1; i + 1 < size; ++i) out.push_back(mesh::Triangle{at(0), at(i), at(i + 1)});
   return static_cast<int>(size) - 2;

@@ -44,6 +44,7 @@
 
 #include "isovdb/cell/contour_settings.h"
 #include "isovdb/cell/dmc_table.h"
+#include "isovdb/contour/seam_cell.h"
 #include "isovdb/mesh/mesh.h"
 
 namespace isovdb::contour {
@@ -93,6 +94,32 @@ struct VoxelEdgeCell {
 
 /// Adds the vertex at an edge's crossing and returns its id (empty: no such vertex).
 using EdgePointFn = std::function<std::uint32_t()>;
+
+/// The polygon of a bipolar edge in the voxel reading: around the edge counter-clockwise
+/// (u, v), each cell's corners (its vertex on the face towards the previous cell, then
+/// the one towards the next if another), then the split vertex of the face to the next
+/// cell if that face is split.
+struct VoxelEdgePolygon {
+  std::array<std::uint32_t, 16> corners{};
+  std::size_t size = 0;
+  int apex = -1;          ///< the first split vertex (-1: none)
+  bool plainQuad = true;  ///< four corners, one per cell
+  bool minEndInside = false;
+  bool reversed = false;  ///< the outward orientation walks the corners backwards
+};
+
+/// A corner to put between the corners of cell q (`last`) and of cell `next` (`first`)
+/// where their shared face is not split, or kNoVertex (adaptive mode's face points).
+using FaceCornerFn = std::function<std::uint32_t(int q, int next, std::uint32_t last, std::uint32_t first)>;
+
+/// @brief The polygon of the bipolar edge along `axis` between `cells` (as in
+///        voxelEdgeTriangles), with `between`'s corners where it gives one.
+VoxelEdgePolygon voxelEdgePolygon(const std::array<VoxelEdgeCell, 4>& cells, int axis,
+                                  const FaceCornerFn& between = {});
+
+/// @brief Appends the fan of `polygon` around the vertex `centre` (the edge's crossing), outward.
+/// @return the number of triangles appended.
+int fanVoxelEdgePolygon(const VoxelEdgePolygon& polygon, std::uint32_t centre, std::vector<mesh::Triangle>& out);
 
 /// @brief Appends the triangles (outward) of the polygon of the bipolar edge from
 ///        `edgeStart` (global index coordinates) along `axis`, between four cells of side

@@ -104,6 +104,7 @@ class Builder {
         phases_(samples, settings.iso),
         leavesAtDepth_(static_cast<std::size_t>(depths.maxDepth) + 1) {
     classify_.detectInteriorComponents = options.detectInteriorComponents;
+    if (settings.adaptiveReadsVoxels() && depths.maxDepth == depthForCellSize(samples.size, 1)) markVoxelReadingCells();
   }
 
   Evaluation evaluate(MortonKey key, FaceLabeller& labeller) const {
@@ -120,6 +121,10 @@ class Builder {
     }
     if (c.depth < depths_.maxDepth && !options_.forcedSplits.empty() &&
         std::binary_search(options_.forcedSplits.begin(), options_.forcedSplits.end(), key)) {
+      ev.split = true;
+      return ev;
+    }
+    if (c.depth < depths_.maxDepth && !voxelSplits_.empty() && voxelSplit(c)) {
       ev.split = true;
       return ev;
     }
@@ -382,6 +387,45 @@ class Builder {
     bool split = false;  // evaluated as wanting a split (set for leaves created by balancing)
   };
 
+  /// Adaptive mode in the voxel reading (readsVoxels): every node above the unit cells that
+  /// holds a unit cell within one cell of one the two readings can differ on
+  /// (cell::voxelReadingDiffers), by depth, (S >> (maxDepth - depth))^3 flags in x-fastest
+  /// order. Those cells and their neighbours stay unit leaves, so that every edge of such a
+  /// cell lies between four unit leaves, where the voxel reading's polygons are made.
+  void markVoxelReadingCells() {
+    const int maxDepth = depths_.maxDepth, size = samples_.size;
+    voxelSplits_.resize(static_cast<std::size_t>(maxDepth));
+    for (int d = 0; d < maxDepth; ++d) {
+      const auto n = static_cast<std::size_t>(size >> (maxDepth - d));
+      voxelSplits_[static_cast<std::size_t>(d)].assign(n * n * n, false);
+    }
+    // Cells from one before the meta-cell to one after it: a cell of the next meta-cell
+    // keeps this one's cells beside it at one voxel too (the samples' apron holds them).
+    forEachCrossedUnitCell(phases_, {-1, -1, -1}, size + 2, [&](const std::array<int, 3>& cell, std::uint8_t config) {
+      if (!cell::voxelReadingDiffers(config)) return;
+      for (int dz = -1; dz <= 1; ++dz)
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const std::array<int, 3> p{cell[0] + dx, cell[1] + dy, cell[2] + dz};
+            if (std::min({p[0], p[1], p[2]}) < 0 || std::max({p[0], p[1], p[2]}) >= size) continue;
+            for (int d = maxDepth - 1; d >= 0; --d) {  // the ancestors, until one is marked
+              const int shift = maxDepth - d, n = size >> shift;
+              const auto index =
+                  static_cast<std::size_t>(((p[2] >> shift) * n + (p[1] >> shift)) * n + (p[0] >> shift));
+              auto& flags = voxelSplits_[static_cast<std::size_t>(d)];
+              if (flags[index]) break;
+              flags[index] = true;
+            }
+          }
+    });
+  }
+
+  bool voxelSplit(const KeyCoord& c) const noexcept {
+    const auto& flags = voxelSplits_[static_cast<std::size_t>(c.depth)];
+    const int n = samples_.size >> (depths_.maxDepth - c.depth);
+    return flags[static_cast<std::size_t>((c.xyz[2] * n + c.xyz[1]) * n + c.xyz[0])];
+  }
+
   void addLeaf(const Evaluation& ev) {
     const auto index = static_cast<std::int32_t>(records_.size());
     records_.push_back(Record{ev.leaf, ev.split});
@@ -401,6 +445,7 @@ class Builder {
   std::vector<Record> records_;
   std::vector<bool> alive_;
   std::vector<std::vector<std::int32_t>> leavesAtDepth_;  // record indices (dead ones too) per depth
+  std::vector<std::vector<bool>> voxelSplits_;            // markVoxelReadingCells (empty: not that reading)
   KeyMap map_;
 };
 

@@ -225,6 +225,13 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
   cell::ContourSettings settings = options.contour;
   settings.iso = iso;
   settings.topology = regularTopologyFor(options.regularTopology, kind);
+  // Adaptive mode reads a mask as the voxel object too where its finest leaves are one voxel
+  // (a meta-cell size that is no power of two is refused further on, with its own message).
+  const int metaCell = options.metaCellSize;
+  const int finestLeaf = metaCell > 0 && (metaCell & (metaCell - 1)) == 0
+                             ? octree::finestLeafSize(options.octree, metaCell)
+                             : options.octree.finestCellSize;
+  settings.adaptiveVoxelReading = settings.topology == cell::RegularTopology::Voxels && finestLeaf == 1;
   const bool capsMade = box && (settings.contoursByMinimalEdges() || (method == ContourMethod::Regular && !byLayers &&
                                                                       volume::backgroundInside(field, iso)));
   mesh::MeshCollector whole;

@@ -65,7 +65,8 @@ std::vector<Setting> extractSettings(ExtractChoices& c) {
   std::vector<Setting> result{
       {"method",
        "Contouring method: adaptive (adaptive octree + dual contouring with Ju-Udeshi fans: closed, "
-       "manifold, far fewer triangles, within --max-error of the full-resolution surface), regular (octree + "
+       "manifold, free of self-intersections, the mask's topology, far fewer triangles, within --max-error of "
+       "the full-resolution surface), regular (octree + "
        "manifold DMC: closed, manifold, the mask's topology, free of self-intersections), vdb (OpenVDB's "
        "volumeToMesh, the reference)",
        &c.method},
@@ -120,7 +121,8 @@ std::vector<Setting> extractSettings(ExtractChoices& c) {
            "dropped, the mesh ends on the boundary)",
            &c.boundary},
           {"topology",
-           "regular: reading of ambiguous cells. voxels: the voxel object's topology (26-connected inside, 6-connected "
+           "regular and adaptive: reading of ambiguous cells. voxels: the voxel object's topology (26-connected "
+           "inside, 6-connected "
            "outside; Euler characteristic 2x the mask's), mdmc: Wenger's manifold DMC, auto: voxels for masks, mdmc "
            "for fields",
            &c.topology},

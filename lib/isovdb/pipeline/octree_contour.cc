@@ -240,6 +240,7 @@ void recordTotals(const MetaCellTotals& totals, const cell::ContourSettings& opt
   if (byEdges) {
     section["intersection_free"] = options.intersectionFree;
     section["multi_vertex_cells"] = a.multiVertexCells;
+    section["voxel_reading_edges"] = a.voxelEdges;
     section["minimal_edges"] = a.minimalEdges;
     section["fanned_edges"] = a.fannedEdges;
     section["triangles_added_by_fans"] = a.trianglesAddedByFans;

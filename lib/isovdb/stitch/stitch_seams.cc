@@ -94,16 +94,23 @@ void stitchRegular(const Seam& seam, const EdgeOctree& edgeTree, int s, bool vox
 
 /// Adaptive mode: the minimal edges the seam owns, with Ju–Udeshi envelopes; cell
 /// vertices the meta-cells did not use yet are added on first use.
-void stitchAdaptive(const Seam& seam, const EdgeOctree& edgeTree, int s, bool intersectionFree,
+void stitchAdaptive(const Seam& seam, const EdgeOctree& edgeTree, int s, bool intersectionFree, bool voxels,
                     const contour::VertexAdder& addVertex, contour::FaceVertexMap& faceVertices, mesh::Mesh& out,
                     StitchStats& stats) {
   const LinearOctree& tree = edgeTree.tree;
   const std::size_t n = tree.leafCount();
   std::vector<std::uint32_t> firstVertex(n + 1, 0);
   std::vector<char> alternative(n, 0);
+  // Cells read as the voxel object (cell::ContourSettings::adaptiveReadsVoxels): their
+  // meta-cell made every vertex of theirs, split vertices included.
+  std::vector<char> voxelCells(voxels ? n : 0, 0);
   for (std::size_t i = 0; i < n; ++i) {
     const SeamCell& cell = *edgeTree.cells[i];
-    firstVertex[i + 1] = firstVertex[i] + cell::dmcEntry(cell.cornerSigns, cell.alternative).vertexCount;
+    const bool read = voxels && cell.size == 1 && cell::voxelReadingDiffers(cell.cornerSigns);
+    if (voxels) voxelCells[i] = read;
+    const int count = read ? contour::voxelCellVertexCount(cell.cornerSigns)
+                           : cell::dmcEntry(cell.cornerSigns, cell.alternative).vertexCount;
+    firstVertex[i + 1] = firstVertex[i] + static_cast<std::uint32_t>(count);
     alternative[i] = cell.alternative;
   }
   std::vector<contour::Vec3d> cellPoints(firstVertex[n]);
@@ -122,7 +129,8 @@ void stitchAdaptive(const Seam& seam, const EdgeOctree& edgeTree, int s, bool in
         return static_cast<double>(edgeTree.cells[leaf]->edgeCrossing[static_cast<std::size_t>(e)]);
       },
       .inRegion = [&](const std::array<int, 3>& start, int axis) { return seam.ownsEdge(start, axis, s); },
-      .partial = true};
+      .partial = true,
+      .voxelCells = voxels ? &voxelCells : nullptr};
   const auto cellVertex = [&](std::int64_t leaf, int group) {
     SeamCell& cell = *edgeTree.cells[static_cast<std::size_t>(leaf)];
     std::uint32_t& vertex = cell.vertices[static_cast<std::size_t>(group)];
@@ -142,6 +150,47 @@ void stitchAdaptive(const Seam& seam, const EdgeOctree& edgeTree, int s, bool in
     }
   }
   stats.missingCells += edges.boundary + edges.withoutVertex;
+  if (!voxels) return;
+  // The seam's edges of cells read as voxels, by the leaf in quadrant 3 (as stitchRegular).
+  for (std::size_t i = 0; i < n; ++i) {
+    const octree::OctreeLeaf& leaf = tree.leaf(i);
+    const std::uint16_t bipolar = octree::bipolarEdgeMask(leaf.cornerSigns);
+    for (int axis = 0; axis < 3 && leaf.size == 1; ++axis) {
+      if (((bipolar >> (4 * axis)) & 1) == 0 || !seam.ownsEdge(leaf.origin, axis, s)) continue;
+      const auto around = tree.leavesAroundEdge(leaf.origin, axis);
+      if (std::none_of(around.begin(), around.end(), [&](std::int64_t l) {
+            return l != LinearOctree::kNone && voxelCells[static_cast<std::size_t>(l)] != 0;
+          }))
+        continue;
+      if (std::any_of(around.begin(), around.end(), [&](std::int64_t l) {
+            return l == LinearOctree::kNone || tree.leaf(static_cast<std::size_t>(l)).size != 1;
+          })) {
+        ++stats.missingCells;
+        continue;
+      }
+      const SeamCell& owner = *edgeTree.cells[i];
+      contour::VoxelReadingEdge edge;
+      edge.axis = axis;
+      edge.start = owner.origin;
+      edge.crossing = static_cast<double>(owner.edgeCrossing[static_cast<std::size_t>(4 * axis)]);
+      for (int q = 0; q < 4; ++q) {
+        const auto uq = static_cast<std::size_t>(q);
+        const auto l = static_cast<std::size_t>(around[uq]);
+        SeamCell& cell = *edgeTree.cells[l];
+        edge.cells[uq] = voxelEdgeCell(cell);
+        edge.voxelCell[uq] = voxelCells[l] != 0;
+        const int g = std::max(
+            0, static_cast<int>(
+                   contour::voxelDmcEntry(cell.cornerSigns).vertexOfEdge[static_cast<std::size_t>(4 * axis + 3 - q)]));
+        edge.groups[uq] = g;
+        edge.points[uq] = cellPoints[firstVertex[l] + static_cast<std::size_t>(g)];
+        // A voxel cell's vertices were made with its meta-cell; the others' when first used.
+        if (!edge.voxelCell[uq]) edge.cells[uq].vertices[static_cast<std::size_t>(g)] = cellVertex(around[uq], g);
+      }
+      contour::emitVoxelReadingEdge(edge, addVertex, faceVertices, out.triangles);
+      ++stats.edges;
+    }
+  }
 }
 
 }  // namespace
@@ -212,7 +261,8 @@ void SeamStitcher::stitchBelow(int z, Interrupter* interrupter) {
       stitchRegular(seam, edgeTree, s, settings_.topology == cell::RegularTopology::Voxels, settings_.intersectionFree,
                     addVertex, tail_, stats_);
     else
-      stitchAdaptive(seam, edgeTree, s, settings_.intersectionFree, addVertex, faceVertices_, tail_, stats_);
+      stitchAdaptive(seam, edgeTree, s, settings_.intersectionFree, settings_.adaptiveReadsVoxels(), addVertex,
+                     faceVertices_, tail_, stats_);
     ++(seam.kind == Seam::Kind::Face ? stats_.metaFaces : stats_.metaEdges);
   };
   // Stitching only changes kept cells (adaptive vertex ids), never the store's map.
