@@ -111,5 +111,37 @@ TEST(MaskGuarantees, BothModesHaveEveryGuarantee) {
   EXPECT_EQ(meshes, 96);  // every mask has a surface
 }
 
+// One-voxel plates on the box's faces, three voxels apart along each axis in turn (an RGB
+// image read as a 3 x n x n volume is such a mask: example1.nrrd of scijs/nrrd-js at 128).
+// Every cell of the plates' inner surfaces has its crossings in one plane, where a QEF
+// minimiser clamped onto the cell's boundary sat on the corner line of its cell, on the
+// edge point of that edge's fan: 40 self-intersecting pairs in regular mode.
+TEST(MaskGuarantees, OneVoxelPlatesOnTheBoxFacesInBothModes) {
+  constexpr int kSide = 20;
+  for (int axis = 0; axis < 3; ++axis) {
+    std::array<std::int64_t, 3> dims{kSide, kSide, kSide};
+    dims[static_cast<std::size_t>(axis)] = 3;
+    auto stream = test::VectorSliceStream::fromFunction(dims, [&](int x, int y, int z) {
+      const std::array<int, 3> p{x, y, z};
+      const int across = p[static_cast<std::size_t>(axis)];
+      const int u = p[static_cast<std::size_t>((axis + 1) % 3)], v = p[static_cast<std::size_t>((axis + 2) % 3)];
+      return across == 0 || (across == 2 && !(u == 9 && v == 9)) ? 1.f : 0.f;  // the far plate has a hole
+    });
+    const volume::Volume mask = volume::ingestMask(stream, {});
+    const std::int64_t solid = volume::eulerCharacteristic(mask);
+    EXPECT_EQ(solid, 1);  // a plate and a plate with a hole
+    for (const ContourMethod method : {ContourMethod::Regular, ContourMethod::Adaptive})
+      for (const int metaCellSize : {0, 16}) {
+        const mesh::MeshReport report = mesh::validateMesh(meshOf(mask, method, metaCellSize));
+        const std::string where = std::string(contourMethodName(method)) + ", plates across axis " +
+                                  std::to_string(axis) + ", meta-cell " + std::to_string(metaCellSize);
+        EXPECT_TRUE(report.closed) << where;
+        EXPECT_TRUE(report.manifold) << where;
+        EXPECT_EQ(report.eulerCharacteristic, 2 * solid) << where;
+        EXPECT_EQ(report.selfIntersectingPairs, 0) << where;
+      }
+  }
+}
+
 }  // namespace
 }  // namespace isovdb::pipeline

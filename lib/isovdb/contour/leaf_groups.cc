@@ -5,6 +5,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include "isovdb/contour/adaptive_edges.h"
 #include "isovdb/contour/box_caps.h"
 #include "isovdb/octree/criteria.h"
 
@@ -120,6 +121,15 @@ std::vector<mesh::Vec3f> placeGroupVertices(const cell::MetaCellSamples& samples
     const Vec3d q = besideDataBox(Vec3d{p[0], p[1], p[2]}, lo, leaf.size, *capBox);
     return mesh::Vec3f{static_cast<float>(q[0]), static_cast<float>(q[1]), static_cast<float>(q[2])};
   };
+  // A cell's own vertices (not split vertices, which lie on their face) strictly inside it,
+  // kInteriorMargin from its faces: a QEF minimiser clamped onto the cell's boundary could
+  // sit on an edge, on the edge point of that edge's fan (example1.nrrd of scijs/nrrd-js: a
+  // vertex at a corner line of its cell, 10 self-intersecting pairs), and Ju–Udeshi's
+  // envelopes need the cell points inside.
+  const auto strictlyInside = [&](const mesh::Vec3f& p, const octree::OctreeLeaf& leaf) {
+    const Vec3d q = cellPointInside(p, leaf, samples.origin);
+    return mesh::Vec3f{static_cast<float>(q[0]), static_cast<float>(q[1]), static_cast<float>(q[2])};
+  };
   std::vector<mesh::Vec3f> positions(groups.totalVertices());
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, tree.leafCount(), kGrain / 4), [&](const tbb::blocked_range<std::size_t>& r) {
@@ -132,7 +142,7 @@ std::vector<mesh::Vec3f> placeGroupVertices(const cell::MetaCellSamples& samples
               leaf.vertexTruncation == options.singularValueThreshold &&
               leaf.vertexSharpFeatures == options.sharpFeatures) {
             // The construction's geometric criterion solved this QEF already.
-            positions[groups.firstVertex[i]] = leaf.vertex;
+            positions[groups.firstVertex[i]] = strictlyInside(leaf.vertex, leaf);
             continue;
           }
           // Several sheets in one cell: each vertex at its group's mass point, which stays
@@ -167,6 +177,7 @@ std::vector<mesh::Vec3f> placeGroupVertices(const cell::MetaCellSamples& samples
             if (!v.valid())  // cannot happen for bipolar edges; keep the cell centre rather than garbage
               for (std::size_t a = 0; a < 3; ++a)
                 p[a] = static_cast<float>(samples.origin[a] + leaf.origin[a]) + 0.5f * static_cast<float>(leaf.size);
+            if (k < groupVertices) p = strictlyInside(p, leaf);
             if (capped) p = capVertex(p, leaf);
             positions[groups.firstVertex[i] + static_cast<std::size_t>(k)] = p;
           }
