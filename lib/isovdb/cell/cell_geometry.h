@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 
@@ -79,6 +80,13 @@ constexpr std::uint16_t bipolarEdgeMask(std::uint8_t cornerSigns) noexcept {
   return mask;
 }
 
+/// @brief True for the four configurations whose only inside corners are the two ends of a body diagonal.
+constexpr bool isTubeConfig(std::uint8_t cornerSigns) noexcept {
+  const auto bits = static_cast<unsigned>(cornerSigns);
+  if (std::popcount(bits) != 2) return false;
+  return ((bits >> (std::countr_zero(bits) ^ 7)) & 1u) != 0;
+}
+
 /// @brief True where the voxel reading of masks (26-connected inside, 6-connected outside;
 ///        contour/voxel_dmc.h) and Wenger's manifold DMC can read a cell differently: a face
 ///        whose inside corners are the two ends of one diagonal, or inside corners that are
@@ -93,13 +101,7 @@ constexpr bool voxelReadingDiffers(std::uint8_t cornerSigns) noexcept {
     const bool a = inside(corner(0, 0)), b = inside(corner(1, 0)), c = inside(corner(0, 1)), d = inside(corner(1, 1));
     if (a == d && b == c && a != b) return true;
   }
-  int count = 0, first = -1;
-  for (int c = 0; c < 8; ++c)
-    if (inside(c)) {
-      if (first < 0) first = c;
-      ++count;
-    }
-  return count == 2 && inside(first ^ 7);
+  return isTubeConfig(cornerSigns);
 }
 /// @}
 

@@ -51,26 +51,19 @@ MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const
   }
   const std::vector<mesh::Vec3f> positions =
       placeGroupVertices(samples, tree, groups, cell::dualVertexOptions(options), crossings);
+  // placeGroupVertices keeps each cell vertex strictly inside its cell (split vertices on
+  // their face). A cap's vertex (its leaf lies beyond a face of the data's box) is then held
+  // within 2 * kInteriorMargin of that face: the cap is flat on the face before the
+  // triangulation is chosen (box_caps.h).
   std::vector<Vec3d> cellPoints(positions.size());
-  // A cap's vertex (its leaf lies beyond a face of the data's box) within 2 * kInteriorMargin
-  // of that face: the cap is flat on the face before the triangulation is chosen (box_caps.h).
-  const auto capVertex = [&](const Vec3d& p, const octree::OctreeLeaf& leaf) {
-    if (!options.dataBox) return p;
-    std::array<int, 3> lo{};
-    for (std::size_t a = 0; a < 3; ++a) lo[a] = samples.origin[a] + leaf.origin[a];
-    return besideDataBox(p, lo, leaf.size, *options.dataBox);
-  };
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leafCount, 256), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t i = r.begin(); i != r.end(); ++i) {
-      // A split vertex lies on its face, which both cells' polygons share (voxel_dmc.h): kept
-      // there, not moved into the cell that owns it.
-      const std::uint32_t splits = groups.firstVertex[i] + static_cast<std::uint32_t>(groups.cellVertexCount(i));
+    for (std::size_t i = r.begin(); i != r.end(); ++i)
       for (std::uint32_t v = groups.firstVertex[i]; v < groups.firstVertex[i + 1]; ++v) {
         const mesh::Vec3f& p = positions[v];
-        cellPoints[v] = capVertex(
-            v < splits ? cellPointInside(p, tree.leaf(i), samples.origin) : Vec3d{p[0], p[1], p[2]}, tree.leaf(i));
+        cellPoints[v] = Vec3d{p[0], p[1], p[2]};
+        if (options.dataBox)
+          cellPoints[v] = besideDataBox(cellPoints[v], tree.leaf(i), samples.origin, *options.dataBox);
       }
-    }
   });
   // Crossing on edge e of a leaf, in voxels from the edge's start corner (NaN: none).
   auto crossing = [&](std::size_t leafIndex, int e) -> double {
@@ -222,7 +215,7 @@ MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const
     }
     for (std::size_t g = 0; g < static_cast<std::size_t>(groups.cellVertexCount(i)); ++g) {
       cell.vertices[g] = meshVertex[groups.firstVertex[i] + g];
-      const Vec3d& p = cellPoints[groups.firstVertex[i] + g];  // float-exact (cellPointInside)
+      const Vec3d& p = cellPoints[groups.firstVertex[i] + g];  // float-exact (placeGroupVertices, besideDataBox)
       cell.positions[g] = {static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])};
     }
     for (int e = 0; e < 12; ++e)

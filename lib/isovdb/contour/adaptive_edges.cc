@@ -211,27 +211,19 @@ void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool
 std::size_t emitVoxelReadingEdge(const VoxelReadingEdge& edge, const VertexAdder& addVertex,
                                  FaceVertexMap& faceVertices, std::vector<mesh::Triangle>& triangles) {
   const int axis = edge.axis;
-  const auto uv = octree::otherAxes(axis);
   // A face between two leaves not read as voxels: its v_f where the segment between their
   // vertices misses it, keyed as collectMinimalEdges keys it (the min side's face and group).
-  const FaceCornerFn between = [&](int q, int next, std::uint32_t, std::uint32_t) -> std::uint32_t {
+  const FaceCornerFn between = [&](int q, int next) -> std::uint32_t {
     const auto uq = static_cast<std::size_t>(q), un = static_cast<std::size_t>(next);
     if (edge.voxelCell[uq] || edge.voxelCell[un]) return kNoVertex;
-    const int bit = (q ^ next) == 1 ? 0 : 1, other = 1 - bit;
-    const int n = uv[static_cast<std::size_t>(bit)], m = uv[static_cast<std::size_t>(other)];
-    const std::size_t lo = ((q >> bit) & 1) == 0 ? uq : un, hi = lo == uq ? un : uq;
+    const QuadrantFace shared = faceBetweenQuadrants(edge.start, axis, 1, q, next);
+    const std::size_t lo = shared.firstOnMinSide ? uq : un, hi = lo == uq ? un : uq;
     FaceKey key;
-    key.axis = n;
+    key.axis = shared.face.axis;
     key.size = 1;
     key.part = edge.groups[lo];
-    key.min = edge.start;
-    if (((lo >> other) & 1) == 0) key.min[static_cast<std::size_t>(m)] -= 1;
-    MinimalFace face;
-    face.axis = n;
-    face.coordinate = static_cast<double>(key.min[static_cast<std::size_t>(n)]);
-    for (int x = 0; x < 3; ++x) face.min[x] = static_cast<double>(key.min[static_cast<std::size_t>(x)]);
-    face.size = 1;
-    const FacePoint fp = computeFacePoint(edge.points[lo], edge.points[hi], face);
+    for (std::size_t x = 0; x < 3; ++x) key.min[x] = static_cast<int>(shared.face.min[x]);
+    const FacePoint fp = computeFacePoint(edge.points[lo], edge.points[hi], shared.face);
     if (fp.crossed) return kNoVertex;
     auto [it, inserted] = faceVertices.try_emplace(key, 0u);
     if (inserted) it->second = addVertex(fp.point);

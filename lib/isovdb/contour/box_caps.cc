@@ -10,7 +10,9 @@
 
 namespace isovdb::contour {
 
-Vec3d besideDataBox(Vec3d p, const std::array<int, 3>& lo, int size, const cell::DataBox& box) {
+Vec3d besideDataBox(Vec3d p, const octree::OctreeLeaf& leaf, const std::array<int, 3>& treeOrigin,
+                    const cell::DataBox& box) {
+  const int size = leaf.size;
   const double m = 2 * kInteriorMargin * size;
   // The float nearest face + side * m, on the cell's side of the face (the mesh stores floats).
   const auto beside = [m](int face, double side) {
@@ -19,8 +21,9 @@ Vec3d besideDataBox(Vec3d p, const std::array<int, 3>& lo, int size, const cell:
         f != static_cast<float>(face) ? f : std::nextafter(static_cast<float>(face), static_cast<float>(face + side)));
   };
   for (std::size_t a = 0; a < 3; ++a) {
-    if (lo[a] + size == box[0][a]) p[a] = std::max(p[a], beside(box[0][a], -1.0));
-    if (lo[a] == box[1][a]) p[a] = std::min(p[a], beside(box[1][a], 1.0));
+    const int lo = treeOrigin[a] + leaf.origin[a];
+    if (lo + size == box[0][a]) p[a] = std::max(p[a], beside(box[0][a], -1.0));
+    if (lo == box[1][a]) p[a] = std::min(p[a], beside(box[1][a], 1.0));
   }
   return p;
 }

@@ -15,15 +15,17 @@
 #include <array>
 
 #include "isovdb/cell/contour_settings.h"
+#include "isovdb/octree/linear_octree.h"
 #include "isovdb/vec3.h"
 
 namespace isovdb::contour {
 
-/// @brief A cell vertex `p` of the cell [lo, lo + size) (global index coordinates) moved,
-///        on each axis where the cell lies just beyond a face of `box`, to within
-///        2 * kInteriorMargin * size of that face (the float nearest that point on the
-///        cell's side, so that it stays beyond the face once stored as a float).
-Vec3d besideDataBox(Vec3d p, const std::array<int, 3>& lo, int size, const cell::DataBox& box);
+/// @brief A vertex `p` of `leaf` (global coordinates; `treeOrigin` = global coordinate of
+///        the tree's offset 0) moved, on each axis where the leaf lies just beyond a face of
+///        `box`, to within 2 * kInteriorMargin * size of that face (the float nearest that
+///        point on the leaf's side, so that it stays beyond the face once stored as a float).
+Vec3d besideDataBox(Vec3d p, const octree::OctreeLeaf& leaf, const std::array<int, 3>& treeOrigin,
+                    const cell::DataBox& box);
 
 /// @brief The edge point of the edge from `start` along `axis` (length `size`), as an
 ///        offset `t` from its start: if the edge leaves `box` through a face, the point

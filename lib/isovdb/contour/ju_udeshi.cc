@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "isovdb/cell/cell_geometry.h"
+
 namespace isovdb::contour {
 namespace {
 
@@ -192,6 +194,20 @@ struct EdgePolygon {
 };
 
 }  // namespace
+
+QuadrantFace faceBetweenQuadrants(const std::array<int, 3>& edgeStart, int axis, int size, int q, int next) {
+  const auto uv = cell::otherAxes(axis);
+  const int bit = (q ^ next) == 1 ? 0 : 1, other = 1 - bit;
+  const int n = uv[static_cast<std::size_t>(bit)], m = uv[static_cast<std::size_t>(other)];
+  QuadrantFace result;
+  result.face.axis = n;
+  result.face.coordinate = edgeStart[static_cast<std::size_t>(n)];
+  result.face.size = size;
+  for (int a = 0; a < 3; ++a) result.face.min[a] = edgeStart[static_cast<std::size_t>(a)];
+  if (((q >> other) & 1) == 0) result.face.min[m] -= size;
+  result.firstOnMinSide = ((q >> bit) & 1) == 0;
+  return result;
+}
 
 FacePoint computeFacePoint(const Vec3d& a, const Vec3d& b, const MinimalFace& face, const EnvelopeOptions& options) {
   const int n = face.axis;

@@ -61,6 +61,18 @@ struct MinimalFace {
   double size = 1.0;        ///< side length
 };
 
+/// The face between two neighbouring cells around an edge (faceBetweenQuadrants).
+struct QuadrantFace {
+  MinimalFace face;
+  bool firstOnMinSide = false;  ///< the first cell lies on the face's min side
+};
+
+/// @brief The face shared by the cells of quadrants `q` and `next` (they differ in one bit:
+///        bit 0 = +u side, bit 1 = +v side, as cell::edgeQuadrantVoxel) around the edge from
+///        `edgeStart` along `axis`, cells of side `size`: on the plane of the edge across
+///        which they differ, spanning the edge and the cells' side away from it.
+QuadrantFace faceBetweenQuadrants(const std::array<int, 3>& edgeStart, int axis, int size, int q, int next);
+
 /// The point v_f of a minimal face and whether the cell-to-cell segment crosses the face.
 struct FacePoint {
   Vec3d point{0, 0, 0};  ///< on the face plane, strictly inside the face

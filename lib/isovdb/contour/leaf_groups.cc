@@ -116,9 +116,7 @@ std::vector<mesh::Vec3f> placeGroupVertices(const cell::MetaCellSamples& samples
   };
   // Held beside the face it lies beyond, where the cap is (box_caps.h).
   const auto capVertex = [&](const mesh::Vec3f& p, const octree::OctreeLeaf& leaf) {
-    std::array<int, 3> lo{};
-    for (std::size_t a = 0; a < 3; ++a) lo[a] = samples.origin[a] + leaf.origin[a];
-    const Vec3d q = besideDataBox(Vec3d{p[0], p[1], p[2]}, lo, leaf.size, *capBox);
+    const Vec3d q = besideDataBox(Vec3d{p[0], p[1], p[2]}, leaf, samples.origin, *capBox);
     return mesh::Vec3f{static_cast<float>(q[0]), static_cast<float>(q[1]), static_cast<float>(q[2])};
   };
   // A cell's own vertices (not split vertices, which lie on their face) strictly inside it,

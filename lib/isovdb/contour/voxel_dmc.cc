@@ -129,9 +129,7 @@ VoxelEdgePolygon voxelEdgePolygon(const std::array<VoxelEdgeCell, 4>& cells, int
     const int faceAxis = ownerFace >> 1;
     if (((ownerCell.splitFaces >> faceAxis) & 1) == 0) {
       if (!between) continue;
-      const std::uint32_t nextFirst =
-          vertexOnFace(cells[static_cast<std::size_t>(next)], 4 * axis + (3 - next), towardNext ^ 1);
-      const std::uint32_t corner = between(q, next, second, nextFirst);
+      const std::uint32_t corner = between(q, next);
       if (corner == kNoVertex) continue;
       corners[size++] = corner;
       polygon.plainQuad = false;
@@ -198,7 +196,6 @@ int voxelQuadTriangles(const std::array<std::uint32_t, 4>& v, const std::array<m
   // Ju–Udeshi's envelope of the edge: the cells' vertices in cyclic order (quadrants 0, 1,
   // 3, 2) and the points where the segments between neighbours cross their shared faces.
   static constexpr std::array<int, 4> kCycle{0, 1, 3, 2};
-  const auto uv = otherAxes(axis);
   EdgeEnvelope envelope;
   bool crossed = true;
   for (int a = 0; a < 3; ++a) {
@@ -212,18 +209,9 @@ int voxelQuadTriangles(const std::array<std::uint32_t, 4>& v, const std::array<m
   for (int k = 0; k < 4; ++k) {
     const int q = kCycle[static_cast<std::size_t>(k)], next = kCycle[static_cast<std::size_t>((k + 1) % 4)];
     envelope.cellPoints[static_cast<std::size_t>(k)] = point(q);
-    // The face between them lies on the plane of the edge across which their quadrants differ.
-    const int bit = (q ^ next) == 1 ? 0 : 1, other = 1 - bit;
-    const int n = uv[static_cast<std::size_t>(bit)], m = uv[static_cast<std::size_t>(other)];
-    MinimalFace face;
-    face.axis = n;
-    face.coordinate = edgeStart[static_cast<std::size_t>(n)];
-    face.size = size;
-    for (int a = 0; a < 3; ++a) face.min[a] = edgeStart[static_cast<std::size_t>(a)];
-    if (((q >> other) & 1) == 0) face.min[m] -= size;
-    const bool qOnMinSide = ((q >> bit) & 1) == 0;
-    const FacePoint fp =
-        qOnMinSide ? computeFacePoint(point(q), point(next), face) : computeFacePoint(point(next), point(q), face);
+    const QuadrantFace shared = faceBetweenQuadrants(edgeStart, axis, size, q, next);
+    const FacePoint fp = shared.firstOnMinSide ? computeFacePoint(point(q), point(next), shared.face)
+                                               : computeFacePoint(point(next), point(q), shared.face);
     envelope.facePoints[static_cast<std::size_t>(k)] = fp.point;
     crossed = crossed && fp.crossed;
   }

@@ -36,12 +36,11 @@
 #pragma once
 
 #include <array>
-#include <bit>
 #include <cstdint>
 #include <functional>
-#include <optional>
 #include <vector>
 
+#include "isovdb/cell/cell_geometry.h"
 #include "isovdb/cell/contour_settings.h"
 #include "isovdb/cell/dmc_table.h"
 #include "isovdb/contour/seam_cell.h"
@@ -56,13 +55,9 @@ using cell::RegularTopology;  // which reading: cell/contour_settings.h
 ///        corners; `doubleFace` as in dmc_table.h.
 const cell::DmcEntry& voxelDmcEntry(std::uint8_t config) noexcept;
 
-/// @brief True for the four configurations whose only inside corners are the two ends of a body diagonal.
-/// (Inline: the quad loop asks it of four cells per edge.)
-constexpr bool isTubeConfig(std::uint8_t config) noexcept {
-  const auto bits = static_cast<unsigned>(config);
-  if (std::popcount(bits) != 2) return false;
-  return ((bits >> (std::countr_zero(bits) ^ 7)) & 1u) != 0;
-}
+/// True for the four configurations whose only inside corners are the two ends of a body
+/// diagonal (cell/cell_geometry.h; inline: the quad loop asks it of four cells per edge).
+using cell::isTubeConfig;
 
 /// Sectors of a tube cell.
 struct TubeSectors {
@@ -108,9 +103,9 @@ struct VoxelEdgePolygon {
   bool reversed = false;  ///< the outward orientation walks the corners backwards
 };
 
-/// A corner to put between the corners of cell q (`last`) and of cell `next` (`first`)
-/// where their shared face is not split, or kNoVertex (adaptive mode's face points).
-using FaceCornerFn = std::function<std::uint32_t(int q, int next, std::uint32_t last, std::uint32_t first)>;
+/// A corner to put between the corners of the cells in quadrants q and `next` where their
+/// shared face is not split, or kNoVertex (adaptive mode's face points).
+using FaceCornerFn = std::function<std::uint32_t(int q, int next)>;
 
 /// @brief The polygon of the bipolar edge along `axis` between `cells` (as in
 ///        voxelEdgeTriangles), with `between`'s corners where it gives one.

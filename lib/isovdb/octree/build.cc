@@ -387,8 +387,8 @@ class Builder {
     bool split = false;  // evaluated as wanting a split (set for leaves created by balancing)
   };
 
-  /// Adaptive mode in the voxel reading (readsVoxels): every node above the unit cells that
-  /// holds a unit cell within one cell of one the two readings can differ on
+  /// Adaptive mode in the voxel reading (ContourSettings::adaptiveReadsVoxels): every node
+  /// above the unit cells that holds a unit cell within one cell of one the two readings can differ on
   /// (cell::voxelReadingDiffers), by depth, (S >> (maxDepth - depth))^3 flags in x-fastest
   /// order. Those cells and their neighbours stay unit leaves, so that every edge of such a
   /// cell lies between four unit leaves, where the voxel reading's polygons are made.

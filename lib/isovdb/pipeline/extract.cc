@@ -296,9 +296,7 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
     if (method == ContourMethod::Adaptive && options.octree.maxError > 0.0f) {
       section["max_error"] = options.octree.maxError;
       // The bound is kept by splitting leaves down to one voxel: coarser finest cells may stay beyond it.
-      section["finest_cell_voxels"] = options.metaCellSize > 0
-                                          ? octree::finestLeafSize(options.octree, options.metaCellSize)
-                                          : options.octree.finestCellSize;
+      section["finest_cell_voxels"] = finestLeaf;
     }
     section["vertices"] = sink.vertexCount();
     section["triangles"] = sink.triangleCount();
