@@ -44,6 +44,13 @@ constexpr int cellEdgeCorner(int edge, int end) noexcept {
   return ((q & 1) << uv[0]) | (((q >> 1) & 1) << uv[1]) | (end << axis);
 }
 
+/// @brief The start (min end) of cell edge e of the cell of side `size` whose min corner is `origin`.
+constexpr std::array<int, 3> cellEdgeStart(std::array<int, 3> origin, int size, int edge) noexcept {
+  const int c0 = cellEdgeCorner(edge, 0);
+  for (std::size_t a = 0; a < 3; ++a) origin[a] += ((c0 >> a) & 1) * size;
+  return origin;
+}
+
 /// @brief Cell edge index from its axis and the min corner's bits on the other two axes.
 constexpr int cellEdgeIndex(int axis, int cornerBits) noexcept {
   const auto uv = otherAxes(axis);

@@ -53,8 +53,7 @@ void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool
     const int axis = octree::cellEdgeAxis(e);
     const int c0 = octree::cellEdgeCorner(e, 0);
     const auto uv = octree::otherAxes(axis);
-    std::array<int, 3> start = leaf.origin;
-    for (int a = 0; a < 3; ++a) start[a] += ((c0 >> a) & 1) * s;
+    const std::array<int, 3> start = cell::cellEdgeStart(leaf.origin, s, e);
     if (source.inRegion && !source.inRegion(start, axis)) continue;
     // This leaf's quadrant: on the min side of the edge where the edge is on its max side.
     const int own = (1 - ((c0 >> uv[0]) & 1)) | ((1 - ((c0 >> uv[1]) & 1)) << 1);

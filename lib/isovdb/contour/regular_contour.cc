@@ -53,9 +53,8 @@ float edgePointOffset(const MetaCellSamples& samples, const OctreeLeaf& leaf, in
   const float offset = std::clamp(std::isfinite(t) ? static_cast<float>(t) : 0.5f * length, margin, length - margin);
   if (!options.capBox) return offset;
   // An edge that leaves the box has its point on the cap, beside the face (box_caps.h).
-  const int c0 = cell::cellEdgeCorner(e, 0);
-  std::array<int, 3> start{};
-  for (std::size_t a = 0; a < 3; ++a) start[a] = samples.origin[a] + leaf.origin[a] + ((c0 >> a) & 1) * leaf.size;
+  std::array<int, 3> start = cell::cellEdgeStart(leaf.origin, leaf.size, e);
+  for (std::size_t a = 0; a < 3; ++a) start[a] += samples.origin[a];
   return edgePointBesideDataBox(offset, start, cell::cellEdgeAxis(e), leaf.size, margin, *options.capBox);
 }
 

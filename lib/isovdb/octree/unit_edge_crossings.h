@@ -108,10 +108,8 @@ inline cell::DualVertex cellDualVertex(const cell::MetaCellSamples& samples, con
 /// @pre `crossings` (if any) were found from `samples` at `iso`, with `sharpFeatures`.
 inline double leafEdgeCrossing(const cell::MetaCellSamples& samples, const std::array<int, 3>& origin, int size, int e,
                                float iso, bool sharpFeatures, const UnitEdgeCrossings* crossings) {
-  const int c0 = cell::cellEdgeCorner(e, 0);
   const int axis = cell::cellEdgeAxis(e);
-  std::array<int, 3> start = origin;
-  for (int a = 0; a < 3; ++a) start[static_cast<std::size_t>(a)] += ((c0 >> a) & 1) * size;
+  const std::array<int, 3> start = cell::cellEdgeStart(origin, size, e);
   cell::EdgeIntersection ix;
   const cell::EdgeIntersection* hit = &ix;
   if (crossings != nullptr && size == 1)
