@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <span>
 
 #include "isovdb/cell/dmc_table.h"
@@ -136,6 +137,7 @@ bool unitCellVerticesWithin(const cell::MetaCellSamples& samples, const octree::
 void addLeavesMissingFullResolutionVertices(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
                                             const mesh::Mesh& mesh, const cell::DualVertexOptions& options,
                                             float maxError, int finestSize, const octree::UnitEdgeCrossings* crossings,
+                                            const octree::SamplePhases* givenPhases,
                                             std::vector<octree::MortonKey>& keys) {
   if (!std::isfinite(maxError)) return;  // nothing lies farther than that
   const auto checked = [&](const octree::OctreeLeaf& leaf) {
@@ -146,7 +148,9 @@ void addLeavesMissingFullResolutionVertices(const cell::MetaCellSamples& samples
   };
   const auto& leaves = tree.leaves();
   if (std::none_of(leaves.begin(), leaves.end(), checked)) return;  // no grid, no phases
-  const octree::SamplePhases phases(samples, options.iso);
+  std::optional<octree::SamplePhases> ownPhases;
+  if (!givenPhases) ownPhases.emplace(samples, options.iso);
+  const octree::SamplePhases& phases = givenPhases ? *givenPhases : *ownPhases;
   const mesh::TriangleGrid grid(mesh, std::max(kBinVoxels, 2.0 * maxError));
   tbb::enumerable_thread_specific<std::vector<octree::MortonKey>> found;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size(), kLeafGrain),
@@ -165,12 +169,13 @@ void addLeavesMissingFullResolutionVertices(const cell::MetaCellSamples& samples
 std::vector<octree::MortonKey> leavesBeyondErrorBound(const cell::MetaCellSamples& samples,
                                                       const octree::LinearOctree& tree, const mesh::Mesh& mesh,
                                                       const cell::DualVertexOptions& options, float maxError,
-                                                      int finestSize, const octree::UnitEdgeCrossings* crossings) {
+                                                      int finestSize, const octree::UnitEdgeCrossings* crossings,
+                                                      const octree::SamplePhases* phases) {
   std::vector<octree::MortonKey> keys;
   addLeavesOfFarMeshPoints(samples, tree, mesh, options.iso, maxError, finestSize, keys);
   // The costlier side once the mesh's own points hold: the pass would be built again anyway.
   if (keys.empty())
-    addLeavesMissingFullResolutionVertices(samples, tree, mesh, options, maxError, finestSize, crossings, keys);
+    addLeavesMissingFullResolutionVertices(samples, tree, mesh, options, maxError, finestSize, crossings, phases, keys);
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
   return keys;

@@ -42,11 +42,13 @@ namespace isovdb::contour {
 ///        (leaves on the meta-cell's boundary excepted: their seam is stitched
 ///        later): sorted, unique. `options` place the vertices as contouring does.
 /// `crossings` (optional) are the samples' unit-edge crossings, each found once (a unit edge
-/// is shared by four unit cells); without them each cell finds its own.
+/// is shared by four unit cells); without them each cell finds its own. `phases` (optional)
+/// are the samples' phases at `options.iso`, computed here without them.
 std::vector<octree::MortonKey> leavesBeyondErrorBound(const cell::MetaCellSamples& samples,
                                                       const octree::LinearOctree& tree, const mesh::Mesh& mesh,
                                                       const cell::DualVertexOptions& options, float maxError,
                                                       int finestSize = 1,
-                                                      const octree::UnitEdgeCrossings* crossings = nullptr);
+                                                      const octree::UnitEdgeCrossings* crossings = nullptr,
+                                                      const octree::SamplePhases* phases = nullptr);
 
 }  // namespace isovdb::contour

@@ -94,7 +94,8 @@ std::array<mesh::Triangle, 2> regularEdgeQuad(const std::array<std::uint32_t, 4>
 }
 
 MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const LinearOctree& regularTree,
-                                    const cell::ContourSettings& options, RegularContourStats* stats) {
+                                    const cell::ContourSettings& options, RegularContourStats* stats,
+                                    const octree::SamplePhases* phases) {
   if (samples.size != regularTree.metaCellSize())
     throw InputError("contourRegular: samples.size " + std::to_string(samples.size) +
                      " differs from the octree's meta-cell size " + std::to_string(regularTree.metaCellSize()));
@@ -131,8 +132,12 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
   const auto unitLeafCount = static_cast<std::size_t>(
       std::count_if(leaves.begin(), leaves.end(), [](const OctreeLeaf& l) { return l.size == 1; }));
   std::optional<octree::UnitEdgeCrossings> crossings;
-  if (octree::UnitEdgeCrossings::pays(metaSize, unitLeafCount))
-    crossings.emplace(samples, options.iso, options.sharpFeatures);
+  if (octree::UnitEdgeCrossings::pays(metaSize, unitLeafCount)) {
+    if (phases)
+      crossings.emplace(samples, *phases, options.iso, options.sharpFeatures);
+    else
+      crossings.emplace(samples, options.iso, options.sharpFeatures);
+  }
   out.positions = placeGroupVertices(samples, regularTree, groups, cell::dualVertexOptions(options),
                                      crossings ? &*crossings : nullptr, options.capBox);
 

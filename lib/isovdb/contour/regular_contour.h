@@ -42,6 +42,7 @@
 #include "isovdb/contour/voxel_dmc.h"
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/octree/linear_octree.h"
+#include "isovdb/octree/sample_phases.h"
 #include "isovdb/cell/contour_settings.h"
 #include "isovdb/cell/meta_cell_samples.h"
 
@@ -87,9 +88,11 @@ mesh::Mesh contourRegular(const cell::MetaCellSamples& samples, const octree::Li
                           const cell::ContourSettings& settings, RegularContourStats* stats = nullptr);
 
 /// @brief contourRegular plus the seam: the leaves with dual vertices that touch
-///        the meta-cell boundary, in key order (see seam_cell.h).
+///        the meta-cell boundary, in key order (see seam_cell.h). `phases` (optional):
+///        the samples' phases at settings.iso, computed here where needed without them.
 MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const octree::LinearOctree& regularTree,
-                                    const cell::ContourSettings& settings, RegularContourStats* stats = nullptr);
+                                    const cell::ContourSettings& settings, RegularContourStats* stats = nullptr,
+                                    const octree::SamplePhases* phases = nullptr);
 
 /// @brief The two triangles of one bipolar edge's quad (Algorithm 4.1), oriented
 ///        outward, split along the diagonal whose worse triangle is better shaped.

@@ -95,13 +95,14 @@ struct Evaluation {
 class Builder {
  public:
   Builder(const cell::MetaCellSamples& samples, const cell::ContourSettings& settings, const OctreeOptions& options,
-          OctreeDepths depths, const UnitEdgeCrossings* crossings)
+          OctreeDepths depths, const UnitEdgeCrossings* crossings, const SamplePhases* phases)
       : samples_(samples),
         settings_(settings),
         options_(options),
         depths_(depths),
         crossings_(crossings),
-        phases_(samples, settings.iso),
+        ownPhases_(phases ? std::nullopt : std::optional<SamplePhases>(std::in_place, samples, settings.iso)),
+        phases_(phases ? *phases : *ownPhases_),
         leavesAtDepth_(static_cast<std::size_t>(depths.maxDepth) + 1) {
     classify_.detectInteriorComponents = options.detectInteriorComponents;
     if (settings.adaptiveReadsVoxels() && depths.maxDepth == depthForCellSize(samples.size, 1)) markVoxelReadingCells();
@@ -438,8 +439,9 @@ class Builder {
   const cell::ContourSettings& settings_;
   const OctreeOptions& options_;
   OctreeDepths depths_;
-  const UnitEdgeCrossings* crossings_;  // optional: what the dual vertices read
-  SamplePhases phases_;                 // what the criteria read
+  const UnitEdgeCrossings* crossings_;     // optional: what the dual vertices read
+  std::optional<SamplePhases> ownPhases_;  // where the caller gave none
+  const SamplePhases& phases_;             // what the criteria read
   CellClassifyOptions classify_;
   OctreeBuildStats stats_;
   std::vector<Record> records_;
@@ -505,11 +507,11 @@ OctreeBuildStats& OctreeBuildStats::operator+=(const OctreeBuildStats& o) {
 
 LinearOctree buildOctree(const cell::MetaCellSamples& samples, const cell::ContourSettings& settings,
                          const OctreeOptions& options, OctreeBuildStats* stats, Interrupter* interrupter,
-                         const UnitEdgeCrossings* crossings) {
+                         const UnitEdgeCrossings* crossings, const SamplePhases* phases) {
   if (settings.method == cell::ContourMethod::Vdb)
     throw InputError("octree: the vdb method builds no octree (regular or adaptive)");
   const OctreeDepths depths = resolveDepths(options, samples.size);
-  Builder builder(samples, settings, options, depths, crossings);
+  Builder builder(samples, settings, options, depths, crossings, phases);
   builder.buildTopDown(interrupter);
   if (settings.method == cell::ContourMethod::Adaptive) builder.balance(interrupter);
   return builder.finish(stats);

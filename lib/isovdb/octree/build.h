@@ -34,6 +34,7 @@
 namespace isovdb::octree {
 
 class UnitEdgeCrossings;  // unit_edge_crossings.h
+class SamplePhases;       // sample_phases.h
 
 /// The octree's own knobs: depths and refinement criteria. The method (regular:
 /// every surface cell at the maximum depth; adaptive: complex cells refined, 2:1
@@ -116,11 +117,13 @@ struct OctreeBuildStats {
 /// @param[in] crossings optional: the samples' unit-edge crossings at settings.iso (with
 ///            settings.sharpFeatures), which the cells' dual vertices then read; the
 ///            same tree.
+/// @param[in] phases optional: the samples' phases at settings.iso (computed here without them).
 /// @throw InputError for invalid options (see resolveDepths) or the Vdb method;
 ///        Interrupted on cancellation.
 LinearOctree buildOctree(const cell::MetaCellSamples& samples, const cell::ContourSettings& settings,
                          const OctreeOptions& options = {}, OctreeBuildStats* stats = nullptr,
-                         Interrupter* interrupter = nullptr, const UnitEdgeCrossings* crossings = nullptr);
+                         Interrupter* interrupter = nullptr, const UnitEdgeCrossings* crossings = nullptr,
+                         const SamplePhases* phases = nullptr);
 
 /// @brief True if no two leaves that share a face, an edge or a corner differ by more than one depth.
 bool isBalanced(const LinearOctree& octree);

@@ -11,7 +11,10 @@
 namespace isovdb::octree {
 
 LinearOctree surfaceCellTree(const cell::MetaCellSamples& samples, float iso) {
-  const SamplePhases phases(samples, iso);
+  return surfaceCellTree(samples, SamplePhases(samples, iso));
+}
+
+LinearOctree surfaceCellTree(const cell::MetaCellSamples& samples, const SamplePhases& phases) {
   const int size = samples.size;
   const int depth = depthForCellSize(size, 1);
   // Each cell as its Z-order code (at most 27 bits) above its corner signs: codes of
@@ -45,11 +48,11 @@ bool contourReadsOnlySurfaceCells(const cell::ContourSettings& settings, const O
 
 LinearOctree buildContourTree(const cell::MetaCellSamples& samples, const cell::ContourSettings& settings,
                               const OctreeOptions& options, OctreeBuildStats* stats, Interrupter* interrupter,
-                              const UnitEdgeCrossings* crossings) {
+                              const UnitEdgeCrossings* crossings, const SamplePhases* phases) {
   if (!contourReadsOnlySurfaceCells(settings, options, samples.size))
-    return buildOctree(samples, settings, options, stats, interrupter, crossings);
+    return buildOctree(samples, settings, options, stats, interrupter, crossings, phases);
   if (stats) *stats = OctreeBuildStats{};
-  return surfaceCellTree(samples, settings.iso);
+  return phases ? surfaceCellTree(samples, *phases) : surfaceCellTree(samples, settings.iso);
 }
 
 }  // namespace isovdb::octree

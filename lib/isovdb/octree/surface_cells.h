@@ -26,6 +26,8 @@ namespace isovdb::octree {
 ///        leaves are the regular octree's surface leaves at 1-voxel cells, with the
 ///        same keys and corner signs.
 LinearOctree surfaceCellTree(const cell::MetaCellSamples& samples, float iso);
+/// @brief The same from the samples' phases at the isovalue, already computed.
+LinearOctree surfaceCellTree(const cell::MetaCellSamples& samples, const SamplePhases& phases);
 
 /// @brief True if contouring with these settings reads only the surface cells of
 ///        a regular tree with 1-voxel leaves (surfaceCellTree gives the same mesh
@@ -38,6 +40,7 @@ bool contourReadsOnlySurfaceCells(const cell::ContourSettings& settings, const O
 ///        contourReadsOnlySurfaceCells, else buildOctree (arguments as buildOctree's).
 LinearOctree buildContourTree(const cell::MetaCellSamples& samples, const cell::ContourSettings& settings,
                               const OctreeOptions& options = {}, OctreeBuildStats* stats = nullptr,
-                              Interrupter* interrupter = nullptr, const UnitEdgeCrossings* crossings = nullptr);
+                              Interrupter* interrupter = nullptr, const UnitEdgeCrossings* crossings = nullptr,
+                              const SamplePhases* phases = nullptr);
 
 }  // namespace isovdb::octree

@@ -11,8 +11,11 @@
 namespace isovdb::octree {
 
 UnitEdgeCrossings::UnitEdgeCrossings(const cell::MetaCellSamples& samples, float iso, bool sharpFeatures)
+    : UnitEdgeCrossings(samples, SamplePhases(samples, iso), iso, sharpFeatures) {}
+
+UnitEdgeCrossings::UnitEdgeCrossings(const cell::MetaCellSamples& samples, const SamplePhases& phases, float iso,
+                                     bool sharpFeatures)
     : size_(samples.size), wordsPerRow_((samples.size + 64) / 64) {
-  const SamplePhases phases(samples, iso);
   const int s = size_;
   const std::size_t rows = static_cast<std::size_t>(s + 1) * static_cast<std::size_t>(s + 1);
   for (int axis = 0; axis < 3; ++axis) {

@@ -23,6 +23,7 @@
 #include "isovdb/cell/dual_vertex.h"
 #include "isovdb/cell/edge_intersection.h"
 #include "isovdb/cell/meta_cell_samples.h"
+#include "isovdb/octree/sample_phases.h"
 
 namespace isovdb::octree {
 
@@ -31,6 +32,10 @@ class UnitEdgeCrossings {
   /// @brief Finds the crossing of every bipolar unit edge of the cells of
   ///        [0, S]^3 (inside iff value <= iso), as cell::intersectEdge does.
   UnitEdgeCrossings(const cell::MetaCellSamples& samples, float iso, bool sharpFeatures);
+
+  /// @brief The same from the samples' phases at `iso`, already computed (each block's
+  ///        phases are read by the tree, this table and the error bound).
+  UnitEdgeCrossings(const cell::MetaCellSamples& samples, const SamplePhases& phases, float iso, bool sharpFeatures);
 
   /// @brief The crossing on the unit edge from sample `start` (meta-cell
   ///        offsets) along `axis`, or nullptr if the edge is not bipolar.
