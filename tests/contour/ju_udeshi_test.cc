@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <random>
 #include <set>
@@ -58,6 +60,43 @@ TEST(JuUdeshi, FacePointIsTheCrossingWhenInsideTheFace) {
   EXPECT_GT(out.point[1], 0.0);
   EXPECT_LT(out.point[1], 1.0);
   EXPECT_EQ(out.point[0], 0.0);
+}
+
+TEST(JuUdeshi, AMissedFaceFarFromItsSegmentTakesTheRimPointNearestTheSegment) {
+  // Two cell points on either side of the face x = 0 (face [0,1]^2 in y, z), their segment
+  // almost parallel to it: it crosses the plane at (0, 1.42, 0.33), beyond the face's edge
+  // y = 1. Clamped, that crossing became (0, 0.999, 0.325), 0.35 from the segment; the rim
+  // point nearest the segment is (0, 0.999, 0.95), 0.05 from its end a.
+  const MinimalFace face{.axis = 0, .coordinate = 0, .min = {0, 0, 0}, .size = 1};
+  const Vec3d a{-0.05, 1.0, 0.95}, b{0.01, 1.5, 0.2};
+  const FacePoint fp = computeFacePoint(a, b, face);
+  EXPECT_FALSE(fp.crossed);
+  EXPECT_EQ(fp.point[0], 0.0);
+  for (int axis = 1; axis < 3; ++axis) {
+    EXPECT_GT(fp.point[axis], 0.0);
+    EXPECT_LT(fp.point[axis], 1.0);
+  }
+  // Its distance to the segment is the face's distance to it (up to the 1e-3 margin).
+  const auto segmentDistance = [&](const Vec3d& q) {
+    double best = 1e9;
+    for (int i = 0; i <= 2000; ++i) {
+      const double t = i / 2000.0;
+      const double dx = a[0] + t * (b[0] - a[0]) - q[0], dy = a[1] + t * (b[1] - a[1]) - q[1],
+                   dz = a[2] + t * (b[2] - a[2]) - q[2];
+      best = std::min(best, std::sqrt(dx * dx + dy * dy + dz * dz));
+    }
+    return best;
+  };
+  double faceDistance = 1e9;
+  for (int i = 0; i <= 100; ++i)
+    for (int j = 0; j <= 100; ++j) faceDistance = std::min(faceDistance, segmentDistance({0.0, i / 100.0, j / 100.0}));
+  EXPECT_LT(segmentDistance(fp.point), faceDistance + 2e-3);
+  EXPECT_LT(segmentDistance(fp.point), 0.06) << "the clamped crossing lay 0.35 away";
+  // A segment that misses the face close by keeps the clamp of its crossing.
+  const FacePoint near = computeFacePoint({-0.5, 1.05, 0.4}, {0.5, 1.15, 0.6}, face);
+  EXPECT_FALSE(near.crossed);
+  EXPECT_NEAR(near.point[1], 1.0 - 1e-3, 1e-12);
+  EXPECT_NEAR(near.point[2], 0.5, 1e-12);
 }
 
 TEST(JuUdeshi, FlatQuadAcrossTheEdgeKeepsTheTrivialTriangulation) {
