@@ -6,7 +6,7 @@
 set -euo pipefail
 packages=(
   build-essential cmake ccache pkg-config
-  libopenvdb-dev libtbb-dev libeigen3-dev libglm-dev zlib1g-dev libblosc-dev libboost-iostreams-dev
+  libopenvdb-dev libtbb-dev libeigen3-dev libglm-dev zlib1g-dev libbz2-dev libblosc-dev libboost-iostreams-dev
   libcgal-dev libgmp-dev libmpfr-dev
   libcli11-dev nlohmann-json3-dev libsegyio-dev libstb-dev
   libgtest-dev libgmock-dev libbenchmark-dev

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <filesystem>
 #include <limits>
 #include <string>
 #include <vector>
@@ -123,6 +125,68 @@ TEST(NrrdReader, ReadsDetachedGzipWithByteSkip) {
   auto stream = openNrrd(dir / "d.nhdr");
   const std::vector<float> read = readAll(*stream);
   for (std::size_t i = 0; i < values.size(); ++i) EXPECT_EQ(read[i], static_cast<float>(values[i]));
+}
+
+TEST(NrrdReader, ReadsBzip2AttachedDetachedAndConcatenated) {
+  TempDir dir;
+  // 40 x 40 x 40 int16: 128 kB, more than one 100 kB bzip2 block.
+  const std::vector<double> values = testValues(SampleType::Int16, 40 * 40 * 40);
+  const std::string raw = encode(SampleType::Int16, false, values);
+  writeFile(dir / "b.nrrd", nrrdHeader("int16", "40 40 40", "bzip2", "endian: little\n") + "\n" + bzip2Bytes(raw));
+  auto attached = openNrrd(dir / "b.nrrd");
+  const std::vector<float> read = readAll(*attached);
+  for (std::size_t i = 0; i < values.size(); ++i) ASSERT_EQ(read[i], static_cast<float>(values[i])) << i;
+  // Detached, with a byte skip counted in decompressed bytes, the data split over two
+  // concatenated bzip2 streams (as pbzip2 writes them).
+  const std::string skipped = std::string(5, 'S') + raw;
+  writeFile(dir / "d.raw.bz2", bzip2Bytes(skipped.substr(0, 1000)) + bzip2Bytes(skipped.substr(1000)));
+  writeFile(dir / "d.nhdr",
+            nrrdHeader("int16", "40 40 40", "bz2", "endian: little\nbyte skip: 5\ndata file: d.raw.bz2\n"));
+  auto detached = openNrrd(dir / "d.nhdr");
+  const std::vector<float> readDetached = readAll(*detached);
+  for (std::size_t i = 0; i < values.size(); ++i) ASSERT_EQ(readDetached[i], static_cast<float>(values[i])) << i;
+}
+
+TEST(NrrdReader, PynrrdsBzip2AndGzipBallsHoldTheSameSamples) {
+  // Written by another implementation (data/nrrd/PROVENANCE.md): a binary ball, int16 0 outside
+  // and 257 inside (both bytes set).
+  const std::filesystem::path nrrd = std::filesystem::path(ISOVDB_DATA_DIR) / "nrrd";
+  auto bz2 = openNrrd(nrrd / "BallBinary30x30x30_bz2.nrrd");
+  auto gz = openNrrd(nrrd / "BallBinary30x30x30_gz.nrrd");
+  const std::vector<float> fromBz2 = readAll(*bz2), fromGz = readAll(*gz);
+  ASSERT_EQ(fromBz2.size(), 27000u);
+  EXPECT_EQ(fromBz2, fromGz);
+  EXPECT_EQ(std::count(fromBz2.begin(), fromBz2.end(), 257.0f), 14328);
+  EXPECT_EQ(std::count(fromBz2.begin(), fromBz2.end(), 0.0f), 27000 - 14328);
+}
+
+TEST(NrrdReader, DamagedBzip2IsRejectedNamingTheFile) {
+  TempDir dir;
+  const std::vector<double> values = testValues(SampleType::Int16, 32 * 32 * 8);
+  const std::string bz = bzip2Bytes(encode(SampleType::Int16, false, values));
+  std::vector<float> slice(32 * 32);
+  const auto readEverySlice = [&](const std::string& name) {
+    auto stream = openNrrd(dir / name);
+    for (int z = 0; z < 8; ++z) stream->readSlice(slice.data());
+  };
+  writeFile(dir / "t.nrrd",
+            nrrdHeader("int16", "32 32 8", "bzip2", "endian: little\n") + "\n" + bz.substr(0, bz.size() / 2));
+  expectError<InputError>([&] { readEverySlice("t.nrrd"); }, {"t.nrrd", "truncated"});
+  std::string flipped = bz;
+  flipped[flipped.size() / 2] = static_cast<char>(flipped[flipped.size() / 2] ^ 0x5a);
+  writeFile(dir / "c.nrrd", nrrdHeader("int16", "32 32 8", "bzip2", "endian: little\n") + "\n" + flipped);
+  expectError<InputError>([&] { readEverySlice("c.nrrd"); }, {"c.nrrd", "corrupt compressed data"});
+  writeFile(dir / "n.nrrd", nrrdHeader("int16", "32 32 8", "bzip2", "endian: little\n") + "\nnot bzip2 at all");
+  expectError<InputError>([&] { readEverySlice("n.nrrd"); }, {"n.nrrd", "not bzip2 data"});
+  writeFile(dir / "l.nrrd", nrrdHeader("uint8", "2 2 2", "bzip2") + "\n" + bzip2Bytes(std::string(9, '\1')));
+  expectError<InputError>(
+      [&] {
+        auto stream = openNrrd(dir / "l.nrrd");
+        std::vector<float> small(4);
+        stream->readSlice(small.data());
+        stream->readSlice(small.data());
+      },
+      {"l.nrrd", "longer than the 8 bytes"});
 }
 
 TEST(NrrdReader, MissingFileIsIoError) {

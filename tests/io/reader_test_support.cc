@@ -2,6 +2,7 @@
 // Copyright Contributors to the isovdb project.
 #include "io/reader_test_support.h"
 
+#include <bzlib.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -108,6 +109,16 @@ std::string gzipBytes(const TempDir& dir, const std::string& data) {
   std::string bytes = readFile(path);
   std::filesystem::remove(path);
   return bytes;
+}
+
+std::string bzip2Bytes(const std::string& data) {
+  std::string out(data.size() + data.size() / 100 + 600, '\0');
+  auto length = static_cast<unsigned>(out.size());
+  std::string input = data;  // libbz2 takes a non-const source
+  EXPECT_EQ(BZ2_bzBuffToBuffCompress(out.data(), &length, input.data(), static_cast<unsigned>(input.size()), 1, 0, 0),
+            BZ_OK);
+  out.resize(length);
+  return out;
 }
 
 }  // namespace isovdb::test

@@ -37,6 +37,9 @@ std::vector<float> readAll(io::SliceStream& stream);
 /// The gzip file bytes of `data` (written through a scratch file in `dir`).
 std::string gzipBytes(const TempDir& dir, const std::string& data);
 
+/// The bzip2 stream of `data` (libbz2, block size 100 kB: data longer than that spans blocks).
+std::string bzip2Bytes(const std::string& data);
+
 /// Runs `f`, expects it to throw `E` whose message contains each of `parts`.
 template <typename E, typename F>
 void expectError(F&& f, const std::vector<std::string>& parts) {

@@ -184,6 +184,28 @@ std::int64_t FileRegionStream::skipSome(std::int64_t count) {
   return fromBuffer + fromFile;
 }
 
+// --- CompressedInput --------------------------------------------------------------
+
+CompressedInput::CompressedInput(std::unique_ptr<ByteStream> source, std::size_t bufferSize)
+    : source_(std::move(source)), buffer_(std::clamp<std::size_t>(bufferSize, 16, kMaxChunk)) {}
+
+std::pair<std::byte*, std::size_t> CompressedInput::refill(const std::byte* next, std::size_t unread) {
+  if (unread > 0 && next != buffer_.data()) std::memmove(buffer_.data(), next, unread);
+  const std::size_t got = sourceEnded_ ? 0 : source_->read(buffer_.data() + unread, buffer_.size() - unread);
+  if (got == 0) sourceEnded_ = true;
+  return {buffer_.data(), unread + got};
+}
+
+// --- DecompressingStream ----------------------------------------------------------
+
+void DecompressingStream::finish(std::int64_t expectedTotal) {
+  std::array<std::byte, 4096> scratch;
+  const std::size_t extra = readSome(scratch.data(), scratch.size());
+  if (extra > 0)
+    throw InputError(label() + ": decompressed data is longer than the " + std::to_string(expectedTotal) +
+                     " bytes the header declares");
+}
+
 // --- InflateStream ----------------------------------------------------------------
 
 struct InflateStream::State {
@@ -192,10 +214,9 @@ struct InflateStream::State {
 };
 
 InflateStream::InflateStream(std::unique_ptr<ByteStream> compressed, std::size_t bufferSize)
-    : ByteStream(compressed->label()),
-      source_(std::move(compressed)),
+    : DecompressingStream(compressed->label()),
       state_(std::make_unique<State>()),
-      input_(std::clamp<std::size_t>(bufferSize, 16, kMaxChunk)) {
+      input_(std::move(compressed), bufferSize) {
   // windowBits 15 + 32: accept both zlib and gzip headers.
   const int rc = inflateInit2(&state_->z, 15 + 32);
   if (rc == Z_MEM_ERROR) throw std::bad_alloc();
@@ -206,20 +227,16 @@ InflateStream::~InflateStream() { inflateEnd(&state_->z); }
 
 bool InflateStream::refill() {
   z_stream& z = state_->z;
-  // Keep unread input at the front of the buffer.
-  if (z.avail_in > 0 && z.next_in != reinterpret_cast<Bytef*>(input_.data()))
-    std::memmove(input_.data(), z.next_in, z.avail_in);
-  const std::size_t kept = z.avail_in;
-  const std::size_t got = sourceEnded_ ? 0 : source_->read(input_.data() + kept, input_.size() - kept);
-  if (got == 0) sourceEnded_ = true;
-  z.next_in = reinterpret_cast<Bytef*>(input_.data());
-  z.avail_in = static_cast<uInt>(kept + got);
-  return got > 0;
+  const std::size_t before = z.avail_in;
+  const auto [data, available] = input_.refill(reinterpret_cast<const std::byte*>(z.next_in), z.avail_in);
+  z.next_in = reinterpret_cast<Bytef*>(data);
+  z.avail_in = static_cast<uInt>(available);
+  return available > before;
 }
 
 bool InflateStream::startNextMember() {
   z_stream& z = state_->z;
-  if (z.avail_in < 2 && !sourceEnded_) refill();
+  if (z.avail_in < 2 && !input_.sourceEnded()) refill();
   if (z.avail_in < 2 || z.next_in[0] != 0x1f || z.next_in[1] != 0x8b) return false;
   if (inflateReset(&z) != Z_OK) return false;
   return true;
@@ -249,20 +266,11 @@ std::size_t InflateStream::readSome(std::byte* out, std::size_t size) {
       throw InputError(label() + ": corrupt compressed data (" + (z.msg ? z.msg : "zlib error " + std::to_string(rc)) +
                        ") after " + std::to_string(state_->totalOut) + " decompressed bytes");
     const bool noProgress = z.avail_out == outBefore && z.avail_in == inBefore;
-    if ((rc == Z_BUF_ERROR || noProgress) && z.avail_in == 0 && sourceEnded_)
+    if ((rc == Z_BUF_ERROR || noProgress) && z.avail_in == 0 && input_.sourceEnded())
       throw InputError(label() + ": compressed data is truncated (the stream ends after " +
                        std::to_string(state_->totalOut) + " decompressed bytes)");
   }
   return chunk - z.avail_out;
-}
-
-void InflateStream::finish(std::int64_t expectedTotal) {
-  std::array<std::byte, 4096> scratch;
-  // Drives zlib to the end of the stream, so a missing checksum counts as truncation.
-  const std::size_t extra = readSome(scratch.data(), scratch.size());
-  if (extra > 0)
-    throw InputError(label() + ": decompressed data is longer than the " + std::to_string(expectedTotal) +
-                     " bytes the header declares");
 }
 
 }  // namespace isovdb::io

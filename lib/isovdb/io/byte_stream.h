@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace isovdb::io {
@@ -122,32 +123,60 @@ class FileRegionStream final : public ByteStream {
   std::size_t bufferSize_ = kByteStreamBufferSize;
 };
 
+/// The compressed bytes a decompressor reads (InflateStream, Bunzip2Stream): a buffer
+/// refilled from the source stream, unread input kept at its front.
+class CompressedInput {
+ public:
+  CompressedInput(std::unique_ptr<ByteStream> source, std::size_t bufferSize);
+
+  /// Moves the `unread` bytes at `next` (inside the buffer, or none) to the front and reads
+  /// more after them. @return the buffer's start and the bytes now available.
+  std::pair<std::byte*, std::size_t> refill(const std::byte* next, std::size_t unread);
+  /// True once the source has no more bytes.
+  bool sourceEnded() const { return sourceEnded_; }
+
+ private:
+  std::unique_ptr<ByteStream> source_;
+  std::vector<std::byte> buffer_;
+  bool sourceEnded_ = false;
+};
+
+/// A stream that decompresses another (InflateStream, Bunzip2Stream).
+class DecompressingStream : public ByteStream {
+ public:
+  using ByteStream::ByteStream;
+
+  /// Drives the decompressor to the end of its data (a missing checksum or end mark
+  /// counts as truncation) and checks that nothing follows the declared bytes.
+  /// @throw InputError "<label>: decompressed data is longer than the N bytes the header
+  ///        declares", or readSome()'s errors.
+  void finish(std::int64_t expectedTotal) final;
+
+ protected:
+  const char* dataNoun() const override { return "decompressed data"; }
+};
+
 /// Inflates zlib or gzip data (zlib's inflate, windowBits 15 + 32 detects either
 /// header) read from another stream. Concatenated gzip members are read as one stream.
-class InflateStream final : public ByteStream {
+class InflateStream final : public DecompressingStream {
  public:
   /// @param[in] compressed the compressed bytes; its label names the data in messages.
   /// @throw std::bad_alloc when zlib cannot allocate its state.
   explicit InflateStream(std::unique_ptr<ByteStream> compressed, std::size_t bufferSize = kByteStreamBufferSize);
   ~InflateStream() override;
 
-  void finish(std::int64_t expectedTotal) override;
-
  protected:
   /// @throw InputError "<label>: corrupt compressed data (...)" or
   ///        "<label>: compressed data is truncated (...)".
   std::size_t readSome(std::byte* out, std::size_t size) override;
-  const char* dataNoun() const override { return "decompressed data"; }
 
  private:
   struct State;
   bool refill();
   bool startNextMember();
 
-  std::unique_ptr<ByteStream> source_;
   std::unique_ptr<State> state_;
-  std::vector<std::byte> input_;
-  bool sourceEnded_ = false;
+  CompressedInput input_;
   bool ended_ = false;
 };
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "isovdb/errors.h"
+#include "isovdb/io/bunzip2_stream.h"
 #include "isovdb/io/byte_stream.h"
 #include "isovdb/io/dense_slice_stream.h"
 #include "isovdb/io/header_text.h"
@@ -153,8 +154,10 @@ std::unique_ptr<SliceStream> openNrrd(const std::filesystem::path& path) {
   // encoding, endian.
   const std::string encoding = lower(fields.require("encoding"));
   const bool gzip = encoding == "gzip" || encoding == "gz";
-  if (!gzip && encoding != "raw")
-    fields.fail("encoding", "unsupported encoding '" + encoding + "' (supported: raw, gzip)");
+  const bool bzip2 = encoding == "bzip2" || encoding == "bz2";
+  const bool compressed = gzip || bzip2;
+  if (!compressed && encoding != "raw")
+    fields.fail("encoding", "unsupported encoding '" + encoding + "' (supported: raw, gzip, bzip2)");
   if (sampleSize(header.sampleType) > 1) {
     const std::string endian = lower(
         fields.require("endian", " (required for " + std::string(sampleTypeName(header.sampleType)) + " samples)"));
@@ -212,7 +215,7 @@ std::unique_ptr<SliceStream> openNrrd(const std::filesystem::path& path) {
   }
   if (const std::string* text = fields.find("byte skip")) {
     byteSkip = fields.integer("byte skip", *text);
-    if (byteSkip < -1 || (byteSkip == -1 && gzip))
+    if (byteSkip < -1 || (byteSkip == -1 && compressed))
       fields.fail("byte skip", "must be >= 0 (or -1 with raw encoding), got " + *text);
   }
 
@@ -240,8 +243,12 @@ std::unique_ptr<SliceStream> openNrrd(const std::filesystem::path& path) {
   const std::string need = joinDims(header.dims) + " " + std::string(sampleTypeName(header.sampleType)) +
                            " samples need " + std::to_string(dataBytes) + " bytes";
   std::unique_ptr<ByteStream> bytes;
-  if (gzip) {
-    bytes = std::make_unique<InflateStream>(std::move(data));
+  if (compressed) {
+    // The byte skip counts decompressed bytes (Teem, pynrrd).
+    if (gzip)
+      bytes = std::make_unique<InflateStream>(std::move(data));
+    else
+      bytes = std::make_unique<Bunzip2Stream>(std::move(data));
     bytes->skip(byteSkip);
   } else {
     const std::int64_t available = data->remaining();
