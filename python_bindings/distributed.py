@@ -251,7 +251,7 @@ def main(argv=None):
     parser = argparse.ArgumentParser(
         prog="python3 -m isovdb.distributed",
         description="Mesh a volume with Dask workers: the same .ply bytes as `isovdb extract`.")
-    parser.add_argument("input", help="volume file (.raw with --dims/--type, .nrrd, .nhdr, .mhd, .mha, .sgy) or a "
+    parser.add_argument("input", help="volume file (.raw with --dims/--type, .nrrd, .nhdr, .mhd, .mha, .nii, .nii.gz, .sgy) or a "
                                       "Zarr array's directory")
     parser.add_argument("-o", "--output", required=True, help="output mesh (.ply)")
     parser.add_argument("--scheduler", help="Dask scheduler address (tcp://HOST:8786); default: a local cluster")

@@ -21,7 +21,8 @@ void addConvertCommand(CLI::App& app, Context& context) {
   auto state = std::make_shared<State>();
   CLI::App* command = app.add_subcommand(
       "convert", "Volume -> sparse .vdb grid (SEG-Y keeps its survey metadata), or -> dense float32 .raw/.nrrd");
-  command->add_option("IN", state->input, "Volume file (.sgy, .segy, .vdb, .raw, .nrrd, .nhdr, .mhd, .mha)")
+  command
+      ->add_option("IN", state->input, "Volume file (.sgy, .segy, .vdb, .raw, .nrrd, .nhdr, .mhd, .mha, .nii, .nii.gz)")
       ->required();
   command
       ->add_option("-o,--output", state->output,

@@ -27,7 +27,8 @@ void addExtractCommand(CLI::App& app, Context& context) {
   };
   auto state = std::make_shared<State>();
   CLI::App* command = app.add_subcommand("extract", "Volume -> triangle mesh (.ply, .obj, .stl or .glb)");
-  command->add_option("IN", state->input, "Volume file (.raw, .nrrd, .nhdr, .mhd, .mha, .sgy, .segy, .vdb)")
+  command
+      ->add_option("IN", state->input, "Volume file (.raw, .nrrd, .nhdr, .mhd, .mha, .nii, .nii.gz, .sgy, .segy, .vdb)")
       ->required();
   command->add_option("-o,--output", state->output, "Output mesh (.ply binary, .obj, .stl or .glb)")->required();
   addSettingFlags(*command, pipeline::extractSettings(state->choices));

@@ -19,7 +19,8 @@ void addInfoCommand(CLI::App& app, Context& context) {
       "info",
       "Describe a volume: header (SEG-Y geometry), value range and percentiles, fraction active for --clip, "
       "active voxels, leaves, tiles, memory");
-  command->add_option("IN", state->input, "Volume file (.raw, .nrrd, .nhdr, .mhd, .mha, .sgy, .segy, .vdb)")
+  command
+      ->add_option("IN", state->input, "Volume file (.raw, .nrrd, .nhdr, .mhd, .mha, .nii, .nii.gz, .sgy, .segy, .vdb)")
       ->required();
   command->add_option("--stats", state->statsPath, "Also write the figures as JSON");
   state->flags.add(*command);

@@ -462,7 +462,8 @@ holding NaN/inf.)doc";
         py::arg("segy") = false, py::arg("sample_statistics") = false, py::arg("progress") = py::none(),
         py::arg("window") = py::none(), R"doc(
 Reads a volume file as a sparse Volume: raw (with dims and dtype), NRRD (.nrrd/.nhdr),
-MetaImage (.mhd/.mha), SEG-Y (.sgy/.segy, or segy=True) or .vdb. Keywords map one to one
+MetaImage (.mhd/.mha), NIfTI-1 (.nii/.nii.gz), SEG-Y (.sgy/.segy, or segy=True) or .vdb.
+Keywords map one to one
 onto the CLI's input flags:
 
 dims=(x, y, z), dtype (numpy dtype or name: "uint8", ">u2", ...), big_endian, spacing

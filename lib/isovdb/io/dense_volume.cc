@@ -6,7 +6,9 @@
 #include <system_error>
 
 #include "isovdb/errors.h"
+#include "isovdb/io/header_text.h"
 #include "isovdb/io/metaimage_reader.h"
+#include "isovdb/io/nifti_reader.h"
 #include "isovdb/io/nrrd_reader.h"
 #include "isovdb/io/path_util.h"
 
@@ -14,12 +16,14 @@ namespace isovdb::io {
 
 namespace {
 
-enum class DenseFormat { Nrrd, MetaImage, Raw };
+enum class DenseFormat { Nrrd, MetaImage, Nifti, Raw };
 
 DenseFormat formatOf(const std::filesystem::path& path) {
   const std::string ext = lowerExtension(path);
   if (ext == ".nrrd" || ext == ".nhdr") return DenseFormat::Nrrd;
   if (ext == ".mhd" || ext == ".mha") return DenseFormat::MetaImage;
+  const std::string name = detail::lower(path.filename().string());
+  if (name.ends_with(".nii") || name.ends_with(".nii.gz")) return DenseFormat::Nifti;
   return DenseFormat::Raw;
 }
 
@@ -37,6 +41,8 @@ std::unique_ptr<SliceStream> openDenseVolume(const std::filesystem::path& path, 
       return openNrrd(path);
     case DenseFormat::MetaImage:
       return openMetaImage(path);
+    case DenseFormat::Nifti:
+      return openNifti(path);
     case DenseFormat::Raw:
       break;
   }

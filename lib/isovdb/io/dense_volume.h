@@ -14,12 +14,13 @@
 namespace isovdb::io {
 
 /// True when the extension names a dense volume format this library reads:
-/// .nrrd, .nhdr, .mhd, .mha or .raw (case-insensitive). Other files may still be
+/// .nrrd, .nhdr, .mhd, .mha, .nii, .nii.gz or .raw (case-insensitive). Other files may still be
 /// read as raw through openDenseVolume() with RawOptions.
 bool isDenseVolumePath(const std::filesystem::path& path);
 
 /// Opens a dense volume, choosing the reader by extension (case-insensitive):
-/// .nrrd/.nhdr → openNrrd(), .mhd/.mha → openMetaImage(), anything else → openRaw(),
+/// .nrrd/.nhdr → openNrrd(), .mhd/.mha → openMetaImage(), .nii/.nii.gz → openNifti(),
+/// anything else → openRaw(),
 /// which needs `raw`. `raw` is ignored for NRRD and MetaImage files.
 /// Memory: one slice plus 1-2 MiB of buffers, whatever the format.
 /// @throw IoError "'path': no such file" when `path` does not exist (or the OS reason
