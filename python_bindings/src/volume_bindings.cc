@@ -416,8 +416,11 @@ as level sets in world units, readable by pyopenvdb and VFX tools; grid_name: de
 "mask", "field" or "sdf"), or .raw/.nrrd (dense float32 of the sampled box, with an NRRD
 header). Written through a temporary file. Raises OSError when the path is not writable.)doc")
       .def("__repr__", [](const PyVolume& v) {
-        return "<isovdb.Volume " + std::string(volume::volumeKindName(v.volume.kind())) + " '" + v.volume.name() +
-               "' shape " + py::str(py::cast(v).attr("shape")).cast<std::string>() + ">";
+        // A file's name is its quoted label ("'vol.nrrd'", as messages quote it): quoted once here.
+        std::string name = v.volume.name();
+        if (name.size() >= 2 && name.front() == '\'' && name.back() == '\'') name = name.substr(1, name.size() - 2);
+        return "<isovdb.Volume " + std::string(volume::volumeKindName(v.volume.kind())) + " '" + name + "' shape " +
+               py::str(py::cast(v).attr("shape")).cast<std::string>() + ">";
       });
 
   m.def("_from_numpy", &fromNumpyPlaced, py::arg("array"), py::arg("threshold"), py::arg("voxel_size"),

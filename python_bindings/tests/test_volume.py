@@ -437,3 +437,17 @@ def test_damaged_vdb_files_are_refused_inside_the_module_too(finding, message):
         pytest.skip(f"{path} is not in this tree")
     with pytest.raises(ValueError, match=re.escape(message)):
         isovdb.read_volume(path)
+
+
+def test_read_volume_reads_nifti_in_world_space_and_names_it_once(data_dir):
+    # pynrrd's ball written by ITK as NIfTI (x and y flipped into RAS) and as NRRD (LPS).
+    path = str(data_dir / "nifti" / "BallBinary30x30x30.nii.gz")
+    nifti = isovdb.read_volume(path)
+    nrrd = isovdb.read_volume(str(data_dir / "nrrd" / "BallBinary30x30x30_gz.nrrd"))
+    assert repr(nifti) == "<isovdb.Volume mask '" + path + "' shape (30, 30, 30)>"
+    assert nifti.to_numpy().sum() == nrrd.to_numpy().sum() == 14328
+    mesh = isovdb.extract(nifti)
+    report = mesh.check()
+    assert report["closed"] and report["manifold"] and report["self_intersecting_pairs"] == 0
+    lo, hi = mesh.bounds
+    assert lo[0] < -28.9 and hi[0] < 0.01  # x runs over world [-29, 0]
