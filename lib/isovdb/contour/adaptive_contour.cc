@@ -119,28 +119,21 @@ MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const
   };
   std::vector<VoxelEdge> voxelEdges;
   if (voxels)
-    for (std::size_t i = 0; i < leafCount; ++i) {
-      const octree::OctreeLeaf& leaf = tree.leaf(i);
-      if (leaf.size != 1) continue;
-      const std::uint16_t bipolar = octree::bipolarEdgeMask(leaf.cornerSigns);
-      for (int axis = 0; axis < 3; ++axis) {
-        if (((bipolar >> (4 * axis)) & 1) == 0) continue;
-        const auto around =
-            unitLeaves ? unitLeaves->leavesAroundEdge(leaf.origin, axis) : tree.leavesAroundEdge(leaf.origin, axis);
-        if (std::none_of(around.begin(), around.end(), [&](std::int64_t l) {
-              return l != octree::LinearOctree::kNone && voxelCells[static_cast<std::size_t>(l)] != 0;
-            }))
-          continue;
-        if (std::find(around.begin(), around.end(), octree::LinearOctree::kNone) != around.end()) {
-          ++local.boundaryEdges;  // left to stitching
-          continue;
-        }
-        if (std::any_of(around.begin(), around.end(),
-                        [&](std::int64_t l) { return tree.leaf(static_cast<std::size_t>(l)).size != 1; }))
-          throw std::logic_error("contourAdaptive: a cell read as voxels has a coarser neighbour");
-        voxelEdges.push_back({around, i, axis});
-      }
-    }
+    forEachVoxelReadingEdge(
+        tree, voxelCells, [](const std::array<int, 3>&, int) { return true; },
+        [&](const std::array<int, 3>& origin, int axis) {
+          return unitLeaves ? unitLeaves->leavesAroundEdge(origin, axis) : tree.leavesAroundEdge(origin, axis);
+        },
+        [&](std::size_t owner, int axis, const std::array<std::int64_t, 4>& around) {
+          if (std::find(around.begin(), around.end(), octree::LinearOctree::kNone) != around.end()) {
+            ++local.boundaryEdges;  // left to stitching
+            return;
+          }
+          if (std::any_of(around.begin(), around.end(),
+                          [&](std::int64_t l) { return tree.leaf(static_cast<std::size_t>(l)).size != 1; }))
+            throw std::logic_error("contourAdaptive: a cell read as voxels has a coarser neighbour");
+          voxelEdges.push_back({around, owner, axis});
+        });
 
   // Vertices: the used cell vertices in leaf and group order, then face and edge points in edge order.
   std::vector<std::uint32_t> meshVertex(cellPoints.size(), kNoVertex);

@@ -13,6 +13,7 @@
 /// share (a meta-cell and a seam) becomes one mesh vertex.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -128,6 +129,30 @@ struct VoxelReadingEdge {
 /// @return the number of triangles appended.
 std::size_t emitVoxelReadingEdge(const VoxelReadingEdge& edge, const VertexAdder& addVertex,
                                  FaceVertexMap& faceVertices, std::vector<mesh::Triangle>& triangles);
+
+/// @brief Calls `visit(owner, axis, around)` for each bipolar edge that a 1-voxel leaf of
+///        `tree` owns (its local edge 4 * axis: the owner in quadrant 3, as regular mode
+///        finds its edges), that `wanted(origin, axis)` accepts and that touches a leaf read as
+///        voxels (`voxelCells`): the edges emitVoxelReadingEdge makes, in leaf order.
+///        `leavesAround(origin, axis)` gives the four leaves around the edge by quadrant
+///        (LinearOctree::kNone where `tree` has none), as LinearOctree::leavesAroundEdge does.
+template <typename Wanted, typename LeavesAround, typename Visit>
+void forEachVoxelReadingEdge(const octree::LinearOctree& tree, const std::vector<char>& voxelCells, Wanted&& wanted,
+                             LeavesAround&& leavesAround, Visit&& visit) {
+  for (std::size_t i = 0; i < tree.leafCount(); ++i) {
+    const octree::OctreeLeaf& leaf = tree.leaf(i);
+    if (leaf.size != 1) continue;
+    const std::uint16_t bipolar = octree::bipolarEdgeMask(leaf.cornerSigns);
+    for (int axis = 0; axis < 3; ++axis) {
+      if (((bipolar >> (4 * axis)) & 1) == 0 || !wanted(leaf.origin, axis)) continue;
+      const std::array<std::int64_t, 4> around = leavesAround(leaf.origin, axis);
+      if (std::any_of(around.begin(), around.end(), [&](std::int64_t l) {
+            return l != octree::LinearOctree::kNone && voxelCells[static_cast<std::size_t>(l)] != 0;
+          }))
+        visit(i, axis, around);
+    }
+  }
+}
 
 /// @brief A VertexAdder that appends to `mesh.positions` (ids = positions' indices + `base`).
 VertexAdder appendingTo(mesh::Mesh& mesh, std::uint32_t base = 0);

@@ -270,13 +270,8 @@ FacePoint computeFacePoint(const Vec3d& a, const Vec3d& b, const MinimalFace& fa
     if (x[axis] < lo || x[axis] > hi) result.crossed = false;
     x[axis] = std::clamp(x[axis], lo, hi);
   }
-  const auto segmentDistance2 = [&](const Vec3d& q) {
-    const Point d = pb - pa, w = toPoint(q) - pa;
-    const double len2 = d.squaredNorm();
-    const double t = len2 > 0 ? std::clamp(w.dot(d) / len2, 0.0, 1.0) : 0.0;
-    return (w - d * t).squaredNorm();
-  };
-  if (!result.crossed && segmentDistance2(x) > kMissedFaceReach * kMissedFaceReach * face.size * face.size) {
+  const double reach = kMissedFaceReach * face.size;
+  if (!result.crossed && closestOnSecondSegment(pa, pb, toPoint(x), toPoint(x)).second > reach * reach) {
     // The segment misses the face, and the clamp of its crossing with the face's plane lies
     // far from it (a segment almost parallel to the face crosses the plane far away and
     // was clamped into a corner, up to a voxel off the surface both cell points lie on: a

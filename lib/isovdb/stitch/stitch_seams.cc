@@ -152,45 +152,39 @@ void stitchAdaptive(const Seam& seam, const EdgeOctree& edgeTree, int s, bool in
   stats.missingCells += edges.boundary + edges.withoutVertex;
   if (!voxels) return;
   // The seam's edges of cells read as voxels, by the leaf in quadrant 3 (as stitchRegular).
-  for (std::size_t i = 0; i < n; ++i) {
-    const octree::OctreeLeaf& leaf = tree.leaf(i);
-    const std::uint16_t bipolar = octree::bipolarEdgeMask(leaf.cornerSigns);
-    for (int axis = 0; axis < 3 && leaf.size == 1; ++axis) {
-      if (((bipolar >> (4 * axis)) & 1) == 0 || !seam.ownsEdge(leaf.origin, axis, s)) continue;
-      const auto around = tree.leavesAroundEdge(leaf.origin, axis);
-      if (std::none_of(around.begin(), around.end(), [&](std::int64_t l) {
-            return l != LinearOctree::kNone && voxelCells[static_cast<std::size_t>(l)] != 0;
-          }))
-        continue;
-      if (std::any_of(around.begin(), around.end(), [&](std::int64_t l) {
-            return l == LinearOctree::kNone || tree.leaf(static_cast<std::size_t>(l)).size != 1;
-          })) {
-        ++stats.missingCells;
-        continue;
-      }
-      const SeamCell& owner = *edgeTree.cells[i];
-      contour::VoxelReadingEdge edge;
-      edge.axis = axis;
-      edge.start = owner.origin;
-      edge.crossing = static_cast<double>(owner.edgeCrossing[static_cast<std::size_t>(4 * axis)]);
-      for (int q = 0; q < 4; ++q) {
-        const auto uq = static_cast<std::size_t>(q);
-        const auto l = static_cast<std::size_t>(around[uq]);
-        SeamCell& cell = *edgeTree.cells[l];
-        edge.cells[uq] = voxelEdgeCell(cell);
-        edge.voxelCell[uq] = voxelCells[l] != 0;
-        const int g = std::max(
-            0, static_cast<int>(
-                   contour::voxelDmcEntry(cell.cornerSigns).vertexOfEdge[static_cast<std::size_t>(4 * axis + 3 - q)]));
-        edge.groups[uq] = g;
-        edge.points[uq] = cellPoints[firstVertex[l] + static_cast<std::size_t>(g)];
-        // A voxel cell's vertices were made with its meta-cell; the others' when first used.
-        if (!edge.voxelCell[uq]) edge.cells[uq].vertices[static_cast<std::size_t>(g)] = cellVertex(around[uq], g);
-      }
-      contour::emitVoxelReadingEdge(edge, addVertex, faceVertices, out.triangles);
-      ++stats.edges;
-    }
-  }
+  contour::forEachVoxelReadingEdge(
+      tree, voxelCells, [&](const std::array<int, 3>& origin, int axis) { return seam.ownsEdge(origin, axis, s); },
+      [&](const std::array<int, 3>& origin, int axis) { return tree.leavesAroundEdge(origin, axis); },
+      [&](std::size_t i, int axis, const std::array<std::int64_t, 4>& around) {
+        if (std::any_of(around.begin(), around.end(), [&](std::int64_t l) {
+              return l == LinearOctree::kNone || tree.leaf(static_cast<std::size_t>(l)).size != 1;
+            })) {
+          ++stats.missingCells;
+          return;
+        }
+        const SeamCell& owner = *edgeTree.cells[i];
+        contour::VoxelReadingEdge edge;
+        edge.axis = axis;
+        edge.start = owner.origin;
+        edge.crossing = static_cast<double>(owner.edgeCrossing[static_cast<std::size_t>(4 * axis)]);
+        for (int q = 0; q < 4; ++q) {
+          const auto uq = static_cast<std::size_t>(q);
+          const auto l = static_cast<std::size_t>(around[uq]);
+          SeamCell& cell = *edgeTree.cells[l];
+          edge.cells[uq] = voxelEdgeCell(cell);
+          edge.voxelCell[uq] = voxelCells[l] != 0;
+          const int g = std::max(
+              0,
+              static_cast<int>(
+                  contour::voxelDmcEntry(cell.cornerSigns).vertexOfEdge[static_cast<std::size_t>(4 * axis + 3 - q)]));
+          edge.groups[uq] = g;
+          edge.points[uq] = cellPoints[firstVertex[l] + static_cast<std::size_t>(g)];
+          // A voxel cell's vertices were made with its meta-cell; the others' when first used.
+          if (!edge.voxelCell[uq]) edge.cells[uq].vertices[static_cast<std::size_t>(g)] = cellVertex(around[uq], g);
+        }
+        contour::emitVoxelReadingEdge(edge, addVertex, faceVertices, out.triangles);
+        ++stats.edges;
+      });
 }
 
 }  // namespace
