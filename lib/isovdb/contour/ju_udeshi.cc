@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "isovdb/cell/cell_geometry.h"
+#include "isovdb/contour/quad_diagonal.h"
 
 namespace isovdb::contour {
 namespace {
@@ -324,14 +325,14 @@ EdgeTriangulation chooseTriangulation(const EdgeEnvelope& envelope, const std::a
     return local >= kFaceVertex ? envelope.facePoints[static_cast<std::size_t>(local - kFaceVertex)]
                                 : envelope.cellPoints[static_cast<std::size_t>(local)];
   };
-  // Apex order: for a quadrilateral the shorter diagonal first, else in polygon order.
+  // Apex order: for a quadrilateral the better diagonal first, chosen as regular mode's
+  // quads choose it (quad_diagonal.h: four unit cells then give regular mode's triangles,
+  // which adaptive mode's error bound is measured against), else in polygon order.
   std::array<int, 8> apexes{0, 1, 2, 3, 4, 5, 6, 7};
   int apexCount = m;
   if (m == 4) {
-    const auto distance = [&](int i, int j) {
-      return (toPoint(point(polygon.at(i))) - toPoint(point(polygon.at(j)))).norm();
-    };
-    if (!(distance(0, 2) <= distance(1, 3))) std::swap(apexes[0], apexes[1]);
+    const auto at = [&](int i) { return toPoint(point(polygon.at(i))); };
+    if (!firstDiagonalIsBetter(at(0), at(1), at(2), at(3))) std::swap(apexes[0], apexes[1]);
     apexCount = 2;
   } else if (m == 3) {
     apexCount = 1;

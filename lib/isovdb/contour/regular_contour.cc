@@ -20,6 +20,7 @@
 #include "isovdb/cell/dual_vertex.h"
 #include "isovdb/contour/box_caps.h"
 #include "isovdb/contour/leaf_groups.h"
+#include "isovdb/contour/quad_diagonal.h"
 #include "isovdb/contour/voxel_dmc.h"
 #include "isovdb/errors.h"
 #include "isovdb/octree/criteria.h"
@@ -58,20 +59,6 @@ float edgePointOffset(const MetaCellSamples& samples, const OctreeLeaf& leaf, in
   return edgePointBesideDataBox(offset, start, cell::cellEdgeAxis(e), leaf.size, margin, *options.capBox);
 }
 
-/// Shape quality of a triangle, squared, up to a constant factor: (twice its area / the sum of
-/// its squared edge lengths)^2, which orders triangles as 4 sqrt(3) area / sum (1 =
-/// equilateral) does, without a square root.
-double squaredTriangleQuality(const mesh::Vec3f& a, const mesh::Vec3f& b, const mesh::Vec3f& c) noexcept {
-  const auto point = [](const mesh::Vec3f& p) -> Eigen::Vector3d {
-    return Eigen::Map<const Eigen::Vector3f>(p.data()).cast<double>();
-  };
-  const Eigen::Vector3d pa = point(a), pb = point(b), pc = point(c);
-  const Eigen::Vector3d u = pb - pa, v = pc - pa, w = pc - pb;
-  const double area2 = u.cross(v).squaredNorm();  // (twice the area)^2
-  const double sum = u.squaredNorm() + v.squaredNorm() + w.squaredNorm();
-  return sum > 0.0 ? area2 / (sum * sum) : 0.0;
-}
-
 }  // namespace
 
 std::array<mesh::Triangle, 2> regularEdgeQuad(const std::array<std::uint32_t, 4>& v,
@@ -83,13 +70,13 @@ std::array<mesh::Triangle, 2> regularEdgeQuad(const std::array<std::uint32_t, 4>
   const bool ccwIsPlus = axis != 1;
   std::array<int, 4> order{0, 1, 3, 2};
   if (plusAxis != ccwIsPlus) order = {0, 2, 3, 1};
-  const auto P = [&](int k) -> const mesh::Vec3f& {
-    return p[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])];
+  const auto P = [&](int k) -> Eigen::Vector3d {
+    return Eigen::Map<const Eigen::Vector3f>(p[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])].data())
+        .cast<double>();
   };
   const auto V = [&](int k) { return v[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])]; };
-  const double qa = std::min(squaredTriangleQuality(P(0), P(1), P(2)), squaredTriangleQuality(P(0), P(2), P(3)));
-  const double qb = std::min(squaredTriangleQuality(P(0), P(1), P(3)), squaredTriangleQuality(P(1), P(2), P(3)));
-  if (qa >= qb) return {mesh::Triangle{V(0), V(1), V(2)}, mesh::Triangle{V(0), V(2), V(3)}};
+  if (firstDiagonalIsBetter(P(0), P(1), P(2), P(3)))
+    return {mesh::Triangle{V(0), V(1), V(2)}, mesh::Triangle{V(0), V(2), V(3)}};
   return {mesh::Triangle{V(0), V(1), V(3)}, mesh::Triangle{V(1), V(2), V(3)}};
 }
 
