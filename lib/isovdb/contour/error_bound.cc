@@ -17,6 +17,7 @@
 #include "isovdb/cell/dual_vertex.h"
 #include "isovdb/cell/trilinear.h"
 #include "isovdb/mesh/triangle_grid.h"
+#include "isovdb/octree/build.h"
 #include "isovdb/octree/sample_phases.h"
 #include "isovdb/octree/unit_edge_crossings.h"
 
@@ -172,6 +173,7 @@ std::vector<octree::MortonKey> leavesBeyondErrorBound(const cell::MetaCellSample
                                                       int finestSize, const octree::UnitEdgeCrossings* crossings,
                                                       const octree::SamplePhases* phases) {
   std::vector<octree::MortonKey> keys;
+  maxError -= octree::kErrorBoundMargin;  // what the samples do not see (octree/build.h)
   addLeavesOfFarMeshPoints(samples, tree, mesh, options.iso, maxError, finestSize, keys);
   // The costlier side once the mesh's own points hold: the pass would be built again anyway.
   if (keys.empty())

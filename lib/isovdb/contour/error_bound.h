@@ -22,6 +22,11 @@
 /// part of what regular mode meshes: the frog skeleton's one-voxel slit of
 /// background along a 2-voxel leaf's edge, whose unit-cell vertices lie 0.6 voxel
 /// from the slit's crossings, stayed 0.57 voxel off at every bound before.
+///
+/// Both sides are sampled, so the check holds the mesh to the bound less a margin
+/// (octree::kErrorBoundMargin) that covers what lies between the samples. The seam's
+/// triangles, stitched later, are checked neither way: the octree's own criterion keeps
+/// the same margin on the meta-cell's boundary.
 #pragma once
 
 #include <vector>
