@@ -107,7 +107,7 @@ MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const
   std::vector<char> isSeam(leafCount, 0);
   for (std::size_t i = 0; i < leafCount; ++i) {
     const octree::OctreeLeaf& leaf = tree.leaf(i);
-    isSeam[i] = groups.vertexCount(i) > 0 && touchesMetaCellBoundary(leaf.origin, leaf.size, metaSize);
+    isSeam[i] = groups.vertexCount(i) > 0 && octree::touchesMetaCellBoundary(leaf.origin, leaf.size, metaSize);
   }
 
   // The edges of leaves read as voxels, by the leaf whose local edge 4 * axis they are (the

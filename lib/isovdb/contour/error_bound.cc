@@ -142,10 +142,8 @@ void addLeavesMissingFullResolutionVertices(const cell::MetaCellSamples& samples
                                             std::vector<octree::MortonKey>& keys) {
   if (!std::isfinite(maxError)) return;  // nothing lies farther than that
   const auto checked = [&](const octree::OctreeLeaf& leaf) {
-    if (!leaf.surface || leaf.size <= finestSize) return false;
-    for (int a = 0; a < 3; ++a)
-      if (leaf.origin[a] == 0 || leaf.origin[a] + leaf.size == samples.size) return false;
-    return true;
+    return leaf.surface && leaf.size > finestSize &&
+           !octree::touchesMetaCellBoundary(leaf.origin, leaf.size, samples.size);
   };
   const auto& leaves = tree.leaves();
   if (std::none_of(leaves.begin(), leaves.end(), checked)) return;  // no grid, no phases

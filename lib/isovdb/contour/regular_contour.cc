@@ -248,7 +248,7 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
   for (std::size_t i = 0; i < n; ++i) {
     const OctreeLeaf& leaf = leaves[i];
     const cell::DmcEntry& entry = groups.entry(i);
-    if (entry.vertexCount == 0 || !touchesMetaCellBoundary(leaf.origin, leaf.size, metaSize)) continue;
+    if (entry.vertexCount == 0 || !octree::touchesMetaCellBoundary(leaf.origin, leaf.size, metaSize)) continue;
     SeamCell cell = seamCellOf(leaf, samples.origin, alternative[i] != 0);  // config[i] is leaf.cornerSigns
     if (groups.voxels) {  // the stitcher's edge points (voxelEdgeTriangles)
       const std::uint16_t bipolar = octree::bipolarEdgeMask(config[i]);

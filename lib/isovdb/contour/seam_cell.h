@@ -100,12 +100,4 @@ struct MetaCellMesh {
   MetaCellSeam seam;
 };
 
-/// @brief True if the cell [origin, origin + size] touches the boundary of the
-///        meta-cell [0, metaCellSize]^3 (meta-cell offsets).
-inline bool touchesMetaCellBoundary(const std::array<int, 3>& origin, int size, int metaCellSize) noexcept {
-  for (int a = 0; a < 3; ++a)
-    if (origin[a] == 0 || origin[a] + size == metaCellSize) return true;
-  return false;
-}
-
 }  // namespace isovdb::contour

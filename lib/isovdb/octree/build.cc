@@ -172,8 +172,8 @@ class Builder {
         const Vec3f x = toMetaCellOffsets(v.position);
         // No pass checks leaves on the meta-cell's boundary after contouring (their seam is
         // stitched later): the margin the check keeps is kept here for them.
-        const float allowed =
-            kPlaneShare * options_.maxError - (touchesBlockBoundary(ev.leaf.origin, size) ? kErrorBoundMargin : 0.0f);
+        const float allowed = kPlaneShare * options_.maxError -
+                              (touchesMetaCellBoundary(ev.leaf.origin, size, samples_.size) ? kErrorBoundMargin : 0.0f);
         ev.split = ev.geometric = ev.bounded =
             surfaceDeviation(samples_, phases_, ev.leaf.origin, size, x, settings_.iso) > allowed;
       }
@@ -196,13 +196,6 @@ class Builder {
         !topo.boundaryUniform && ev.leaf.surface && hasHiddenComponent(phases_, ev.leaf.origin, size))
       ev.split = ev.hidden = true;
     return ev;
-  }
-
-  /// The cell [origin, origin + size] (meta-cell offsets) touches the meta-cell's boundary.
-  bool touchesBlockBoundary(const std::array<int, 3>& origin, int size) const noexcept {
-    for (std::size_t a = 0; a < 3; ++a)
-      if (origin[a] == 0 || origin[a] + size == samples_.size) return true;
-    return false;
   }
 
   /// The cell [origin, origin + size] (meta-cell offsets) reaches past a face of the data's

@@ -28,6 +28,15 @@ constexpr int depthForCellSize(int metaCellSize, int cellSize) noexcept {
   return std::bit_width(static_cast<unsigned>(metaCellSize)) - std::bit_width(static_cast<unsigned>(cellSize));
 }
 
+/// @brief True if the cell [origin, origin + size] touches the boundary of the
+///        meta-cell [0, metaCellSize]^3 (meta-cell offsets): the seam, which is stitched
+///        later, with the neighbouring block's cells.
+constexpr bool touchesMetaCellBoundary(const std::array<int, 3>& origin, int size, int metaCellSize) noexcept {
+  for (std::size_t a = 0; a < 3; ++a)
+    if (origin[a] == 0 || origin[a] + size == metaCellSize) return true;
+  return false;
+}
+
 /// @brief One leaf cell.
 struct OctreeLeaf {
   MortonKey key = kInvalidKey;         ///< Morton key (root = 1)
