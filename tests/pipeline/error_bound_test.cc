@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,17 @@ mesh::Mesh adaptiveMesh(const volume::Volume& field, float iso, float maxError, 
   return contourWithOctree(field, {.method = ContourMethod::Adaptive, .iso = iso}, tree, kMetaCell);
 }
 
+/// "A -> B max at (x, y, z), B -> A max at (x, y, z)": both ways of `d`, for a failure message.
+std::string farthestBothWays(const mesh::MeshDistance& d, const std::string& a, const std::string& b) {
+  const auto way = [](const std::string& from, const std::string& to, const auto& side) {
+    std::ostringstream text;
+    text << from << " -> " << to << " " << side.max << " at (" << side.farthest[0] << ", " << side.farthest[1] << ", "
+         << side.farthest[2] << ")";
+    return text.str();
+  };
+  return way(a, b, d.aToB) + ", " + way(b, a, d.bToA);
+}
+
 /// Checks the bound for E = 1, 0.5, 0.25 against regular mode's mesh. Where the two
 /// readings differ at full resolution (Ju–Udeshi fans round a one-voxel step that
 /// DMC cuts), the bound holds up to that difference, `floor`, measured here too.
@@ -51,8 +63,8 @@ void expectBound(const volume::Volume& field, const std::string& name, bool allo
     const mesh::Mesh adaptive = adaptiveMesh(field, iso, e);
     const mesh::MeshDistance d = mesh::compareMeshes(regular, adaptive, {.spacing = 0.25});
     EXPECT_LE(d.hausdorff(), std::max(static_cast<double>(e), floor) + 1e-6)
-        << name << " E = " << e << ": regular -> adaptive " << d.aToB.max << ", adaptive -> regular " << d.bToA.max
-        << " (full-resolution difference " << floor << ")";
+        << name << " E = " << e << ": " << farthestBothWays(d, "regular", "adaptive") << " (full-resolution difference "
+        << floor << ")";
     if (coarser != 0) {
       EXPECT_GE(adaptive.triangleCount(), coarser) << name << " E = " << e;
     }
@@ -124,9 +136,7 @@ TEST(ErrorBound, HoldsBesideAOneVoxelSlitOfTheFrogSkeleton) {
   const mesh::Mesh full = adaptiveMesh(field, 0.0f, -1.0f, 1);
   for (const float e : {0.5f, 0.25f}) {
     const mesh::MeshDistance d = mesh::compareMeshes(full, adaptiveMesh(field, 0.0f, e), {.spacing = 0.25});
-    EXPECT_LE(d.hausdorff(), e) << "E = " << e << ": full -> adaptive " << d.aToB.max << " at (" << d.aToB.farthest[0]
-                                << ", " << d.aToB.farthest[1] << ", " << d.aToB.farthest[2] << "), adaptive -> full "
-                                << d.bToA.max;
+    EXPECT_LE(d.hausdorff(), e) << "E = " << e << ": " << farthestBothWays(d, "full", "adaptive");
   }
 }
 
@@ -157,10 +167,7 @@ void expectVoxelReadingBound(const volume::Volume& field, const std::string& nam
   const mesh::Mesh adaptive =
       contourWithOctree(field, {.method = ContourMethod::Adaptive, .adaptiveVoxelReading = true}, tree, metaCell);
   const mesh::MeshDistance d = mesh::compareMeshes(regular, adaptive, {.spacing = 0.25});
-  EXPECT_LE(d.hausdorff(), kBound) << name << ": regular -> adaptive " << d.aToB.max << " at (" << d.aToB.farthest[0]
-                                   << ", " << d.aToB.farthest[1] << ", " << d.aToB.farthest[2]
-                                   << "), adaptive -> regular " << d.bToA.max << " at (" << d.bToA.farthest[0] << ", "
-                                   << d.bToA.farthest[1] << ", " << d.bToA.farthest[2] << ")";
+  EXPECT_LE(d.hausdorff(), kBound) << name << ": " << farthestBothWays(d, "regular", "adaptive");
 }
 
 // At the finest cells adaptive mode places regular mode's vertices, so a quad that is not

@@ -7,12 +7,19 @@
 
 namespace isovdb::contour {
 
+namespace {
+
+/// Shape quality of triangle (a, b, c), squared, up to a constant factor: (twice its area /
+/// the sum of its squared edge lengths)^2, which orders triangles as 4 sqrt(3) area / sum
+/// (1 = equilateral) does, without a square root. 0 for a degenerate triangle.
 double squaredTriangleQuality(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) noexcept {
   const Eigen::Vector3d u = b - a, v = c - a, w = c - b;
   const double area2 = u.cross(v).squaredNorm();  // (twice the area)^2
   const double sum = u.squaredNorm() + v.squaredNorm() + w.squaredNorm();
   return sum > 0.0 ? area2 / (sum * sum) : 0.0;
 }
+
+}  // namespace
 
 bool firstDiagonalIsBetter(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
                            const Eigen::Vector3d& p3) noexcept {

@@ -16,14 +16,10 @@
 
 namespace isovdb::contour {
 
-/// Shape quality of triangle (a, b, c), squared, up to a constant factor: (twice its area /
-/// the sum of its squared edge lengths)^2, which orders triangles as 4 sqrt(3) area / sum
-/// (1 = equilateral) does, without a square root. 0 for a degenerate triangle.
-double squaredTriangleQuality(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) noexcept;
-
 /// @brief True when diagonal p0-p2 of the quadrilateral p0 p1 p2 p3 (cyclic order) gives
-///        triangles whose worse one is at least as good (squaredTriangleQuality) as with
-///        diagonal p1-p3. Symmetric in each diagonal's ends and in the cycle's direction.
+///        triangles whose worse one is at least as good as with diagonal p1-p3 (shape
+///        quality: twice the area over the sum of the squared edge lengths; 0 = degenerate). Symmetric in each
+///        diagonal's ends and in the cycle's direction.
 bool firstDiagonalIsBetter(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
                            const Eigen::Vector3d& p3) noexcept;
 
