@@ -16,6 +16,7 @@
 #include "generators/shapes.h"
 #include "isovdb/io/metaimage_reader.h"
 #include "isovdb/mesh/mesh_distance.h"
+#include "isovdb/octree/build.h"
 #include "isovdb/pipeline/extract.h"
 #include "isovdb/pipeline/octree_contour.h"
 #include "isovdb/volume/ingest.h"
@@ -186,6 +187,26 @@ TEST(ErrorBound, HoldsBetweenItsSamplesAndAcrossSeams) {
   expectVoxelReadingBound(blobsInsideTheBox(48, 4), "blobs 48, seed 4", kMetaCell);
   auto sphere = samples::makeShapeStream(samples::ShapeKind::Sphere, {.size = 144});
   expectVoxelReadingBound(toContourable(volume::ingestMask(*sphere, {}), {}), "sphere 144, meta-cells of 16", 16);
+}
+
+// Inside a meta-cell the bound's check decides, so the QEF tolerance counts only above
+// kBoundedInteriorQefShare * E there; on a meta-cell's boundary, whose seam nothing checks,
+// it counts as given. A sphere inside one meta-cell gets the same mesh with either
+// tolerance below that share; cut by seams, it does not.
+TEST(ErrorBound, DecidesInsideAMetaCellAndTheQefToleranceOnItsBoundary) {
+  auto stream = samples::makeShapeStream(samples::ShapeKind::Sphere, {.size = 96});
+  const volume::Volume field = toContourable(volume::ingestMask(*stream, {}), {});
+  const auto adaptive = [&](float qefTolerance, int metaCell) {
+    octree::OctreeOptions tree;
+    tree.maxError = 1.0f;
+    tree.qefTolerance = qefTolerance;
+    return contourWithOctree(field, {.method = ContourMethod::Adaptive}, tree, metaCell);
+  };
+  ASSERT_GT(octree::kBoundedInteriorQefShare, 0.3f);
+  const mesh::Mesh strict = adaptive(0.15f, 128), looser = adaptive(0.3f, 128);
+  EXPECT_EQ(strict.triangleCount(), looser.triangleCount());
+  EXPECT_TRUE(strict.triangles == looser.triangles && strict.positions == looser.positions) << "the meshes differ";
+  EXPECT_GT(adaptive(0.15f, kMetaCell).triangleCount(), adaptive(0.3f, kMetaCell).triangleCount());
 }
 
 // Leaves at the finest size cannot be split: a bound they cannot meet ends the passes

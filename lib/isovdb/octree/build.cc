@@ -167,7 +167,11 @@ class Builder {
     } else if ((options_.qefTolerance >= 0.0f || options_.maxError > 0.0f) && ev.leaf.surface) {
       const cell::DualVertex v = cellDualVertex(samples_, ev.leaf.origin, size, ev.leaf.bipolarEdges(),
                                                 cell::dualVertexOptions(settings_), crossings_);
-      ev.split = ev.geometric = v.valid() && options_.qefTolerance >= 0.0f && v.rmsError() > options_.qefTolerance;
+      const float qefTolerance = options_.maxError > 0.0f && options_.qefTolerance >= 0.0f &&
+                                         !touchesMetaCellBoundary(ev.leaf.origin, size, samples_.size)
+                                     ? std::max(options_.qefTolerance, kBoundedInteriorQefShare * options_.maxError)
+                                     : options_.qefTolerance;
+      ev.split = ev.geometric = v.valid() && qefTolerance >= 0.0f && v.rmsError() > qefTolerance;
       if (!ev.split && v.valid() && options_.maxError > 0.0f) {
         const Vec3f x = toMetaCellOffsets(v.position);
         // No pass checks leaves on the meta-cell's boundary after contouring (their seam is

@@ -100,7 +100,9 @@ std::vector<Setting> extractSettings(ExtractChoices& c) {
            &o.octree.maxDepth},
           {"finest-size", "regular/adaptive: smallest cell in voxels (1, 2, 4, ...) when --max-level is -1",
            &o.octree.finestCellSize},
-          {"qef-tolerance", "adaptive: split cells whose QEF residual (RMS, voxels) exceeds this; < 0 off",
+          {"qef-tolerance",
+           "adaptive: split cells whose QEF residual (RMS, voxels) exceeds this; < 0 off. With --max-error E, cells "
+           "inside a meta-cell (which the bound's check covers) use 0.45 E where that is larger",
            &o.octree.qefTolerance},
           {"max-error",
            "adaptive: error bound in voxels: the mesh stays within this distance of the full-resolution surface "
