@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "isovdb/errors.h"
+#include "isovdb/octree/build.h"
 
 namespace isovdb::pipeline {
 
@@ -59,6 +60,9 @@ std::vector<Setting> distanceSettings(volume::DistanceFieldOptions& o, std::stri
       {"closing", "Morphological closing steps before the distance field, 0..64 (changes topology)", &o.closingSteps},
   };
 }
+
+// --qef-tolerance's help states the share.
+static_assert(octree::kBoundedInteriorQefShare == 0.45f);
 
 std::vector<Setting> extractSettings(ExtractChoices& c) {
   ExtractOptions& o = c.options;
