@@ -14,6 +14,8 @@
 
 #include "isovdb/errors.h"
 #include "isovdb/octree/inspect.h"
+#include "isovdb/octree/sample_phases.h"
+#include "isovdb/octree/surface_deviation.h"
 
 namespace isovdb::octree {
 namespace {
@@ -121,6 +123,42 @@ TEST_F(SphereR40, AdaptiveIsBalancedAndThreeTimesSmaller) {
   EXPECT_GE(summarizeOctree(refined).surfaceLeaves, a.surfaceLeaves);
   std::printf("[ sphere r=40 ] adaptive + QEF tolerance 0.05: %zu surface leaves, %zu geometric splits\n",
               summarizeOctree(refined).surfaceLeaves, gStats.geometricSplits);
+}
+
+// With an error bound E, a kept leaf's full-resolution surface lies within a share of E of
+// its vertex plane: kInteriorPlaneShare inside the meta-cell from four voxels up (the bound's
+// check covers those), kPlaneShare in two-voxel leaves. The looser share is used: some
+// leaves of four voxels or more stray beyond kPlaneShare * E.
+TEST(BuildOctree, ErrorBoundHoldsEachLeafToItsPlaneShare) {
+  constexpr float kMaxError = 1.0f;
+  // A sphere, its upper half rippled by 0.7 voxel: smooth parts for coarse leaves, the
+  // ripples' folds for two-voxel ones.
+  const cell::MetaCellSamples samples = cell::makeMetaCellSamples(128, {0, 0, 0}, [](int x, int y, int z) {
+    const double r = std::sqrt((x - 64.3) * (x - 64.3) + (y - 63.7) * (y - 63.7) + (z - 64.2) * (z - 64.2));
+    return r - 40.0 - 0.7 * std::sin(0.25 * x) * std::sin(0.25 * y) * (z > 64 ? 1.0 : 0.0);
+  });
+  const LinearOctree tree = buildOctree(samples, kAdaptive, {.maxError = kMaxError});
+  const SamplePhases phases(samples, 0.0f);
+  int looser = 0, measured = 0, twoVoxel = 0;
+  for (const OctreeLeaf& l : tree.leaves()) {
+    if (!l.surface || l.vertexTruncation < 0.0f || l.size == 1) continue;
+    ASSERT_FALSE(touchesMetaCellBoundary(l.origin, l.size, samples.size));
+    const float deviation =
+        surfaceDeviation(samples, phases, l.origin, l.size, {l.vertex[0], l.vertex[1], l.vertex[2]}, 0.0f);
+    ++measured;
+    if (l.size == 2) {
+      ++twoVoxel;
+      EXPECT_LE(deviation, kPlaneShare * kMaxError)
+          << "two-voxel leaf at " << l.origin[0] << "," << l.origin[1] << "," << l.origin[2];
+    } else {
+      EXPECT_LE(deviation, kInteriorPlaneShare * kMaxError) << "leaf of " << l.size;
+      looser += deviation > kPlaneShare * kMaxError;
+    }
+  }
+  std::printf("[ rippled sphere, E = 1 ] %d of %d leaves beyond the boundary's plane share, %d of two voxels\n", looser,
+              measured, twoVoxel);
+  EXPECT_GT(looser, 0);
+  EXPECT_GT(twoVoxel, 0);
 }
 
 TEST(BuildOctree, ThinSheetForcesTheMaximumDepth) {

@@ -189,6 +189,16 @@ TEST(ErrorBound, HoldsBetweenItsSamplesAndAcrossSeams) {
   expectVoxelReadingBound(toContourable(volume::ingestMask(*sphere, {}), {}), "sphere 144, meta-cells of 16", 16);
 }
 
+// Inside a meta-cell, leaves of four voxels or more may stray kInteriorPlaneShare * E from
+// their vertex plane (the check covers them), two-voxel leaves only kPlaneShare * E: with the
+// looser share there too, a two-voxel leaf of these blobs (one meta-cell, the box's faces
+// included) ended 0.30 voxel from regular mode's mesh at E = 0.25, between the unit-cell
+// vertices the check measures.
+TEST(ErrorBound, HoldsInTwoVoxelLeaves) {
+  auto stream = samples::makeShapeStream(samples::ShapeKind::Blobs, {.size = 96, .seed = 96});
+  expectVoxelReadingBound(toContourable(volume::ingestMask(*stream, {}), {}), "blobs 96, seed 96, one meta-cell", 128);
+}
+
 // Inside a meta-cell the bound's check decides, so the QEF tolerance counts only above
 // kBoundedInteriorQefShare * E there; on a meta-cell's boundary, whose seam nothing checks,
 // it counts as given. A sphere inside one meta-cell gets the same mesh with either

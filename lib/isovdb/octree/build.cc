@@ -69,12 +69,6 @@ constexpr std::int32_t kInternal = -1;
 /// feature, whose vertex the sharp-feature gap checks (a smooth leaf's planes are close).
 constexpr float kFeatureCone = 0.5f;
 
-/// The share of the error bound the full-resolution surface may stray from a leaf's vertex
-/// plane: the mesh around the vertex is not that plane but triangles to the neighbours'
-/// vertices, each off by as much in its own cell (measured: a share of 1 let a one-voxel
-/// bump under a leaf of E = 1 end 1.27 voxels from the adaptive mesh).
-constexpr float kPlaneShare = 0.5f;
-
 /// Result of evaluating one cell.
 struct Evaluation {
   OctreeLeaf leaf;
@@ -176,8 +170,10 @@ class Builder {
         const Vec3f x = toMetaCellOffsets(v.position);
         // No pass checks leaves on the meta-cell's boundary after contouring (their seam is
         // stitched later): the margin the check keeps is kept here for them.
-        const float allowed = kPlaneShare * options_.maxError -
-                              (touchesMetaCellBoundary(ev.leaf.origin, size, samples_.size) ? kErrorBoundMargin : 0.0f);
+        const bool onBoundary = touchesMetaCellBoundary(ev.leaf.origin, size, samples_.size);
+        const float allowed = onBoundary  ? kPlaneShare * options_.maxError - kErrorBoundMargin
+                              : size <= 2 ? kPlaneShare * options_.maxError
+                                          : kInteriorPlaneShare * options_.maxError;
         ev.split = ev.geometric = ev.bounded =
             surfaceDeviation(samples_, phases_, ev.leaf.origin, size, x, settings_.iso) > allowed;
       }
