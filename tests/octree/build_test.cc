@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -159,6 +160,29 @@ TEST(BuildOctree, ErrorBoundHoldsEachLeafToItsPlaneShare) {
               measured, twoVoxel);
   EXPECT_GT(looser, 0);
   EXPECT_GT(twoVoxel, 0);
+}
+
+// The error bound's passes build a block's tree again with more forced splits, recalling
+// the other cells' evaluations from a BuildMemo: the same tree as a build without it, the
+// forced cells split although the memo holds them as leaves.
+TEST_F(SphereR40, MemoRecallsTheSameTreeWithMoreForcedSplits) {
+  OctreeOptions options{.maxError = 1.0f};
+  BuildMemo memo;
+  const LinearOctree first = buildOctree(*samples_, kAdaptive, options, nullptr, nullptr, nullptr, nullptr, &memo);
+  for (const OctreeLeaf& l : first.leaves())
+    if (l.surface && l.size > 1 && options.forcedSplits.size() < 40) options.forcedSplits.push_back(l.key);
+  ASSERT_EQ(options.forcedSplits.size(), 40u);
+  std::sort(options.forcedSplits.begin(), options.forcedSplits.end());
+  const LinearOctree recalled = buildOctree(*samples_, kAdaptive, options, nullptr, nullptr, nullptr, nullptr, &memo);
+  const LinearOctree fresh = buildOctree(*samples_, kAdaptive, options);
+  ASSERT_EQ(recalled.leafCount(), fresh.leafCount());
+  EXPECT_GT(recalled.leafCount(), first.leafCount());
+  for (std::size_t i = 0; i < fresh.leafCount(); ++i) {
+    ASSERT_EQ(recalled.leaf(i).key, fresh.leaf(i).key) << "leaf " << i;
+    EXPECT_EQ(recalled.leaf(i).vertex, fresh.leaf(i).vertex) << "leaf " << i;
+    EXPECT_EQ(recalled.leaf(i).cornerSigns, fresh.leaf(i).cornerSigns) << "leaf " << i;
+  }
+  for (const MortonKey key : options.forcedSplits) EXPECT_EQ(recalled.findLeaf(key), LinearOctree::kNone);
 }
 
 TEST(BuildOctree, ThinSheetForcesTheMaximumDepth) {

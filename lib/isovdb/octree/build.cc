@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <bit>
 #include <string>
+#include <utility>
 
 #include "isovdb/bit_count.h"
 #include "isovdb/cell/dmc_table.h"
@@ -86,10 +87,42 @@ struct Evaluation {
   std::uint8_t complexFaces = 0;
 };
 
+}  // namespace
+
+struct BuildMemo::Impl {
+  /// A build's evaluations are kept as they come (a whole level's vector at a time) and
+  /// indexed only when a next build starts: most blocks are built once.
+  std::vector<std::vector<Evaluation>> unindexed;
+  std::vector<Evaluation> loose;  // the balancing's, one at a time
+  std::vector<Evaluation> indexed;
+  KeyMap index;  // key -> position in indexed
+
+  void prepare() {
+    unindexed.push_back(std::move(loose));
+    loose.clear();
+    for (const std::vector<Evaluation>& batch : unindexed)
+      for (const Evaluation& ev : batch) {
+        if (index.find(ev.leaf.key)) continue;  // recalled
+        index.assign(ev.leaf.key, static_cast<std::int32_t>(indexed.size()));
+        indexed.push_back(ev);
+      }
+    unindexed.clear();
+  }
+  const Evaluation* find(MortonKey key) noexcept {
+    const std::int32_t* i = index.find(key);
+    return i ? &indexed[static_cast<std::size_t>(*i)] : nullptr;
+  }
+};
+
+BuildMemo::BuildMemo() : impl_(std::make_unique<Impl>()) {}
+BuildMemo::~BuildMemo() = default;
+
+namespace {
+
 class Builder {
  public:
   Builder(const cell::MetaCellSamples& samples, const cell::ContourSettings& settings, const OctreeOptions& options,
-          OctreeDepths depths, const UnitEdgeCrossings* crossings, const SamplePhases* phases)
+          OctreeDepths depths, const UnitEdgeCrossings* crossings, const SamplePhases* phases, BuildMemo* memo)
       : samples_(samples),
         settings_(settings),
         options_(options),
@@ -97,9 +130,31 @@ class Builder {
         crossings_(crossings),
         ownPhases_(phases ? std::nullopt : std::optional<SamplePhases>(std::in_place, samples, settings.iso)),
         phases_(phases ? *phases : *ownPhases_),
+        memo_(memo ? &memo->impl() : nullptr),
         leavesAtDepth_(static_cast<std::size_t>(depths.maxDepth) + 1) {
     classify_.detectInteriorComponents = options.detectInteriorComponents;
+    if (memo_) memo_->prepare();
     if (settings.adaptiveReadsVoxels() && depths.maxDepth == depthForCellSize(samples.size, 1)) markVoxelReadingCells();
+  }
+
+  /// The memo's evaluation of `key` (not for a forced split: an earlier build kept that
+  /// cell a leaf), else a new one. Safe in parallel: the memo's index is read only.
+  Evaluation recallOrEvaluate(MortonKey key, FaceLabeller& labeller) const {
+    if (memo_ && !isForcedSplit(key))
+      if (const Evaluation* ev = memo_->find(key)) return *ev;
+    return evaluate(key, labeller);
+  }
+
+  /// recallOrEvaluate, kept for the next build (one thread at a time).
+  Evaluation evaluateOnce(MortonKey key, FaceLabeller& labeller) {
+    const Evaluation ev = recallOrEvaluate(key, labeller);
+    if (memo_ && ev.leaf.size > 1) memo_->loose.push_back(ev);  // unit cells: see BuildMemo
+    return ev;
+  }
+
+  bool isForcedSplit(MortonKey key) const {
+    return !options_.forcedSplits.empty() &&
+           std::binary_search(options_.forcedSplits.begin(), options_.forcedSplits.end(), key);
   }
 
   Evaluation evaluate(MortonKey key, FaceLabeller& labeller) const {
@@ -114,8 +169,7 @@ class Builder {
       ev.split = true;
       return ev;
     }
-    if (c.depth < depths_.maxDepth && !options_.forcedSplits.empty() &&
-        std::binary_search(options_.forcedSplits.begin(), options_.forcedSplits.end(), key)) {
+    if (c.depth < depths_.maxDepth && isForcedSplit(key)) {
       ev.split = true;
       return ev;
     }
@@ -242,7 +296,7 @@ class Builder {
       evals.resize(level.size());
       auto body = [&](const tbb::blocked_range<std::size_t>& r) {
         FaceLabeller& labeller = labellers.local();
-        for (std::size_t i = r.begin(); i != r.end(); ++i) evals[i] = evaluate(level[i], labeller);
+        for (std::size_t i = r.begin(); i != r.end(); ++i) evals[i] = recallOrEvaluate(level[i], labeller);
       };
       const tbb::blocked_range<std::size_t> range(0, level.size(), 16);
       if (options_.parallel && level.size() > 1)
@@ -259,6 +313,7 @@ class Builder {
           addLeaf(ev);
         }
       }
+      if (memo_ && (samples_.size >> depth) > 1) memo_->unindexed.push_back(std::exchange(evals, {}));
       level.swap(next);
     }
   }
@@ -274,7 +329,7 @@ class Builder {
     while (!stack.empty()) {
       const MortonKey k = stack.back();
       stack.pop_back();
-      const Evaluation ev = evaluate(k, labeller);
+      const Evaluation ev = evaluateOnce(k, labeller);
       count(ev);
       if (ev.split) {
         map_.assign(k, kInternal);
@@ -358,7 +413,7 @@ class Builder {
     alive_[static_cast<std::size_t>(index)] = false;
     map_.assign(key, kInternal);
     for (int o = 0; o < 8; ++o) {
-      const Evaluation ev = evaluate(childKey(key, o), labeller);
+      const Evaluation ev = evaluateOnce(childKey(key, o), labeller);
       count(ev);
       addLeaf(ev);  // a child that wants a split is refined by the pass after the ripple
     }
@@ -446,6 +501,7 @@ class Builder {
   const UnitEdgeCrossings* crossings_;     // optional: what the dual vertices read
   std::optional<SamplePhases> ownPhases_;  // where the caller gave none
   const SamplePhases& phases_;             // what the criteria read
+  BuildMemo::Impl* memo_;                  // optional: earlier builds' evaluations
   CellClassifyOptions classify_;
   OctreeBuildStats stats_;
   std::vector<Record> records_;
@@ -511,11 +567,11 @@ OctreeBuildStats& OctreeBuildStats::operator+=(const OctreeBuildStats& o) {
 
 LinearOctree buildOctree(const cell::MetaCellSamples& samples, const cell::ContourSettings& settings,
                          const OctreeOptions& options, OctreeBuildStats* stats, Interrupter* interrupter,
-                         const UnitEdgeCrossings* crossings, const SamplePhases* phases) {
+                         const UnitEdgeCrossings* crossings, const SamplePhases* phases, BuildMemo* memo) {
   if (settings.method == cell::ContourMethod::Vdb)
     throw InputError("octree: the vdb method builds no octree (regular or adaptive)");
   const OctreeDepths depths = resolveDepths(options, samples.size);
-  Builder builder(samples, settings, options, depths, crossings, phases);
+  Builder builder(samples, settings, options, depths, crossings, phases, memo);
   builder.buildTopDown(interrupter);
   if (settings.method == cell::ContourMethod::Adaptive) builder.balance(interrupter);
   return builder.finish(stats);

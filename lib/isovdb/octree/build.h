@@ -23,6 +23,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -141,6 +142,26 @@ struct OctreeBuildStats {
   OctreeBuildStats& operator+=(const OctreeBuildStats& o);
 };
 
+/// What one build of a block's octree evaluated, handed to the next build of the same block
+/// (the error bound's passes build it again with a few more forced splits). Every other
+/// cell's evaluation is a function of the samples and the options, so the next build recalls
+/// it instead of classifying the cell and placing its vertex again. About 80 bytes per cell
+/// evaluated coarser than a voxel (unit cells are not kept: cheap to evaluate, and most of a
+/// mask's cells); keep one per block, for that block's passes only.
+class BuildMemo {
+ public:
+  BuildMemo();
+  ~BuildMemo();
+  BuildMemo(const BuildMemo&) = delete;
+  BuildMemo& operator=(const BuildMemo&) = delete;
+
+  struct Impl;  // build.cc
+  Impl& impl() noexcept { return *impl_; }
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
 /// @brief Builds the octree of one meta-cell.
 /// @param[in] samples the meta-cell's dense samples (S + 3)^3.
 /// @param[in] settings the method (Regular or Adaptive), isovalue, QEF truncation and
@@ -152,12 +173,14 @@ struct OctreeBuildStats {
 ///            settings.sharpFeatures), which the cells' dual vertices then read; the
 ///            same tree.
 /// @param[in] phases optional: the samples' phases at settings.iso (computed here without them).
+/// @param[in,out] memo optional: what earlier builds of these samples with these settings and
+///            options (forced splits aside) evaluated; this build's evaluations are added.
 /// @throw InputError for invalid options (see resolveDepths) or the Vdb method;
 ///        Interrupted on cancellation.
 LinearOctree buildOctree(const cell::MetaCellSamples& samples, const cell::ContourSettings& settings,
                          const OctreeOptions& options = {}, OctreeBuildStats* stats = nullptr,
                          Interrupter* interrupter = nullptr, const UnitEdgeCrossings* crossings = nullptr,
-                         const SamplePhases* phases = nullptr);
+                         const SamplePhases* phases = nullptr, BuildMemo* memo = nullptr);
 
 /// @brief True if no two leaves that share a face, an edge or a corner differ by more than one depth.
 bool isBalanced(const LinearOctree& octree);

@@ -48,9 +48,9 @@ bool contourReadsOnlySurfaceCells(const cell::ContourSettings& settings, const O
 
 LinearOctree buildContourTree(const cell::MetaCellSamples& samples, const cell::ContourSettings& settings,
                               const OctreeOptions& options, OctreeBuildStats* stats, Interrupter* interrupter,
-                              const UnitEdgeCrossings* crossings, const SamplePhases* phases) {
+                              const UnitEdgeCrossings* crossings, const SamplePhases* phases, BuildMemo* memo) {
   if (!contourReadsOnlySurfaceCells(settings, options, samples.size))
-    return buildOctree(samples, settings, options, stats, interrupter, crossings, phases);
+    return buildOctree(samples, settings, options, stats, interrupter, crossings, phases, memo);
   if (stats) *stats = OctreeBuildStats{};
   return phases ? surfaceCellTree(samples, *phases) : surfaceCellTree(samples, settings.iso);
 }

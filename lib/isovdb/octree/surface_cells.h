@@ -41,6 +41,6 @@ bool contourReadsOnlySurfaceCells(const cell::ContourSettings& settings, const O
 LinearOctree buildContourTree(const cell::MetaCellSamples& samples, const cell::ContourSettings& settings,
                               const OctreeOptions& options = {}, OctreeBuildStats* stats = nullptr,
                               Interrupter* interrupter = nullptr, const UnitEdgeCrossings* crossings = nullptr,
-                              const SamplePhases* phases = nullptr);
+                              const SamplePhases* phases = nullptr, BuildMemo* memo = nullptr);
 
 }  // namespace isovdb::octree
