@@ -215,16 +215,16 @@ class Builder {
     } else if ((options_.qefTolerance >= 0.0f || options_.maxError > 0.0f) && ev.leaf.surface) {
       const cell::DualVertex v = cellDualVertex(samples_, ev.leaf.origin, size, ev.leaf.bipolarEdges(),
                                                 cell::dualVertexOptions(settings_), crossings_);
-      const float qefTolerance = options_.maxError > 0.0f && options_.qefTolerance >= 0.0f &&
-                                         !touchesMetaCellBoundary(ev.leaf.origin, size, samples_.size)
+      // The bound's check after contouring covers the leaves inside the meta-cell; those on
+      // its boundary, whose seam is stitched later, only the criteria here.
+      const bool onBoundary = touchesMetaCellBoundary(ev.leaf.origin, size, samples_.size);
+      const float qefTolerance = options_.maxError > 0.0f && options_.qefTolerance >= 0.0f && !onBoundary
                                      ? std::max(options_.qefTolerance, kBoundedInteriorQefShare * options_.maxError)
                                      : options_.qefTolerance;
       ev.split = ev.geometric = v.valid() && qefTolerance >= 0.0f && v.rmsError() > qefTolerance;
       if (!ev.split && v.valid() && options_.maxError > 0.0f) {
         const Vec3f x = toMetaCellOffsets(v.position);
-        // No pass checks leaves on the meta-cell's boundary after contouring (their seam is
-        // stitched later): the margin the check keeps is kept here for them.
-        const bool onBoundary = touchesMetaCellBoundary(ev.leaf.origin, size, samples_.size);
+        // On the boundary the margin the check keeps is kept here.
         const float allowed = onBoundary  ? kPlaneShare * options_.maxError - kErrorBoundMargin
                               : size <= 2 ? kPlaneShare * options_.maxError
                                           : kInteriorPlaneShare * options_.maxError;
