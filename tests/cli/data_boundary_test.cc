@@ -56,5 +56,26 @@ TEST(CliDataBoundary, OpenCapsLeaveNoSelfIntersectionsEither) {
   EXPECT_EQ(json["check"]["self_intersecting_pairs"].get<int>(), 0);
 }
 
+TEST(CliDataBoundary, OpenMeshesAreManifoldWhereTwoSheetsMetTheBoxAtOneCapVertex) {
+  // The frog skeleton meets the top slice in sheets whose caps shared two vertices
+  // (voxels that share only an edge): with the caps dropped the sheets touched there,
+  // 2 non-manifold vertices in both modes. Each sheet now has its own vertex.
+  const std::string frog = (dataDir() / "frog" / "frogtissue.mhd").string();
+  for (const char* method : {"adaptive", "regular"}) {
+    const TempDir dir;
+    const auto stats = dir / "stats.json";
+    std::string output;
+    runCommand(cliPath().string() + " -q extract " + frog + " --labels 13 --boundary open --check --method " + method +
+                   " -o " + (dir / "m.ply").string() + " --stats " + stats.string(),
+               &output);
+    const nlohmann::json json = nlohmann::json::parse(readFile(stats));
+    EXPECT_FALSE(json["check"]["closed"].get<bool>()) << method;
+    EXPECT_GT(json["contour"]["cap_triangles_dropped"].get<int>(), 0) << method;
+    EXPECT_TRUE(json["check"]["manifold"].get<bool>()) << method;
+    EXPECT_EQ(json["check"]["non_manifold_vertices"].get<int>(), 0) << method;
+    EXPECT_EQ(json["check"]["self_intersecting_pairs"].get<int>(), 0) << method;
+  }
+}
+
 }  // namespace
 }  // namespace isovdb::test

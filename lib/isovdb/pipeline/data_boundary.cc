@@ -6,6 +6,8 @@
 #include <limits>
 #include <vector>
 
+#include "isovdb/mesh/pinched_vertices.h"
+
 namespace isovdb::pipeline {
 
 namespace {
@@ -53,6 +55,8 @@ std::int64_t applyDataBoundary(mesh::Mesh& mesh, const volume::IndexBox& box, Bo
   const auto before = static_cast<std::int64_t>(mesh.triangles.size());
   std::erase_if(mesh.triangles, [&](const mesh::Triangle& tri) { return onOneFace(mesh, tri, box); });
   removeUnusedVertices(mesh);
+  // Two sheets that met the box at one cap vertex touch there once their caps are gone.
+  mesh::splitPinchedVertices(mesh);
   return before - static_cast<std::int64_t>(mesh.triangles.size());
 }
 

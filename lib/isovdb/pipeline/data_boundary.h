@@ -18,6 +18,8 @@
 /// - Open: the same, then the cap triangles (all three vertices on or beyond one
 ///   box face) are dropped and unused vertices removed. The mesh's boundary edges
 ///   lie on the box faces (octree modes: within 2 * 10^-3 voxel), and only there.
+///   Two sheets whose caps shared a vertex would touch there: each gets its own copy
+///   (mesh/pinched_vertices.h), so the open mesh is manifold.
 #pragma once
 
 #include <cstdint>
