@@ -199,11 +199,13 @@ TEST(ErrorBound, HoldsInTwoVoxelLeaves) {
   expectVoxelReadingBound(toContourable(volume::ingestMask(*stream, {}), {}), "blobs 96, seed 96, one meta-cell", 128);
 }
 
-// Inside a meta-cell the bound's check decides, so the QEF tolerance counts only above
-// kBoundedInteriorQefShare * E there; on a meta-cell's boundary, whose seam nothing checks,
-// it counts as given. A sphere inside one meta-cell gets the same mesh with either
-// tolerance below that share; cut by seams, it does not.
-TEST(ErrorBound, DecidesInsideAMetaCellAndTheQefToleranceOnItsBoundary) {
+// With a bound the QEF tolerance counts only above kBoundedQefShare * E: inside a meta-cell
+// the bound's check decides, on its boundary the plane test. A sphere gets the same mesh with
+// any tolerance below that share, the criterion turned off included (with none, a thin
+// structure on a seam of the 256^3 blobs ended 1.11 voxels off at E = 1), in one meta-cell and
+// cut by seams (where the boundary's leaves kept the tolerance as given before: 6 % more
+// triangles on a 256^3 salt dome).
+TEST(ErrorBound, CountsTheQefToleranceOnlyAboveItsShareOfTheBound) {
   auto stream = samples::makeShapeStream(samples::ShapeKind::Sphere, {.size = 96});
   const volume::Volume field = toContourable(volume::ingestMask(*stream, {}), {});
   const auto adaptive = [&](float qefTolerance, int metaCell) {
@@ -212,11 +214,16 @@ TEST(ErrorBound, DecidesInsideAMetaCellAndTheQefToleranceOnItsBoundary) {
     tree.qefTolerance = qefTolerance;
     return contourWithOctree(field, {.method = ContourMethod::Adaptive}, tree, metaCell);
   };
-  ASSERT_GT(octree::kBoundedInteriorQefShare, 0.3f);
-  const mesh::Mesh strict = adaptive(0.15f, 128), looser = adaptive(0.3f, 128);
-  EXPECT_EQ(strict.triangleCount(), looser.triangleCount());
-  EXPECT_TRUE(strict.triangles == looser.triangles && strict.positions == looser.positions) << "the meshes differ";
-  EXPECT_GT(adaptive(0.15f, kMetaCell).triangleCount(), adaptive(0.3f, kMetaCell).triangleCount());
+  ASSERT_GT(octree::kBoundedQefShare, 0.3f);
+  for (const int metaCell : {128, kMetaCell}) {
+    const mesh::Mesh strict = adaptive(0.15f, metaCell);
+    for (const float looser : {0.3f, -1.0f}) {
+      const mesh::Mesh other = adaptive(looser, metaCell);
+      EXPECT_EQ(strict.triangleCount(), other.triangleCount()) << looser << ", meta-cell " << metaCell;
+      EXPECT_TRUE(strict.triangles == other.triangles && strict.positions == other.positions)
+          << "the meshes differ: " << looser << ", meta-cell " << metaCell;
+    }
+  }
 }
 
 // Leaves at the finest size cannot be split: a bound they cannot meet ends the passes

@@ -215,11 +215,14 @@ class Builder {
     } else if ((options_.qefTolerance >= 0.0f || options_.maxError > 0.0f) && ev.leaf.surface) {
       const cell::DualVertex v = cellDualVertex(samples_, ev.leaf.origin, size, ev.leaf.bipolarEdges(),
                                                 cell::dualVertexOptions(settings_), crossings_);
-      // The bound's check after contouring covers the leaves inside the meta-cell; those on
-      // its boundary, whose seam is stitched later, only the criteria here.
+      // With a bound, the bound's check after contouring holds the leaves inside the
+      // meta-cell and the plane test below those on its boundary (their seams are stitched
+      // later, unchecked): the QEF tolerance only saves passes and splits.
       const bool onBoundary = touchesMetaCellBoundary(ev.leaf.origin, size, samples_.size);
-      const float qefTolerance = options_.maxError > 0.0f && options_.qefTolerance >= 0.0f && !onBoundary
-                                     ? std::max(options_.qefTolerance, kBoundedInteriorQefShare * options_.maxError)
+      // The share applies with the criterion turned off too (--qef-tolerance -1): without
+      // it a thin structure on a seam ends beyond the bound (kBoundedQefShare).
+      const float qefTolerance = options_.maxError > 0.0f
+                                     ? std::max(options_.qefTolerance, kBoundedQefShare * options_.maxError)
                                      : options_.qefTolerance;
       ev.split = ev.geometric = v.valid() && qefTolerance >= 0.0f && v.rmsError() > qefTolerance;
       if (!ev.split && v.valid() && options_.maxError > 0.0f) {

@@ -46,15 +46,16 @@ class SamplePhases;       // sample_phases.h
 /// 0.28 across a seam; with 1/16 voxel in hand one of 24 masks still ended 0.2503 away.
 inline constexpr float kErrorBoundMargin = 0.1f;
 
-/// With an error bound E, leaves that do not touch the meta-cell's boundary are held to the
-/// QEF tolerance or to this share of E, whichever is larger. The bound's check after
-/// contouring covers those leaves, so there the QEF criterion only saves check passes (each
-/// rebuilds the block). At 0.45 (E = 1), 256^3: salt 18 % and gyroid 27 % fewer triangles,
-/// blobs one pass (no QEF criterion there: 10 passes; a share of 0.6 took 3 at E = 0.5).
-/// Boundary leaves keep the tolerance itself: their seam is stitched later, unchecked, and
-/// without it a one-voxel-thin structure on a seam ended 1.11 voxels from regular mode's
-/// mesh at E = 1.
-inline constexpr float kBoundedInteriorQefShare = 0.45f;
+/// With an error bound E, leaves are held to the QEF tolerance or to this share of E,
+/// whichever is larger: the bound's check after contouring holds the leaves inside the
+/// meta-cell and the plane test (kPlaneShare) those on its boundary, so the QEF criterion
+/// only saves check passes (each rebuilds the block). At 0.45 (E = 1), 256^3: salt 18 % and
+/// gyroid 27 % fewer triangles inside the meta-cells, blobs one pass (no QEF criterion
+/// there: 10 passes; a share of 0.6 took 3 at E = 0.5); on the boundaries too, salt 6 % and
+/// gyroid 4 % fewer. The share holds with the QEF criterion turned off as well: with none
+/// (--qef-tolerance -1, before) a one-voxel-thin structure on a seam of the 256^3 blobs
+/// ended 1.11 voxels from regular mode's mesh at E = 1, which the plane test let pass.
+inline constexpr float kBoundedQefShare = 0.45f;
 
 /// The share of the error bound E the full-resolution surface may stray from a leaf's vertex
 /// plane (octree/surface_deviation.h) on the meta-cell's boundary and in leaves of two voxels:
@@ -86,7 +87,7 @@ struct OctreeOptions {
   /// distance (voxels) from its tangent planes; < 0 off. 0.15: on the interface
   /// distance field of a mask, as close to analytic solids as 0.25 was on
   /// topologyToLevelSet's noisier field, with as many vertices (bench/field_accuracy.py).
-  /// With maxError > 0, at least kBoundedInteriorQefShare * maxError inside the meta-cell.
+  /// With maxError > 0, at least kBoundedQefShare * maxError (also when < 0 here).
   float qefTolerance = 0.15f;
   /// Adaptive with sharp features: also split a surface leaf whose crossing normals are
   /// more than 60 degrees apart and whose dual vertex is at least this far (voxels) off

@@ -62,7 +62,7 @@ std::vector<Setting> distanceSettings(volume::DistanceFieldOptions& o, std::stri
 }
 
 // --qef-tolerance's help states the share.
-static_assert(octree::kBoundedInteriorQefShare == 0.45f);
+static_assert(octree::kBoundedQefShare == 0.45f);
 
 std::vector<Setting> extractSettings(ExtractChoices& c) {
   ExtractOptions& o = c.options;
@@ -106,7 +106,7 @@ std::vector<Setting> extractSettings(ExtractChoices& c) {
            &o.octree.finestCellSize},
           {"qef-tolerance",
            "adaptive: split cells whose QEF residual (RMS, voxels) exceeds this; < 0 off. With --max-error E, cells "
-           "inside a meta-cell (which the bound's check covers) use 0.45 E where that is larger",
+           "use 0.45 E where that is larger, also when this is off (the bound needs the criterion on seams)",
            &o.octree.qefTolerance},
           {"max-error",
            "adaptive: error bound in voxels: the mesh stays within this distance of the full-resolution surface "
