@@ -13,6 +13,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <mutex>
 #include <vector>
@@ -144,6 +145,13 @@ struct PlaneNearest {
   std::uint16_t d2;
 };
 constexpr std::uint16_t kFar = std::numeric_limits<std::uint16_t>::max();
+/// Pass 2 handles a row's eight voxels along z at once: their nearZ bytes, widened to
+/// 16-bit lanes of one SSE2 register (GCC's and Clang's vector extension). Squared
+/// distances stay below 127^2 + kMaxReach^2 < 2^15 (127: kNoSite); kFarLane stands for kFar.
+using RowBytes = std::int8_t __attribute__((vector_size(kLeaf)));
+using RowLanes = std::int16_t __attribute__((vector_size(2 * kLeaf)));
+constexpr std::int16_t kFarLane = std::numeric_limits<std::int16_t>::max();
+constexpr RowLanes kFarLanes = {kFarLane, kFarLane, kFarLane, kFarLane, kFarLane, kFarLane, kFarLane, kFarLane};
 
 /// A site's signed distance to the surface and the surface's outward unit normal:
 /// the tangent plane that gives the values of the voxels nearest to it. One
@@ -718,11 +726,16 @@ class ChunkBand {
 
   /// Pass 2: the nearest interface voxel in the voxel's yz-plane, on the slot's
   /// pass-2 rows. Rows are visited by increasing |dy| and the scan stops once
-  /// dy^2 alone is no closer: exact, and near the surface it stops after a row or two.
+  /// dy^2 alone is no closer for any of the row's eight voxels: exact, and near the
+  /// surface it stops after a row or two. The eight voxels along z are eight bytes of
+  /// nearZ, taken together in one register (per voxel: the same candidates in the
+  /// same order as a scan of its own, ties to the first).
   void nearestInPlane(int sx, int sy, int sz, Scratch& s) const {
     const int r = layout_.reach, n = layout_.n;
     const std::ptrdiff_t stride = n;  // one step along y
     const RowBits rows = slot(s, sx, sy, sz).rows2;
+    // Locals, not Scratch's vectors: the stores below would make the compiler
+    // reload the vectors' data pointers at every row.
     const std::int8_t* nearZ = s.nearZ.data();
     PlaneNearest* nearYZ = s.nearYZ.data();
     for (int i = 0; i < kLeaf; ++i)
@@ -730,25 +743,28 @@ class ChunkBand {
         if (!((rows >> (8 * i + j)) & 1u)) continue;
         const int x = sx * kLeaf + i, y = sy * kLeaf + j;
         const int down = std::min(r, y), up = std::min(r, n - 1 - y);
-        for (int k = 0; k < kLeaf; ++k) {
-          const std::size_t here = layout_.voxel(x, y, sz * kLeaf + k);
-          // Locals, not Scratch's vectors: the stores below would make the compiler
-          // reload the vectors' data pointers at every row.
-          const std::int8_t* column = nearZ + here;
-          int bestD2 = kFar, bestDz = 0, bestDy = 0;
-          auto consider = [&](int dy) {
-            const int dz = column[dy * stride];
-            if (dz == kNoSite) return;
-            const int d2 = dy * dy + dz * dz;
-            if (d2 < bestD2) bestD2 = d2, bestDz = dz, bestDy = dy;
-          };
-          for (int step = 0; step <= r && step * step < bestD2; ++step) {
-            if (step <= down) consider(-step);
-            if (step > 0 && step <= up) consider(step);
-          }
-          nearYZ[here] = {static_cast<std::int8_t>(bestDz), static_cast<std::int8_t>(bestDy),
-                          static_cast<std::uint16_t>(bestD2)};
+        const std::size_t here = layout_.voxel(x, y, sz * kLeaf);
+        RowLanes bestD2 = kFarLanes, bestDz{}, bestDy{};
+        auto consider = [&](int dy) {
+          RowBytes bytes;
+          std::memcpy(&bytes, nearZ + static_cast<std::ptrdiff_t>(here) + dy * stride, sizeof bytes);
+          const RowLanes dz = __builtin_convertvector(bytes, RowLanes);
+          const RowLanes d2 = dz * dz + static_cast<std::int16_t>(dy * dy);
+          const RowLanes better = (dz != kNoSite) & (d2 < bestD2);
+          bestD2 = (better & d2) | (~better & bestD2);
+          bestDz = (better & dz) | (~better & bestDz);
+          bestDy = (better & static_cast<std::int16_t>(dy)) | (~better & bestDy);
+        };
+        for (int step = 0; step <= r; ++step) {
+          bool closerPossible = false;
+          for (std::size_t k = 0; k < kLeaf; ++k) closerPossible |= step * step < bestD2[k];
+          if (!closerPossible) break;
+          if (step <= down) consider(-step);
+          if (step > 0 && step <= up) consider(step);
         }
+        for (std::size_t k = 0; k < kLeaf; ++k)
+          nearYZ[here + k] = {static_cast<std::int8_t>(bestDz[k]), static_cast<std::int8_t>(bestDy[k]),
+                              bestD2[k] == kFarLane ? kFar : static_cast<std::uint16_t>(bestD2[k])};
       }
   }
 
