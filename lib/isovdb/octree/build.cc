@@ -215,12 +215,11 @@ class Builder {
     } else if ((options_.qefTolerance >= 0.0f || options_.maxError > 0.0f) && ev.leaf.surface) {
       const cell::DualVertex v = cellDualVertex(samples_, ev.leaf.origin, size, ev.leaf.bipolarEdges(),
                                                 cell::dualVertexOptions(settings_), crossings_);
-      // With a bound, the bound's check after contouring holds the leaves inside the
-      // meta-cell and the plane test below those on its boundary (their seams are stitched
-      // later, unchecked): the QEF tolerance only saves passes and splits.
+      // With a bound, the leaves inside the meta-cell are held by the bound's check after
+      // contouring; those on its boundary (their seams are stitched later, unchecked) by the
+      // plane test below and by this QEF share, which a thin structure beside a seam needs
+      // (kBoundedQefShare): so the share applies with the criterion turned off too.
       const bool onBoundary = touchesMetaCellBoundary(ev.leaf.origin, size, samples_.size);
-      // The share applies with the criterion turned off too (--qef-tolerance -1): without
-      // it a thin structure on a seam ends beyond the bound (kBoundedQefShare).
       const float qefTolerance = options_.maxError > 0.0f
                                      ? std::max(options_.qefTolerance, kBoundedQefShare * options_.maxError)
                                      : options_.qefTolerance;

@@ -47,23 +47,24 @@ class SamplePhases;       // sample_phases.h
 inline constexpr float kErrorBoundMargin = 0.1f;
 
 /// With an error bound E, leaves are held to the QEF tolerance or to this share of E,
-/// whichever is larger: the bound's check after contouring holds the leaves inside the
-/// meta-cell and the plane test (kPlaneShare) those on its boundary, so the QEF criterion
-/// only saves check passes (each rebuilds the block). At 0.45 (E = 1), 256^3: salt 18 % and
-/// gyroid 27 % fewer triangles inside the meta-cells, blobs one pass (no QEF criterion
-/// there: 10 passes; a share of 0.6 took 3 at E = 0.5); on the boundaries too, salt 6 % and
-/// gyroid 4 % fewer. The share holds with the QEF criterion turned off as well: with none
-/// (--qef-tolerance -1, before) a one-voxel-thin structure on a seam of the 256^3 blobs
-/// ended 1.11 voxels from regular mode's mesh at E = 1, which the plane test let pass.
+/// whichever is larger. Inside the meta-cell the bound's check after contouring holds the
+/// leaves, so there the QEF criterion only saves check passes (each rebuilds the block); on
+/// its boundary the plane test (kPlaneShare) and this share hold them. At 0.45 (E = 1),
+/// 256^3: salt 18 % and gyroid 27 % fewer triangles inside the meta-cells, blobs one pass (no
+/// QEF criterion there: 10 passes; a share of 0.6 took 3 at E = 0.5); on the boundaries too,
+/// salt 6 % and gyroid 4 % fewer. The share holds with the QEF criterion turned off as well:
+/// with none (--qef-tolerance -1, before) a one-voxel-thin structure on a seam of the 256^3
+/// blobs ended 1.11 voxels from regular mode's mesh at E = 1, which the plane test let pass.
 inline constexpr float kBoundedQefShare = 0.45f;
 
 /// The share of the error bound E the full-resolution surface may stray from a leaf's vertex
 /// plane (octree/surface_deviation.h) on the meta-cell's boundary and in leaves of two voxels:
 /// the mesh around the vertex is not that plane but triangles to the neighbours' vertices,
 /// each off by as much in its own cell (a share of 1 let a one-voxel bump under a leaf end
-/// 1.27 voxels from the adaptive mesh at E = 1). There nothing else holds the bound: the
-/// seams are stitched unchecked, and the check's samples (regular mode's vertices, not its
-/// quads) missed a two-voxel leaf's surface by 0.30 voxel at E = 0.25 (96^3 blobs).
+/// 1.27 voxels from the adaptive mesh at E = 1). There the check does not hold the bound: the
+/// seams are stitched unchecked (beside kBoundedQefShare, this share holds them), and the
+/// check's samples (regular mode's vertices, not its quads) missed a two-voxel leaf's
+/// surface by 0.30 voxel at E = 0.25 (96^3 blobs).
 inline constexpr float kPlaneShare = 0.5f;
 
 /// The same share for leaves of four voxels or more inside the meta-cell, which the bound's
