@@ -90,6 +90,14 @@ mesh::Mesh meshOf(const volume::Volume& mask, ContourMethod method, int metaCell
   return extractMesh(mask, options);
 }
 
+/// Every guarantee but closedness (an open boundary's mesh ends on the box).
+void expectManifoldOrientedAndIntersectionFree(const mesh::MeshReport& report, const std::string& what) {
+  EXPECT_EQ(report.nonManifoldEdges, 0) << what;
+  EXPECT_EQ(report.nonManifoldVertices, 0) << what;
+  EXPECT_EQ(report.inconsistentlyOrientedEdges, 0) << what;
+  EXPECT_EQ(report.selfIntersectingPairs, 0) << what;
+}
+
 /// The smallest and largest coordinate of any vertex.
 std::array<float, 2> coordinateRange(const mesh::Mesh& mesh) {
   std::array<float, 2> range{0.0f, 0.0f};
@@ -110,12 +118,9 @@ TEST(MaskGuarantees, BothModesHaveEveryGuarantee) {
     const mesh::MeshReport regular = mesh::validateMesh(regularMesh);
     const mesh::MeshReport adaptive = mesh::validateMesh(meshOf(mask, ContourMethod::Adaptive, metaCellSize));
     for (const auto* report : {&regular, &adaptive}) {
-      const char* mode = report == &regular ? "regular" : "adaptive";
-      EXPECT_TRUE(report->closed) << mode << ", " << description;
-      EXPECT_EQ(report->nonManifoldEdges, 0) << mode << ", " << description;
-      EXPECT_EQ(report->nonManifoldVertices, 0) << mode << ", " << description;
-      EXPECT_EQ(report->inconsistentlyOrientedEdges, 0) << mode << ", " << description;
-      EXPECT_EQ(report->selfIntersectingPairs, 0) << mode << ", " << description;
+      const std::string what = std::string(report == &regular ? "regular" : "adaptive") + ", " + description;
+      EXPECT_TRUE(report->closed) << what;
+      expectManifoldOrientedAndIntersectionFree(*report, what);
     }
     EXPECT_EQ(regular.eulerCharacteristic, 2 * solid) << description;
     EXPECT_EQ(adaptive.eulerCharacteristic, 2 * solid) << description;
@@ -144,11 +149,8 @@ TEST(MaskGuarantees, OpenBoundaryMeshesAreManifoldInBothModes) {
     const volume::Volume mask = randomMask(seed, n, c.density, c.smooth);
     for (const ContourMethod method : {ContourMethod::Regular, ContourMethod::Adaptive}) {
       const mesh::MeshReport report = mesh::validateMesh(meshOf(mask, method, metaCellSize, BoundaryMode::Open));
-      const char* mode = method == ContourMethod::Regular ? "regular" : "adaptive";
-      EXPECT_EQ(report.nonManifoldEdges, 0) << mode << ", " << description;
-      EXPECT_EQ(report.nonManifoldVertices, 0) << mode << ", " << description;
-      EXPECT_EQ(report.inconsistentlyOrientedEdges, 0) << mode << ", " << description;
-      EXPECT_EQ(report.selfIntersectingPairs, 0) << mode << ", " << description;
+      expectManifoldOrientedAndIntersectionFree(
+          report, std::string(method == ContourMethod::Regular ? "regular" : "adaptive") + ", " + description);
       boundaries += report.boundaryEdges > 0;
     }
   }

@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "isovdb/mesh/union_find.h"
+
 namespace isovdb::mesh {
 
 namespace {
@@ -17,12 +19,6 @@ namespace {
 constexpr std::uint32_t kNoVertex = std::numeric_limits<std::uint32_t>::max();
 /// How far each copy of a pinched vertex moves towards its own fan (mesh units).
 constexpr float kPinchStep = 1e-3f;
-
-/// Union-find over a vertex's few incident triangles (positions in its incidence list).
-std::uint32_t rootOf(std::vector<std::uint32_t>& parent, std::uint32_t i) {
-  while (parent[i] != i) i = parent[i] = parent[parent[i]];
-  return i;
-}
 
 }  // namespace
 
@@ -45,7 +41,8 @@ std::size_t splitPinchedVertices(Mesh& mesh) {
   for (std::uint32_t v = 0; v < vertexCount; ++v) {
     const std::uint32_t begin = first[v], count = first[v + 1] - begin;
     if (count < 2) continue;
-    // Two triangles at v lie in one fan when they share an edge through v: another corner.
+    // Two triangles at v lie in one fan when they share an edge through v: another corner
+    // (a union-find over positions in v's incidence list).
     opposite.clear();
     for (std::uint32_t k = 0; k < count; ++k)
       for (const std::uint32_t w : mesh.triangles[incident[begin + k]])
@@ -55,17 +52,17 @@ std::size_t splitPinchedVertices(Mesh& mesh) {
     std::iota(parent.begin(), parent.end(), 0u);
     for (std::size_t i = 1; i < opposite.size(); ++i)
       if (opposite[i].first == opposite[i - 1].first)
-        parent[rootOf(parent, opposite[i].second)] = rootOf(parent, opposite[i - 1].second);
-    const std::uint32_t firstFan = rootOf(parent, 0);
+        parent[findRoot(parent, opposite[i].second)] = findRoot(parent, opposite[i - 1].second);
+    const std::uint32_t firstFan = findRoot(parent, 0);
     bool pinched = false;
-    for (std::uint32_t k = 1; k < count && !pinched; ++k) pinched = rootOf(parent, k) != firstFan;
+    for (std::uint32_t k = 1; k < count && !pinched; ++k) pinched = findRoot(parent, k) != firstFan;
     if (!pinched) continue;
     // The fan of the first triangle keeps v; each other fan, met in triangle order, gets a copy.
     fanVertex.assign(count, kNoVertex);
     fanVertex[firstFan] = v;
     const Vec3f at = mesh.positions[v];
     for (std::uint32_t k = 0; k < count; ++k) {
-      const std::uint32_t fan = rootOf(parent, k);
+      const std::uint32_t fan = findRoot(parent, k);
       if (fanVertex[fan] == kNoVertex) {
         fanVertex[fan] = static_cast<std::uint32_t>(mesh.positions.size());
         mesh.positions.push_back(at);
@@ -77,11 +74,11 @@ std::size_t splitPinchedVertices(Mesh& mesh) {
     }
     // Each copy steps towards its own fan, so the sheets no longer meet at one point.
     for (std::uint32_t k = 0; k < count; ++k) {
-      const std::uint32_t fan = rootOf(parent, k);
+      const std::uint32_t fan = findRoot(parent, k);
       if (fan != k) continue;  // once per fan, at its root
       Vec3f towards{0.0f, 0.0f, 0.0f};
       for (std::uint32_t j = 0; j < count; ++j) {
-        if (rootOf(parent, j) != fan) continue;
+        if (findRoot(parent, j) != fan) continue;
         for (const std::uint32_t w : mesh.triangles[incident[begin + j]])
           if (w != fanVertex[fan])
             for (int a = 0; a < 3; ++a) towards[a] += mesh.positions[w][a] - at[a];

@@ -22,6 +22,7 @@
 #include "isovdb/mesh/measures.h"
 #include "isovdb/mesh/mesh_checks.h"
 #include "isovdb/mesh/self_intersection.h"
+#include "isovdb/mesh/union_find.h"
 
 namespace isovdb::mesh {
 
@@ -120,15 +121,6 @@ struct Totals {
     return *this;
   }
 };
-
-/// Local union-find over the triangles of one umbrella.
-std::uint32_t findRoot(std::vector<std::uint32_t>& parent, std::uint32_t x) {
-  while (parent[x] != x) {
-    parent[x] = parent[parent[x]];
-    x = parent[x];
-  }
-  return x;
-}
 
 Totals analyseUmbrellas(const Stars& stars, std::vector<VertexFigures>& figures) {
   const std::size_t n = figures.size();
