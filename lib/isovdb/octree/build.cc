@@ -66,6 +66,37 @@ class KeyMap {
 
 constexpr std::int32_t kInternal = -1;
 
+/// One bit per node of each shallow depth, set once the node is internal (split): what
+/// balancing asks of every internal node's 7 neighbours on its side, millions of times in
+/// a surface-heavy block. Indexed by the key's Morton bits, so neighbours are near; the
+/// hash map's slots are not. Depths whose bits would take more than kMaxBytes (meta-cells
+/// of 1024 voxels and more) are left to the map.
+class InternalNodeBits {
+ public:
+  void mark(MortonKey key) {
+    const int depth = keyDepth(key);
+    if (depth > kMaxDepth) return;
+    if (bits_.size() <= static_cast<std::size_t>(depth)) bits_.resize(static_cast<std::size_t>(depth) + 1);
+    std::vector<std::uint64_t>& words = bits_[static_cast<std::size_t>(depth)];
+    if (words.empty()) words.assign((std::size_t{1} << (3 * depth)) / 64 + 1, 0);
+    const std::uint64_t i = key ^ (MortonKey{1} << (3 * depth));
+    words[i >> 6] |= std::uint64_t{1} << (i & 63);
+  }
+  /// True if `key` was marked (false may still be internal, at a depth left to the map).
+  bool holds(MortonKey key) const noexcept {
+    const auto depth = static_cast<std::size_t>(keyDepth(key));
+    if (depth >= bits_.size() || bits_[depth].empty()) return false;
+    const std::uint64_t i = key ^ (MortonKey{1} << (3 * depth));
+    return (bits_[depth][i >> 6] >> (i & 63)) & 1;
+  }
+
+ private:
+  static constexpr std::size_t kMaxBytes = std::size_t{1} << 21;
+  static constexpr int kMaxDepth = 8;  // 8^8 bits = 2 MiB = kMaxBytes
+  static_assert((std::size_t{1} << (3 * kMaxDepth)) / 8 == kMaxBytes);
+  std::vector<std::vector<std::uint64_t>> bits_;
+};
+
 /// Crossing normals farther apart than this (cosine: 60 degrees) mark a leaf on a sharp
 /// feature, whose vertex the sharp-feature gap checks (a smooth leaf's planes are close).
 constexpr float kFeatureCone = 0.5f;
@@ -231,7 +262,7 @@ class Builder {
                               : size <= 2 ? kPlaneShare * options_.maxError
                                           : kInteriorPlaneShare * options_.maxError;
         ev.split = ev.geometric = ev.bounded =
-            surfaceDeviation(samples_, phases_, ev.leaf.origin, size, x, settings_.iso) > allowed;
+            surfaceDeviatesBeyond(samples_, phases_, ev.leaf.origin, size, x, settings_.iso, allowed);
       }
       if (!ev.split && settings_.sharpFeatures && v.valid() && v.minNormalDot < kFeatureCone) {
         // A few tangent planes of a curved crease meet off it while fitting almost exactly.
@@ -309,7 +340,7 @@ class Builder {
       for (const Evaluation& ev : evals) {
         count(ev);
         if (ev.split) {
-          map_.assign(ev.leaf.key, kInternal);
+          markInternal(ev.leaf.key);
           for (int o = 0; o < 8; ++o) next.push_back(childKey(ev.leaf.key, o));
         } else {
           addLeaf(ev);
@@ -324,9 +355,9 @@ class Builder {
   /// a split are refined recursively. Returns nothing; records are appended.
   void splitLeaf(std::int32_t index, FaceLabeller& labeller) {
     std::vector<MortonKey> stack;
-    const MortonKey key = records_[static_cast<std::size_t>(index)].leaf.key;
+    const MortonKey key = records_[static_cast<std::size_t>(index)].key;
     alive_[static_cast<std::size_t>(index)] = false;
-    map_.assign(key, kInternal);
+    markInternal(key);
     for (int o = 7; o >= 0; --o) stack.push_back(childKey(key, o));
     while (!stack.empty()) {
       const MortonKey k = stack.back();
@@ -334,7 +365,7 @@ class Builder {
       const Evaluation ev = evaluateOnce(k, labeller);
       count(ev);
       if (ev.split) {
-        map_.assign(k, kInternal);
+        markInternal(k);
         for (int o = 7; o >= 0; --o) stack.push_back(childKey(k, o));
       } else {
         addLeaf(ev);
@@ -365,9 +396,8 @@ class Builder {
         std::vector<MortonKey> nodes;
         nodes.reserve(internal.size() + leavesAtDepth_[static_cast<std::size_t>(depth) + 1].size() / 8 + 1);
         for (const MortonKey k : internal) nodes.push_back(parentKey(k));
-        for (const std::int32_t li : leavesAtDepth_[static_cast<std::size_t>(depth) + 1])
-          if (alive_[static_cast<std::size_t>(li)])
-            nodes.push_back(parentKey(records_[static_cast<std::size_t>(li)].leaf.key));
+        for (const DepthLeaf& l : leavesAtDepth_[static_cast<std::size_t>(depth) + 1])
+          if (alive_[static_cast<std::size_t>(l.index)]) nodes.push_back(parentKey(l.key));
         std::sort(nodes.begin(), nodes.end());
         nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
         for (const MortonKey node : nodes) {
@@ -380,7 +410,7 @@ class Builder {
           for (int side = 1; side < 8; ++side) {
             const MortonKey target =
                 neighbourKey(parent, (side & 1) ? sx : 0, (side & 2) ? sy : 0, (side & 4) ? sz : 0);
-            if (target == kInvalidKey) continue;
+            if (target == kInvalidKey || internal_.holds(target)) continue;
             // Split the leaf that covers the target until the target is internal.
             for (;;) {
               MortonKey a = target;
@@ -400,10 +430,11 @@ class Builder {
       // Complex (or geometrically rough) leaves created by balancing get refined; their
       // children are deeper than the pass has looked, so only they call for another pass
       // (a balancing split makes nodes at depths the pass has yet to visit).
-      const std::size_t n = records_.size();
-      for (std::size_t i = 0; i < n; ++i)
-        if (alive_[i] && records_[i].split) {
-          splitLeaf(static_cast<std::int32_t>(i), labeller);
+      std::vector<std::int32_t> wanting;
+      wanting.swap(wantSplit_);
+      for (const std::int32_t i : wanting)
+        if (alive_[static_cast<std::size_t>(i)]) {
+          splitLeaf(i, labeller);
           changed = true;
         }
     }
@@ -411,9 +442,9 @@ class Builder {
 
   /// Splits a leaf into 8 child leaves (no recursion: balance keeps its own order).
   void splitLeafOnce(std::int32_t index, FaceLabeller& labeller) {
-    const MortonKey key = records_[static_cast<std::size_t>(index)].leaf.key;
+    const MortonKey key = records_[static_cast<std::size_t>(index)].key;
     alive_[static_cast<std::size_t>(index)] = false;
-    map_.assign(key, kInternal);
+    markInternal(key);
     for (int o = 0; o < 8; ++o) {
       const Evaluation ev = evaluateOnce(childKey(key, o), labeller);
       count(ev);
@@ -435,7 +466,7 @@ class Builder {
         for (int o = 7; o >= 0; --o) stack.push_back(childKey(key, o));
         continue;
       }
-      const OctreeLeaf& leaf = records_[static_cast<std::size_t>(*v)].leaf;
+      const OctreeLeaf& leaf = records_[static_cast<std::size_t>(*v)];
       leaves.push_back(leaf);
       stats_.unresolvedComplexLeaves += leaf.complex;
     }
@@ -444,11 +475,6 @@ class Builder {
   }
 
  private:
-  struct Record {
-    OctreeLeaf leaf;
-    bool split = false;  // evaluated as wanting a split (set for leaves created by balancing)
-  };
-
   /// Adaptive mode in the voxel reading (ContourSettings::adaptiveReadsVoxels): every node
   /// above the unit cells that holds a unit cell within one cell of one the two readings can differ on
   /// (cell::voxelReadingDiffers), by depth, (S >> (maxDepth - depth))^3 flags in x-fastest
@@ -488,11 +514,17 @@ class Builder {
     return flags[static_cast<std::size_t>((c.xyz[2] * n + c.xyz[1]) * n + c.xyz[0])];
   }
 
+  void markInternal(MortonKey key) {
+    map_.assign(key, kInternal);
+    internal_.mark(key);
+  }
+
   void addLeaf(const Evaluation& ev) {
     const auto index = static_cast<std::int32_t>(records_.size());
-    records_.push_back(Record{ev.leaf, ev.split});
+    records_.push_back(ev.leaf);
     alive_.push_back(true);
-    leavesAtDepth_[ev.leaf.depth].push_back(index);
+    leavesAtDepth_[ev.leaf.depth].push_back({ev.leaf.key, index});
+    if (ev.split) wantSplit_.push_back(index);
     map_.assign(ev.leaf.key, index);
   }
 
@@ -506,11 +538,19 @@ class Builder {
   BuildMemo::Impl* memo_;                  // optional: earlier builds' evaluations
   CellClassifyOptions classify_;
   OctreeBuildStats stats_;
-  std::vector<Record> records_;
+  std::vector<OctreeLeaf> records_;  // every leaf made, split ones too (alive_)
   std::vector<bool> alive_;
-  std::vector<std::vector<std::int32_t>> leavesAtDepth_;  // record indices (dead ones too) per depth
-  std::vector<std::vector<bool>> voxelSplits_;            // markVoxelReadingCells (empty: not that reading)
+  /// A leaf as balancing reads it: a record's key beside its index (reading the keys out of
+  /// the 48-byte records missed the cache: a tenth of balancing's own time).
+  struct DepthLeaf {
+    MortonKey key;
+    std::int32_t index;
+  };
+  std::vector<std::vector<DepthLeaf>> leavesAtDepth_;  // dead ones too, per depth
+  std::vector<std::int32_t> wantSplit_;                // records that want a split (made by balancing), in order
+  std::vector<std::vector<bool>> voxelSplits_;         // markVoxelReadingCells (empty: not that reading)
   KeyMap map_;
+  InternalNodeBits internal_;
 };
 
 int checkedDepth(int metaCellSize, int cellSize, const char* field) {
