@@ -5,15 +5,16 @@
 
 For each input and each bound E (voxels), two rows:
 - isovdb: `extract --method adaptive --max-error E`, its two-sided distance to
-  regular mode's mesh of the same field (`--method regular --topology mdmc`);
+  regular mode's mesh of the same field (`--method regular`, the mesh the bound is
+  stated against: on masks both modes read ambiguous cells as the voxel object);
 - OpenVDB: the largest `--method vdb --adaptivity A` (A on a grid: 0.01 steps
   up to 0.1, then 0.1 steps) whose mesh stays within E of its own adaptivity-0
   mesh, the usual way to pick A when a distance is what one wants (A = 0 when
   no coarser one does).
-The floor column is the distance between the two full-resolution readings
-(adaptive mode with 1-voxel leaves against regular mode's mesh): on masks,
-fans and dual contouring read a one-voxel step 0.3-0.5 voxel away from
-regular mode's quads, so a smaller E holds against the former only.
+The floor column is the distance between the two full-resolution meshes
+(adaptive mode with 1-voxel leaves against regular mode's mesh): where
+Ju-Udeshi fans replace regular mode's quads they differ by a few hundredths to
+tenths of a voxel.
 Distances are `isovdb compare`'s sampled two-sided Hausdorff distance (spacing
 0.25 voxel); each mesh goes through `isovdb check` for self-intersections.
 Both methods read the same distance field, so only the meshing differs.
@@ -93,7 +94,7 @@ def main():
             run([sample, name, "--size", args.size, "-o", path])
             source, unit = [path], 1.0
         mesh = lambda tag: os.path.join(work, f"{name}_{tag}.ply")  # noqa: E731
-        regular = extract(cli, source, ["--method", "regular", "--topology", "mdmc"], mesh("regular"))
+        regular = extract(cli, source, ["--method", "regular"], mesh("regular"))
         vdb0 = extract(cli, source, ["--method", "vdb", "--adaptivity", "0"], mesh("vdb0"))
         full = extract(cli, source, ["--method", "adaptive", "--max-cell-size", "1", "--max-error", "0"],
                        mesh("adaptive_full"))

@@ -44,5 +44,27 @@ TEST(Trilinear, DistanceToAPlanesLevelIsExact) {
   EXPECT_NEAR(distanceToLevel(samples, {2.0f, 3.25f, 0.5f}, -1.0f), (2.0f + 6.5f - 1.0f) / 3.0f + 1.0f, 1e-5f);
 }
 
+TEST(Trilinear, LevelWithinFindsACrossingWhereTheGradientVanishes) {
+  // A two-voxel-thin plate, samples z = 4 and 5 inside (value <= 0): between them the field
+  // is -0.5 throughout, its gradient zero, so the first-order distance is infinite.
+  const MetaCellSamples samples = makeMetaCellSamples(
+      8, {0, 0, 0}, [](int, int, int z) { return z == 4 || z == 5 ? -0.5f : z < 4 ? 3.5f - z : z - 5.5f; });
+  const Vec3f middle{3.0f, 2.0f, 4.5f};
+  EXPECT_TRUE(std::isinf(distanceToLevel(samples, middle, 0.0f)));
+  // The level crosses the unit edges z 3-4 and 5-6 at z = 3.5 and 5.5: a voxel away.
+  EXPECT_TRUE(levelWithin(samples, middle, 0.0f, 1.0f));
+  EXPECT_FALSE(levelWithin(samples, middle, 0.0f, 0.95f));
+  // The witnesses lie on the sample lines: off them the answer is an upper bound.
+  EXPECT_FALSE(levelWithin(samples, {3.3f, 2.4f, 4.5f}, 0.0f, 1.0f));
+  EXPECT_TRUE(levelWithin(samples, {3.3f, 2.4f, 4.5f}, 0.0f, 1.13f));  // sqrt(1.25) = 1.118
+  // Where the field has a gradient the first-order distance decides (a plane: exact).
+  const Vec3f above{3.3f, 2.6f, 7.25f};  // field 1.75 there, gradient 1
+  EXPECT_TRUE(levelWithin(samples, above, 0.0f, 1.75f));
+  EXPECT_FALSE(levelWithin(samples, above, 0.0f, 1.7f));
+  // A radius beyond the samples is searched within them; a NaN point has no witness.
+  EXPECT_TRUE(levelWithin(samples, middle, 0.0f, 1e30f));
+  EXPECT_FALSE(levelWithin(samples, {NAN, 1.0f, 1.0f}, 0.0f, 1.0f));
+}
+
 }  // namespace
 }  // namespace isovdb::cell

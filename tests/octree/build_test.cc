@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <random>
 
+#include "isovdb/cell/trilinear.h"
 #include "isovdb/errors.h"
 #include "isovdb/octree/inspect.h"
 #include "isovdb/octree/sample_phases.h"
@@ -132,6 +133,8 @@ TEST_F(SphereR40, AdaptiveIsBalancedAndThreeTimesSmaller) {
 // leaves of four voxels or more stray beyond kPlaneShare * E.
 TEST(BuildOctree, ErrorBoundHoldsEachLeafToItsPlaneShare) {
   constexpr float kMaxError = 1.0f;
+  // Two-voxel leaves inside the meta-cell take what the check allows, coarser ones all of E.
+  constexpr float kTwoVoxelShare = std::max(kPlaneShare * kMaxError, kMaxError - kTwoVoxelReserve);
   // A sphere, its upper half rippled by 0.7 voxel: smooth parts for coarse leaves, the
   // ripples' folds for two-voxel ones.
   const cell::MetaCellSamples samples = cell::makeMetaCellSamples(128, {0, 0, 0}, [](int x, int y, int z) {
@@ -140,24 +143,28 @@ TEST(BuildOctree, ErrorBoundHoldsEachLeafToItsPlaneShare) {
   });
   const LinearOctree tree = buildOctree(samples, kAdaptive, {.maxError = kMaxError});
   const SamplePhases phases(samples, 0.0f);
-  int looser = 0, measured = 0, twoVoxel = 0;
+  int looser = 0, measured = 0, twoVoxel = 0, looserTwoVoxel = 0;
   for (const OctreeLeaf& l : tree.leaves()) {
     if (!l.surface || l.vertexTruncation < 0.0f || l.size == 1) continue;
     ASSERT_FALSE(touchesMetaCellBoundary(l.origin, l.size, samples.size));
-    const float deviation =
-        surfaceDeviation(samples, phases, l.origin, l.size, {l.vertex[0], l.vertex[1], l.vertex[2]}, 0.0f);
+    const Vec3f vertex{l.vertex[0], l.vertex[1], l.vertex[2]};
+    const float deviation = surfaceDeviation(samples, phases, l.origin, l.size, vertex, 0.0f);
     ++measured;
+    // The vertex itself lies where the check after contouring finds it within the bound.
+    EXPECT_TRUE(cell::levelWithin(samples, vertex, 0.0f, kMaxError - kErrorBoundMargin))
+        << "leaf of " << l.size << " at " << l.origin[0] << "," << l.origin[1] << "," << l.origin[2];
     if (l.size == 2) {
       ++twoVoxel;
-      EXPECT_LE(deviation, kPlaneShare * kMaxError)
+      EXPECT_LE(deviation, kTwoVoxelShare)
           << "two-voxel leaf at " << l.origin[0] << "," << l.origin[1] << "," << l.origin[2];
+      looserTwoVoxel += deviation > kPlaneShare * kMaxError;
     } else {
       EXPECT_LE(deviation, kInteriorPlaneShare * kMaxError) << "leaf of " << l.size;
       looser += deviation > kPlaneShare * kMaxError;
     }
   }
-  std::printf("[ rippled sphere, E = 1 ] %d of %d leaves beyond the boundary's plane share, %d of two voxels\n", looser,
-              measured, twoVoxel);
+  std::printf("[ rippled sphere, E = 1 ] %d of %d leaves beyond the boundary's plane share, %d of %d two-voxel ones\n",
+              looser + looserTwoVoxel, measured, looserTwoVoxel, twoVoxel);
   EXPECT_GT(looser, 0);
   EXPECT_GT(twoVoxel, 0);
 }

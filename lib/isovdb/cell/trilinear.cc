@@ -3,6 +3,7 @@
 #include "isovdb/cell/trilinear.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -37,6 +38,37 @@ float distanceToLevel(const MetaCellSamples& samples, const Vec3f& point, float 
   const Vec3f& g = f.gradient;
   const float length = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
   return length > 0.0f ? std::abs(f.value) / length : std::numeric_limits<float>::infinity();
+}
+
+bool levelWithin(const MetaCellSamples& samples, const Vec3f& point, float iso, float radius) noexcept {
+  if (distanceToLevel(samples, point, iso) <= radius) return true;
+  if (!(radius >= 0.0f) || !std::isfinite(point[0] + point[1] + point[2])) return false;
+  const int lo = -samples.apron, hi = samples.size + samples.apron;
+  std::array<int, 3> from{}, to{};
+  for (int a = 0; a < 3; ++a) {  // clamped as floats: a huge radius must not overflow an int
+    from[a] =
+        static_cast<int>(std::clamp(std::floor(point[a] - radius), static_cast<float>(lo), static_cast<float>(hi)));
+    to[a] = static_cast<int>(std::clamp(std::floor(point[a] + radius), static_cast<float>(lo), static_cast<float>(hi)));
+  }
+  const float limit = radius * radius;
+  for (int k = from[2]; k <= to[2]; ++k)
+    for (int j = from[1]; j <= to[1]; ++j)
+      for (int i = from[0]; i <= to[0]; ++i) {
+        const float start = samples.value(i, j, k);
+        for (int axis = 0; axis < 3; ++axis) {
+          std::array<int, 3> end{i, j, k};
+          if (++end[axis] > hi) continue;
+          const float stop = samples.value(end[0], end[1], end[2]);
+          if (isInside(start, iso) == isInside(stop, iso)) continue;
+          const float a = start - iso, b = stop - iso;  // opposite signs (one may be 0): a != b
+          std::array<float, 3> c{static_cast<float>(i), static_cast<float>(j), static_cast<float>(k)};
+          c[axis] += a / (a - b);
+          float d = 0.0f;
+          for (int n = 0; n < 3; ++n) d += (c[n] - point[n]) * (c[n] - point[n]);
+          if (d <= limit) return true;
+        }
+      }
+  return false;
 }
 
 }  // namespace isovdb::cell

@@ -4,7 +4,7 @@
 /// @brief The field between samples: trilinear interpolation of a meta-cell's
 ///        samples, its gradient, and the first-order distance to a level that
 ///        adaptive mode's error bound measures (octree/surface_deviation.h,
-///        contour/error_bound.h).
+///        contour/error_bound.h), and a witness of the level near a point.
 #pragma once
 
 #include "isovdb/cell/meta_cell_samples.h"
@@ -27,5 +27,13 @@ TrilinearSample trilinearAt(const MetaCellSamples& samples, const Vec3f& point, 
 ///        distance itself on a distance field); +infinity where the gradient vanishes
 ///        off the level.
 float distanceToLevel(const MetaCellSamples& samples, const Vec3f& point, float iso) noexcept;
+
+/// @brief True if the level `iso` lies within `radius` of `point` (meta-cell offsets): by
+///        the first-order distance, or else shown by a witness, the crossing on a bipolar unit
+///        edge of the samples (apron included), where the trilinear field, linear along the
+///        edge, is exactly the level. Beside a thin structure the gradient nearly vanishes and
+///        the first-order distance says nothing: points half a voxel from the frog's bones read
+///        as up to 7 voxels away.
+bool levelWithin(const MetaCellSamples& samples, const Vec3f& point, float iso, float radius) noexcept;
 
 }  // namespace isovdb::cell

@@ -41,7 +41,7 @@ void addLeavesOfFarMeshPoints(const cell::MetaCellSamples& samples, const octree
                               std::vector<octree::MortonKey>& keys) {
   const auto check = [&](Vec3f p, std::vector<octree::MortonKey>& out) {
     for (int a = 0; a < 3; ++a) p[a] -= static_cast<float>(samples.origin[a]);
-    if (cell::distanceToLevel(samples, p, iso) <= maxError) return;
+    if (cell::levelWithin(samples, p, iso, maxError)) return;
     // Every leaf whose closed box holds p: a point on a face, an edge or a corner lies in several.
     constexpr float kNudge = 1e-3f;
     for (int corner = 0; corner < 8; ++corner) {

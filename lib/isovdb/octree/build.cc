@@ -14,6 +14,7 @@
 #include "isovdb/bit_count.h"
 #include "isovdb/cell/dmc_table.h"
 #include "isovdb/cell/dual_vertex.h"
+#include "isovdb/cell/trilinear.h"
 #include "isovdb/errors.h"
 #include "isovdb/octree/criteria.h"
 #include "isovdb/octree/surface_deviation.h"
@@ -258,11 +259,16 @@ class Builder {
       if (!ev.split && v.valid() && options_.maxError > 0.0f) {
         const Vec3f x = toMetaCellOffsets(v.position);
         // On the boundary the margin the check keeps is kept here.
-        const float allowed = onBoundary  ? kPlaneShare * options_.maxError - kErrorBoundMargin
-                              : size <= 2 ? kPlaneShare * options_.maxError
-                                          : kInteriorPlaneShare * options_.maxError;
+        const float reach = options_.maxError - kErrorBoundMargin;  // what the check allows
+        const float allowed = onBoundary ? kPlaneShare * options_.maxError - kErrorBoundMargin
+                              : size <= 2
+                                  ? std::max(kPlaneShare * options_.maxError, options_.maxError - kTwoVoxelReserve)
+                                  : kInteriorPlaneShare * options_.maxError;
         ev.split = ev.geometric = ev.bounded =
-            surfaceDeviatesBeyond(samples_, phases_, ev.leaf.origin, size, x, settings_.iso, allowed);
+            surfaceDeviatesBeyond(samples_, phases_, ev.leaf.origin, size, x, settings_.iso, allowed) ||
+            // The check measures every vertex of the mesh against the level as this does: a
+            // vertex it would find beyond costs a pass, which builds the whole block again.
+            !cell::levelWithin(samples_, x, settings_.iso, reach);
       }
       if (!ev.split && settings_.sharpFeatures && v.valid() && v.minNormalDot < kFeatureCone) {
         // A few tangent planes of a curved crease meet off it while fitting almost exactly.
