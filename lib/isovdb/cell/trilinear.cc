@@ -41,8 +41,9 @@ float distanceToLevel(const MetaCellSamples& samples, const Vec3f& point, float 
 }
 
 bool levelWithin(const MetaCellSamples& samples, const Vec3f& point, float iso, float radius) noexcept {
-  if (distanceToLevel(samples, point, iso) <= radius) return true;
+  // A point that is not finite has no cell to interpolate in (trilinearAt would convert NaN).
   if (!(radius >= 0.0f) || !std::isfinite(point[0] + point[1] + point[2])) return false;
+  if (distanceToLevel(samples, point, iso) <= radius) return true;
   const int lo = -samples.apron, hi = samples.size + samples.apron;
   std::array<int, 3> from{}, to{};
   for (int a = 0; a < 3; ++a) {  // clamped as floats: a huge radius must not overflow an int
