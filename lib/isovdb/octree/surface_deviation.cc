@@ -16,8 +16,6 @@ namespace isovdb::octree {
 namespace {
 
 /// Calls `visit(start, axis)` for every bipolar unit edge of the closed cell, reading
-/// the phase bits a row of x (up to 64 samples) at a time.
-/// Calls `visit(start, axis)` for every bipolar unit edge of the closed cell, reading
 /// the phase bits a row of x (up to 64 samples) at a time, until `visit` returns false.
 /// Returns false if it was stopped.
 template <class Visit>
