@@ -55,15 +55,11 @@ bool levelWithin(const MetaCellSamples& samples, const Vec3f& point, float iso, 
   for (int k = from[2]; k <= to[2]; ++k)
     for (int j = from[1]; j <= to[1]; ++j)
       for (int i = from[0]; i <= to[0]; ++i) {
-        const float start = samples.value(i, j, k);
+        const bool inside = isInside(samples.value(i, j, k), iso);
         for (int axis = 0; axis < 3; ++axis) {
           std::array<int, 3> end{i, j, k};
-          if (++end[axis] > hi) continue;
-          const float stop = samples.value(end[0], end[1], end[2]);
-          if (isInside(start, iso) == isInside(stop, iso)) continue;
-          const float a = start - iso, b = stop - iso;  // opposite signs (one may be 0): a != b
-          std::array<float, 3> c{static_cast<float>(i), static_cast<float>(j), static_cast<float>(k)};
-          c[axis] += a / (a - b);
+          if (++end[axis] > hi || isInside(samples.value(end[0], end[1], end[2]), iso) == inside) continue;
+          const Vec3f c = unitEdgeCrossing(samples, {i, j, k}, axis, iso).point;
           float d = 0.0f;
           for (int n = 0; n < 3; ++n) d += (c[n] - point[n]) * (c[n] - point[n]);
           if (d <= limit) return true;
