@@ -132,11 +132,10 @@ RowBits dilateRows(RowBits v, RowBits below, RowBits above, int axis) {
 
 enum SlotState : std::uint8_t { kEmpty = 0, kFull = 1, kMixed = 2 };
 enum SlotFlag : std::uint8_t {
-  kSites = 1,       ///< holds interface voxels within r of the chunk (their values computed)
-  kBand = 2,        ///< inner slot with a voxel within r (per axis) of a site: its leaf is computed
-  kMaskFilled = 4,  ///< mask bytes written
-  kPass1 = 8,       ///< has rows for pass 1 (rows1)
-  kPass2 = 16,      ///< has rows for pass 2 (rows2)
+  kSites = 1,  ///< holds interface voxels within r of the chunk (their values computed)
+  kBand = 2,   ///< inner slot with a voxel within r (per axis) of a site: its leaf is computed
+  kPass1 = 4,  ///< has rows for pass 1 (rows1)
+  kPass2 = 8,  ///< has rows for pass 2 (rows2)
 };
 
 /// Nearest site in the yz-plane of a voxel: offsets along z and y, squared distance.
@@ -172,6 +171,16 @@ struct Slot {
   std::array<std::int8_t, 3> siteHi{};
   RowBits rows2 = 0, rows1 = 0;  ///< rows of pass 2 (near dilated along x) and pass 1 (then along y)
   std::uint32_t planes = 0;      ///< kSites: its block of 512 site planes in Scratch::planes
+
+  /// The mask's row (i, j) along z as eight bits (bit k: voxel k, 1 inside), read from
+  /// the slot's state or its leaf: word i of a leaf's mask is its x = i layer, byte j of
+  /// it the row y = j.
+  std::uint32_t rowByte(int i, int j) const {
+    if (state != kMixed) return state == kFull ? 0xffu : 0u;
+    return static_cast<std::uint32_t>(leaf->getValueMask().getWord<std::uint64_t>(static_cast<openvdb::Index>(i)) >>
+                                      (8 * j)) &
+           0xffu;
+  }
 };
 
 /// One thread's buffers, reused from chunk to chunk. Region arrays are written
@@ -179,8 +188,6 @@ struct Slot {
 struct Scratch {
   explicit Scratch(const Layout& layout) {
     const std::size_t voxels = static_cast<std::size_t>(layout.n) * layout.n * layout.n;
-    mask.resize(voxels);
-    site.resize(voxels);
     planes.reserve(64 * static_cast<std::size_t>(kLeaf * kLeaf * kLeaf));
     nearZ.resize(voxels);
     nearYZ.resize(voxels);
@@ -192,8 +199,6 @@ struct Scratch {
     grown.resize(slotCount);
     rowBits.resize(slotCount);
   }
-  std::vector<std::uint8_t> mask;  ///< 1 inside
-  std::vector<std::uint8_t> site;  ///< 1 at an interface voxel within r of the chunk
   /// Sites' tangent planes, one block of 512 per site slot (in a leaf's voxel order):
   /// only slots with an interface take this memory.
   std::vector<SitePlane> planes;
@@ -276,7 +281,6 @@ class ChunkBand {
     bool anySite = false;
     forEachSlot(s, kSites, [&](int sx, int sy, int sz) { anySite = computeSites(sx, sy, sz, s) || anySite; });
     if (!anySite || !markBand(s)) return;
-    forEachSlot(s, kBand, [&](int sx, int sy, int sz) { fillMask(sx, sy, sz, s); });
     forEachSlot(s, kPass1, [&](int sx, int sy, int sz) { nearestAlongZ(sx, sy, sz, s); });
     forEachSlot(s, kPass2, [&](int sx, int sy, int sz) { nearestInPlane(sx, sy, sz, s); });
     forEachSlot(s, kBand, [&](int sx, int sy, int sz) {
@@ -326,8 +330,7 @@ class ChunkBand {
     return uniform.state == kFull ? bits != ~0ull : bits != 0;
   }
 
-  /// kSites on the slots within reach of the chunk that hold interface voxels,
-  /// and the mask bytes their blur windows read.
+  /// kSites on the slots within reach of the chunk that hold interface voxels.
   bool markSiteSlots(Scratch& s) const {
     const int reach = layout_.slotReach;
     const int begin = layout_.firstInnerSlot() - reach, end = layout_.endInnerSlot() + reach;
@@ -347,60 +350,31 @@ class ChunkBand {
           at.flags |= kSites;
           any = true;
         }
-    if (!any) return false;
-    // The blur window of a site slot reaches three voxels into its neighbours.
-    const int m = layout_.slots;
-    forEachSlot(s, kSites, [&](int sx, int sy, int sz) {
-      for (int dx = -1; dx <= 1; ++dx)
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dz = -1; dz <= 1; ++dz) {
-            const int x = sx + dx, y = sy + dy, z = sz + dz;
-            if (x >= 0 && y >= 0 && z >= 0 && x < m && y < m && z < m) fillMask(x, y, z, s);
-          }
-    });
-    return true;
-  }
-
-  void fillMask(int sx, int sy, int sz, Scratch& s) const {
-    Slot& at = slot(s, sx, sy, sz);
-    if (at.flags & kMaskFilled) return;
-    at.flags |= kMaskFilled;
-    const std::uint8_t uniform = at.state == kFull ? 1 : 0;
-    for (int i = 0; i < kLeaf; ++i)
-      for (int j = 0; j < kLeaf; ++j) {
-        std::uint8_t* row = &s.mask[layout_.voxel(sx * kLeaf + i, sy * kLeaf + j, sz * kLeaf)];
-        if (!at.leaf) {
-          std::fill_n(row, kLeaf, uniform);
-          continue;
-        }
-        // Word i of the leaf's mask is its x = i layer; byte j of it the row y = j.
-        const std::uint64_t word = at.leaf->getValueMask().getWord<std::uint64_t>(static_cast<openvdb::Index>(i));
-        const unsigned bits = static_cast<unsigned>(word >> (8 * j)) & 0xffu;
-        for (int k = 0; k < kLeaf; ++k) row[k] = static_cast<std::uint8_t>((bits >> k) & 1u);
-      }
+    return any;
   }
 
   bool computeSites(int sx, int sy, int sz, Scratch& s) const {
     constexpr int W = Scratch::kW, S = Scratch::kS, St = kSiteStencil;
-    const int n = layout_.n;
-    const int bx = sx * kLeaf - St, by = sy * kLeaf - St, bz = sz * kLeaf - St;
-    // The mask around the slot as one 14-bit row along z per (x, y): bit k is window
-    // voxel k, 1 inside (outside the region: 0, never used for a site).
-    const bool interior = bx >= 0 && by >= 0 && bz >= 0 && bx + W <= n && by + W <= n && bz + W <= n;
+    static_assert(St <= kLeaf && kLeaf + 2 * St <= 32);
+    const int m = layout_.slots;
+    // The mask around the slot as one 14-bit row along z per (x, y), from the rows of the
+    // slot and its neighbours below and above: bit k is window voxel k, 1 inside (outside
+    // the region: 0, never used for a site).
+    static const Slot kOutside{};
+    auto slotOrOutside = [&](int x, int y, int z) -> const Slot& {
+      return x >= 0 && y >= 0 && z >= 0 && x < m && y < m && z < m ? slot(s, x, y, z) : kOutside;
+    };
     for (int i = 0; i < W; ++i)
       for (int j = 0; j < W; ++j) {
-        const int x = bx + i, y = by + j;
-        std::uint32_t bits = 0;
-        if (interior) {
-          const std::uint8_t* bytes = &s.mask[layout_.voxel(x, y, bz)];
-          for (int k = 0; k < W; ++k) bits |= static_cast<std::uint32_t>(bytes[k]) << k;
-        } else if (x >= 0 && y >= 0 && x < n && y < n) {
-          for (int k = 0; k < W; ++k) {
-            const int z = bz + k;
-            if (z >= 0 && z < n && s.mask[layout_.voxel(x, y, z)]) bits |= 1u << k;
-          }
-        }
-        s.rows[static_cast<std::size_t>(i * W + j)] = bits;
+        // Window (i, j) is voxel (i - St, j - St) of the slot: slot offset and voxel in it.
+        const int ox = i < St ? -1 : i >= St + kLeaf ? 1 : 0, oy = j < St ? -1 : j >= St + kLeaf ? 1 : 0;
+        const int vi = i - St - kLeaf * ox, vj = j - St - kLeaf * oy;
+        const int x = sx + ox, y = sy + oy;
+        const std::uint32_t below = slotOrOutside(x, y, sz - 1).rowByte(vi, vj);
+        const std::uint32_t here = slotOrOutside(x, y, sz).rowByte(vi, vj);
+        const std::uint32_t above = slotOrOutside(x, y, sz + 1).rowByte(vi, vj);
+        s.rows[static_cast<std::size_t>(i * W + j)] =
+            (below >> (kLeaf - St)) | (here << St) | ((above & ((1u << St) - 1)) << (St + kLeaf));
       }
     auto rowAt = [&s](int i, int j) { return s.rows[static_cast<std::size_t>((i + St) * W + j + St)]; };
     // The slot's interface voxels within r of the chunk: a voxel whose row, or the row
@@ -413,8 +387,6 @@ class ChunkBand {
     for (int i = 0; i < kLeaf; ++i)
       for (int j = 0; j < kLeaf; ++j) {
         const int x = sx * kLeaf + i, y = sy * kLeaf + j;
-        std::uint8_t* site = &s.site[layout_.voxel(x, y, sz * kLeaf)];
-        std::fill_n(site, kLeaf, std::uint8_t{0});
         if (x < lo || y < lo || x >= hi || y >= hi) continue;
         const std::uint32_t c = rowAt(i, j);
         const std::uint32_t differs = (c ^ (c << 1)) | (c ^ (c >> 1)) | (c ^ rowAt(i - 1, j)) | (c ^ rowAt(i + 1, j)) |
@@ -426,7 +398,6 @@ class ChunkBand {
         }
         if (!inner) continue;
         at.siteBits[static_cast<std::size_t>(i)] |= static_cast<std::uint64_t>(inner) << (8 * j);
-        for (int k = 0; k < kLeaf; ++k) site[k] = static_cast<std::uint8_t>((inner >> k) & 1u);
         at.siteLo[0] = static_cast<std::int8_t>(std::min<int>(at.siteLo[0], i));
         at.siteHi[0] = static_cast<std::int8_t>(std::max<int>(at.siteHi[0], i));
         at.siteLo[1] = static_cast<std::int8_t>(std::min<int>(at.siteLo[1], j));
@@ -473,8 +444,7 @@ class ChunkBand {
     for (int i = at.siteLo[0]; i <= at.siteHi[0]; ++i)
       for (int j = at.siteLo[1]; j <= at.siteHi[1]; ++j)
         for (int k = at.siteLo[2]; k <= at.siteHi[2]; ++k) {
-          const std::size_t v = layout_.voxel(sx * kLeaf + i, sy * kLeaf + j, sz * kLeaf + k);
-          if (!s.site[v]) continue;
+          if (!((at.siteBits[static_cast<std::size_t>(i)] >> (8 * j + k)) & 1u)) continue;
           const bool inside = maskAt(i, j, k);
           const float here = blurredAt(i, j, k);
           const float gx = 0.5f * (blurredAt(i + 1, j, k) - blurredAt(i - 1, j, k));
@@ -667,16 +637,16 @@ class ChunkBand {
     for (int i = 0; i < kLeaf; ++i)
       for (int j = 0; j < kLeaf; ++j) {
         if (!((rows >> (8 * i + j)) & 1u)) continue;
-        const int x = sx * kLeaf + i, y = sy * kLeaf + j;
         // Row entry t is voxel z0 - r + t; slot d along z starts at entry 8 (d + reach) - (8 reach - r).
         for (int d = -reach; d <= reach; ++d) {
           const int first = kLeaf * (d + reach) - (kLeaf * reach - r);
           const int from = std::max(first, 0), to = std::min(first + kLeaf, length);
           if (from >= to) continue;
-          if (siteSlot[static_cast<std::size_t>(d + reach)])
-            std::copy_n(&s.site[layout_.voxel(x, y, z0 - r + from)], to - from, &row[static_cast<std::size_t>(from)]);
-          else
-            std::fill_n(&row[static_cast<std::size_t>(from)], to - from, std::uint8_t{0});
+          const Slot* sites = siteSlot[static_cast<std::size_t>(d + reach)] ? &slot(s, sx, sy, sz + d) : nullptr;
+          const unsigned bits =
+              sites ? static_cast<unsigned>(sites->siteBits[static_cast<std::size_t>(i)] >> (8 * j)) & 0xffu : 0u;
+          for (int t = from; t < to; ++t)
+            row[static_cast<std::size_t>(t)] = static_cast<std::uint8_t>((bits >> (t - first)) & 1u);
         }
         int last = -4 * kMaxReach;
         for (int t = 0; t < length; ++t)
@@ -684,7 +654,7 @@ class ChunkBand {
         last = 4 * kMaxReach;
         for (int t = length - 1; t >= 0; --t)
           above[static_cast<std::size_t>(t)] = last = row[static_cast<std::size_t>(t)] ? t : last;
-        std::int8_t* out = &s.nearZ[layout_.voxel(x, y, z0)];
+        std::int8_t* out = &s.nearZ[layout_.voxel(sx * kLeaf + i, sy * kLeaf + j, z0)];
         for (int k = 0; k < kLeaf; ++k) {
           const int t = k + r;
           out[k] = nearerOffset(t - below[static_cast<std::size_t>(t)], above[static_cast<std::size_t>(t)] - t, r);
@@ -781,17 +751,17 @@ class ChunkBand {
     float* values = leaf->buffer().data();
     // Locals, not Scratch's vectors: the stores to `values` would make the compiler
     // reload the vectors' data pointers at every voxel.
-    const std::uint8_t* mask = s.mask.data();
     const PlaneNearest* nearYZ = s.nearYZ.data();
     bool anyActive = false;
     for (int i = 0; i < kLeaf; ++i)
       for (int j = 0; j < kLeaf; ++j) {
         const unsigned near = static_cast<unsigned>(at.nearBits[static_cast<std::size_t>(i)] >> (8 * j)) & 0xffu;
+        const std::uint32_t insideRow = at.rowByte(i, j);
         const int x = sx * kLeaf + i, y = sy * kLeaf + j;
         const int down = std::min(r, x), up = std::min(r, n - 1 - x);
         for (int k = 0; k < kLeaf; ++k) {
           const std::size_t here = layout_.voxel(x, y, sz * kLeaf + k);
-          const bool inside = mask[here] != 0;
+          const bool inside = (insideRow >> k) & 1u;
           const int index = (i << 6) | (j << 3) | k;
           values[index] = inside ? -h : h;
           if (!((near >> k) & 1u)) continue;

@@ -21,7 +21,8 @@
 /// is computed in independent chunks with an apron of that width: the result is
 /// the same bit for bit for every chunk size and thread count, the work follows
 /// the interface (chunks without one cost a few probes) and the memory is one
-/// chunk's buffers per thread, about 22 bytes per voxel of (chunk + 2 apron)^3.
+/// chunk's buffers per thread, about 8 bytes per voxel of (chunk + 2 apron)^3 (the
+/// mask itself is read from its leaves' bits, never copied).
 #pragma once
 
 #include <cstddef>
