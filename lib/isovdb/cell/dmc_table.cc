@@ -8,6 +8,7 @@
 
 #include "isovdb/bit_count.h"
 #include "isovdb/cell/cell_geometry.h"
+#include "isovdb/union_find.h"
 
 namespace isovdb::cell {
 
@@ -27,11 +28,6 @@ std::array<int, 4> faceCorners(int face) noexcept {
   for (int c = 0; c < 8; ++c)
     if (((c >> axis) & 1) == side) out[static_cast<std::size_t>(n++)] = c;
   return out;
-}
-
-int findRoot(std::array<int, 12>& parent, int e) noexcept {
-  while (parent[static_cast<std::size_t>(e)] != e) e = parent[static_cast<std::size_t>(e)];
-  return e;
 }
 
 void unite(std::array<int, 12>& parent, int a, int b) noexcept {

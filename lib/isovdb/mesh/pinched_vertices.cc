@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "isovdb/mesh/union_find.h"
+#include "isovdb/union_find.h"
 
 namespace isovdb::mesh {
 

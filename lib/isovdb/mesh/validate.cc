@@ -22,7 +22,7 @@
 #include "isovdb/mesh/measures.h"
 #include "isovdb/mesh/mesh_checks.h"
 #include "isovdb/mesh/self_intersection.h"
-#include "isovdb/mesh/union_find.h"
+#include "isovdb/union_find.h"
 
 namespace isovdb::mesh {
 

@@ -5,18 +5,11 @@
 #include <algorithm>
 #include <cstddef>
 
+#include "isovdb/union_find.h"
+
 namespace isovdb::octree {
 
 namespace {
-
-int findRoot(std::vector<std::int32_t>& parent, std::int32_t a) {
-  while (parent[static_cast<std::size_t>(a)] != a) {
-    const std::int32_t up = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(a)])];
-    parent[static_cast<std::size_t>(a)] = up;  // path halving
-    a = up;
-  }
-  return a;
-}
 
 /// The samples of `phase` (one row's bits) joined along the row to `seeds`.
 std::uint64_t spreadAlongRow(std::uint64_t seeds, std::uint64_t phase) noexcept {

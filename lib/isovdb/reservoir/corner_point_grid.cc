@@ -13,6 +13,7 @@
 
 #include "isovdb/errors.h"
 #include "isovdb/huge_pages.h"
+#include "isovdb/union_find.h"
 
 namespace isovdb::reservoir {
 namespace {
@@ -54,10 +55,7 @@ double cornerJacobian(const std::array<Vec3d, 8>& p, int c) {
 void mergePinchedPillarPoints(CornerPointGrid& grid, double tolerance) {
   const std::size_t cells = grid.cellCount(), points = grid.points.size();
   std::vector<std::uint32_t> parent;
-  const auto root = [&](std::uint32_t p) {
-    while (parent[p] != p) p = parent[p] = parent[parent[p]];
-    return p;
-  };
+  const auto root = [&](std::uint32_t p) { return findRoot(parent, p); };
   for (std::size_t cell = 0; cell < cells; ++cell)
     for (int c = 0; c < 4; ++c) {
       const std::uint32_t a = grid.pointIds[cell][static_cast<std::size_t>(c)];

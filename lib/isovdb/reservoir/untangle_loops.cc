@@ -12,6 +12,7 @@
 
 #include "isovdb/mesh/self_intersection.h"
 #include "isovdb/mesh/triangle_grid.h"
+#include "isovdb/union_find.h"
 
 namespace isovdb::reservoir {
 namespace {
@@ -77,10 +78,7 @@ std::optional<std::vector<std::uint32_t>> boundaryCycle(const std::vector<Triang
 std::vector<std::vector<std::uint32_t>> loopsOf(const mesh::Mesh& m, const std::vector<std::uint32_t>& triangles) {
   std::vector<std::size_t> parent(triangles.size());
   std::iota(parent.begin(), parent.end(), 0);
-  const auto root = [&](std::size_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  const auto root = [&](std::size_t x) { return findRoot(parent, x); };
   for (std::size_t i = 0; i < triangles.size(); ++i)
     for (std::size_t j = i + 1; j < triangles.size(); ++j) {
       const Triangle& a = m.triangles[triangles[i]];
