@@ -58,11 +58,11 @@ py::array withSupportedDtype(const py::array& array) {
   const char kind = array.dtype().kind();
   const auto size = array.dtype().itemsize();
   if ((kind == 'i' || kind == 'u') && size == 8) {
-    const double lo = array.attr("min")().cast<double>(), hi = array.attr("max")().cast<double>();
-    if (lo < -2147483648.0 || hi > 2147483647.0)
+    // numpy's own scalars print the values: a uint64 beyond int64 is no long long.
+    const py::object lo = array.attr("min")(), hi = array.attr("max")();
+    if (lo.cast<double>() < -2147483648.0 || hi.cast<double>() > 2147483647.0)
       throw py::value_error("from_numpy: " + py::str(static_cast<py::handle>(array.dtype())).cast<std::string>() +
-                            " values in [" + std::to_string(static_cast<long long>(lo)) + ", " +
-                            std::to_string(static_cast<long long>(hi)) +
+                            " values in [" + py::str(lo).cast<std::string>() + ", " + py::str(hi).cast<std::string>() +
                             "] do not fit in int32; pass a.astype(numpy.float64) to read them as a scalar field");
     return array.attr("astype")("int32");
   }

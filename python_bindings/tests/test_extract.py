@@ -361,6 +361,11 @@ def test_max_error_bounds_how_far_adaptive_vertices_stray_from_a_smooth_surface(
     assert counts[0] < counts[1] < counts[2]
     with pytest.raises(TypeError):
         isovdb.extract(field, method="adaptive", iso=0.5, max_error="tight")
+    # NaN compares false everywhere: it would have turned the bound off without a word.
+    with pytest.raises(ValueError, match="max_error: expected a number of voxels"):
+        isovdb.extract(field, method="adaptive", iso=0.5, max_error=float("nan"))
+    with pytest.raises(ValueError, match="qef_tolerance: expected a number of voxels"):
+        isovdb.extract(field, method="adaptive", iso=0.5, qef_tolerance=float("nan"))
 
 
 @pytest.mark.parametrize("method", ["regular", "adaptive"])

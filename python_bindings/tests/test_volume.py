@@ -95,6 +95,14 @@ def test_64_bit_labels_are_read_when_they_fit_in_int32(dtype, sphere_mask):
         isovdb.from_numpy(np.full((3, 3, 3), 2**40, np.int64))
 
 
+def test_64_bit_values_beyond_int32_are_named_as_they_are():
+    # A uint64 beyond int64 (negative numbers wrapped by astype) printed as -9223372036854775808 before.
+    wrapped = np.zeros((3, 3, 3), np.uint64)
+    wrapped[0, 0, 0] = np.uint64(2**64 - 5)
+    with pytest.raises(ValueError, match=r"values in \[0, 18446744073709551611\] do not fit in int32"):
+        isovdb.from_numpy(wrapped)
+
+
 def test_float16_is_read_as_float32():
     field = np.linspace(-1, 1, 4 * 5 * 6).reshape(4, 5, 6)
     half = isovdb.from_numpy(field.astype(np.float16))

@@ -75,6 +75,14 @@ TEST_F(CliBadInput, ZeroNegativeAndOverflowingDimensions) {
   }
 }
 
+TEST_F(CliBadInput, NanErrorBoundOrQefTolerance) {
+  // NaN compares false everywhere: it would have turned the bound (or the criterion) off quietly.
+  writeFile(in / "v.raw", std::string(1000, '\1'));
+  const std::string extract = "extract " + (in / "v.raw").string() + " --dims 10,10,10 --type uint8 -o " + outPly();
+  expectCleanFailure(runCli(extract + " --max-error nan"), {"--max-error: expected a number of voxels", "nan"}, out);
+  expectCleanFailure(runCli(extract + " --qef-tolerance nan"), {"--qef-tolerance: expected a number of voxels"}, out);
+}
+
 TEST_F(CliBadInput, UnknownSampleType) {
   writeFile(in / "v.raw", std::string(1000, '\1'));
   expectCleanFailure(runCli("extract " + (in / "v.raw").string() + " --dims 10,10,10 --type complex64 -o " + outPly()),

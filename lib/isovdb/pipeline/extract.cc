@@ -179,6 +179,11 @@ void extractInto(volume::Volume volume, const ExtractOptions& options, mesh::Mes
     throw InputError("'" + volume.name() + "': a part of a field's run needs the whole field's value range");
   if (options.threads < 0)
     throw InputError("--threads: expected 0 (every core) or more, got " + std::to_string(options.threads));
+  // NaN would compare false everywhere and quietly turn the bound (or the criterion) off.
+  if (std::isnan(options.octree.maxError))
+    throw InputError("--max-error: expected a number of voxels (<= 0: no bound), got nan");
+  if (std::isnan(options.octree.qefTolerance))
+    throw InputError("--qef-tolerance: expected a number of voxels (< 0: off), got nan");
   std::optional<tbb::global_control> threads;
   if (options.threads > 0) threads.emplace(tbb::global_control::max_allowed_parallelism, options.threads);
   // The field's range is walked once (a tree walk): the default iso and its check both read it.
