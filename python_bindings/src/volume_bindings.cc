@@ -78,9 +78,8 @@ std::string shapeText(const py::array& array) {
 /// from_numpy(), and a slab of a larger array for a distributed run's task: `placement`
 /// None, or (first, total): the array holds grid z slices [first, first + its depth) of a
 /// volume of `total` slices (the others read as holes).
-PyVolume fromNumpyPlaced(const py::object& object, const py::object& threshold, py::object voxelSize,
-                         const py::object& origin, const py::object& spacingKeyword, const py::object& kindKeyword,
-                         const py::object& placement) {
+PyVolume fromNumpyPlaced(py::object object, const py::object& threshold, py::object voxelSize, const py::object& origin,
+                         const py::object& spacingKeyword, const py::object& kindKeyword, const py::object& placement) {
   const std::string kind = kindKeyword.is_none() ? "" : py::str(kindKeyword).cast<std::string>();
   if (!kindKeyword.is_none() &&
       (!py::isinstance<py::str>(kindKeyword) || (kind != "mask" && kind != "field" && kind != "distance")))
@@ -88,11 +87,16 @@ PyVolume fromNumpyPlaced(const py::object& object, const py::object& threshold, 
                           py::repr(kindKeyword).cast<std::string>());
   if ((kind == "field" || kind == "distance") && !threshold.is_none())
     throw py::value_error("from_numpy: kind='" + kind + "' keeps the values; a threshold makes a mask (kind='mask')");
+  // Messages name the keyword the caller used.
+  const std::string sizeKeyword = spacingKeyword.is_none() ? "voxel_size" : "spacing";
   if (!spacingKeyword.is_none()) {
     if (!(py::isinstance<py::float_>(voxelSize) && voxelSize.cast<double>() == 1.0))
       throw py::value_error("from_numpy: give voxel_size= or spacing= (the same keyword), not both");
     voxelSize = spacingKeyword;
   }
+  // Nested lists and tuples, as numpy.asarray reads them (scikit-image takes any array_like).
+  if (py::isinstance<py::list>(object) || py::isinstance<py::tuple>(object))
+    object = py::module_::import("numpy").attr("asarray")(object);
   if (!py::isinstance<py::array>(object))
     throw py::value_error("from_numpy: expected a numpy array, got " +
                           py::str(py::type::handle_of(object).attr("__name__")).cast<std::string>());
@@ -116,9 +120,9 @@ PyVolume fromNumpyPlaced(const py::object& object, const py::object& threshold, 
   if (!(array.flags() & py::array::c_style) && !xFastest)
     array = py::module_::import("numpy").attr("ascontiguousarray")(array);
   const bool bigEndian = array.dtype().attr("byteorder").cast<std::string>() == ">";
-  const std::array<double, 3> spacing = threeDoubles(voxelSize, "voxel_size");
+  const std::array<double, 3> spacing = threeDoubles(voxelSize, sizeKeyword.c_str());
   for (double s : spacing)
-    if (!(s > 0) || !std::isfinite(s)) throw py::value_error("voxel_size: expected finite values > 0");
+    if (!(s > 0) || !std::isfinite(s)) throw py::value_error(sizeKeyword + ": expected finite values > 0");
   const std::array<double, 3> position = threeDoubles(origin, "origin");
   const bool scalar = kind == "field" || (kind.empty() && threshold.is_none() && io::isFloatingPoint(type));
   volume::MaskRule rule;
@@ -442,7 +446,7 @@ array: dtype bool, (u)int8, (u)int16, (u)int32, float32 or float64 (int64/uint64
   fit in int32, and float16, are converted), every value finite. A C-ordered array or a
   Fortran-ordered one (a [z, y, x] stack's transpose, stack.T: x fastest like a raw file) is
   read in place, without a copy, by the same streaming ingest as a file; other layouts (a
-  strided slice) are copied first.
+  strided slice) are copied first. Nested lists or tuples are read through numpy.asarray.
 threshold: None: integer and bool arrays become a mask (inside = value > 0), float arrays
   a scalar field (contour it with extract(iso=...)). A number: a mask, inside = value > threshold.
 kind: None (by dtype and threshold, as above), 'mask' (inside = value > threshold, default 0,
@@ -454,7 +458,7 @@ voxel_size: world units per voxel, one number or (sx, sy, sz); spacing= is the s
   (read_volume's name), give one of them.
 origin: world position of voxel [0, 0, 0].
 
-Raises ValueError for a non-array, an array that is not 3-D, empty, of another dtype, or
+Raises ValueError for a non-array (nor lists), an array that is not 3-D, empty, of another dtype, or
 holding NaN/inf.)doc";
 
   m.def("read_volume", &readVolume, py::arg("path"), py::kw_only(), py::arg("dims") = py::none(),

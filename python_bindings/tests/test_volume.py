@@ -144,6 +144,19 @@ def test_spacing_is_voxel_size_under_read_volumes_name(sphere_mask):
     assert isovdb.from_numpy(sphere_mask, spacing=(1, 2, 3)).spacing == (1, 2, 3)
     with pytest.raises(ValueError, match="not both"):
         isovdb.from_numpy(sphere_mask, voxel_size=2.0, spacing=(1, 2, 3))
+    # Errors name the keyword given (extract takes spacing= only).
+    with pytest.raises(ValueError, match="^spacing: expected finite values > 0"):
+        isovdb.extract(sphere_mask, spacing=(1, -1, 1))
+    with pytest.raises(ValueError, match="^voxel_size: expected finite values > 0"):
+        isovdb.from_numpy(sphere_mask, voxel_size=0.0)
+
+
+def test_nested_lists_are_read_as_numpy_reads_them(sphere_mask):
+    # scikit-image's marching_cubes takes any array_like.
+    from_list = isovdb.extract(sphere_mask.tolist())
+    assert np.array_equal(from_list.vertices, isovdb.extract(sphere_mask).vertices)
+    with pytest.raises(ValueError, match="expected a numpy array, got dict"):
+        isovdb.from_numpy({})
 
 
 @pytest.mark.parametrize("shape", [(0, 4, 4), (4, 0, 4), (4, 4, 0)])
@@ -164,7 +177,7 @@ def test_non_finite_samples_are_rejected(bad):
 
 def test_non_arrays_and_bad_voxel_sizes_are_rejected(sphere_mask):
     with pytest.raises(ValueError, match="expected a numpy array"):
-        isovdb.from_numpy([[[1]]])
+        isovdb.from_numpy("[[[1]]]")
     with pytest.raises(ValueError, match="voxel_size"):
         isovdb.from_numpy(sphere_mask, voxel_size=0)
     with pytest.raises(ValueError, match="voxel_size"):
