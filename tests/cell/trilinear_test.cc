@@ -8,6 +8,8 @@
 #include <cmath>
 #include <random>
 
+#include "isovdb/cell/dual_vertex.h"
+
 namespace isovdb::cell {
 namespace {
 
@@ -44,26 +46,37 @@ TEST(Trilinear, DistanceToAPlanesLevelIsExact) {
   EXPECT_NEAR(distanceToLevel(samples, {2.0f, 3.25f, 0.5f}, -1.0f), (2.0f + 6.5f - 1.0f) / 3.0f + 1.0f, 1e-5f);
 }
 
-TEST(Trilinear, LevelWithinFindsACrossingWhereTheGradientVanishes) {
+TEST(Trilinear, LevelWithinTrustsTheFirstOrderDistanceInCrossedCellsAndElseARegularVertex) {
   // A two-voxel-thin plate, samples z = 4 and 5 inside (value <= 0): between them the field
   // is -0.5 throughout, its gradient zero, so the first-order distance is infinite.
-  const MetaCellSamples samples = makeMetaCellSamples(
-      8, {0, 0, 0}, [](int, int, int z) { return z == 4 || z == 5 ? -0.5f : z < 4 ? 3.5f - z : z - 5.5f; });
-  const Vec3f middle{3.0f, 2.0f, 4.5f};
+  const MetaCellSamples samples = makeMetaCellSamples(8, {0, 0, 0}, [](int, int, int z) {
+    return z == 4 || z == 5 ? -0.5f : z < 4 ? 3.5f - z : z - 5.5f;
+  });
+  const DualVertexOptions iso0{};
+  const Vec3f middle{3.5f, 2.5f, 4.5f};
   EXPECT_TRUE(std::isinf(distanceToLevel(samples, middle, 0.0f)));
-  // The level crosses the unit edges z 3-4 and 5-6 at z = 3.5 and 5.5: a voxel away.
-  EXPECT_TRUE(levelWithin(samples, middle, 0.0f, 1.0f));
-  EXPECT_FALSE(levelWithin(samples, middle, 0.0f, 0.95f));
-  // The witnesses lie on the sample lines: off them the answer is an upper bound.
-  EXPECT_FALSE(levelWithin(samples, {3.3f, 2.4f, 4.5f}, 0.0f, 1.0f));
-  EXPECT_TRUE(levelWithin(samples, {3.3f, 2.4f, 4.5f}, 0.0f, 1.13f));  // sqrt(1.25) = 1.118
-  // Where the field has a gradient the first-order distance decides (a plane: exact).
-  const Vec3f above{3.3f, 2.6f, 7.25f};  // field 1.75 there, gradient 1
-  EXPECT_TRUE(levelWithin(samples, above, 0.0f, 1.75f));
-  EXPECT_FALSE(levelWithin(samples, above, 0.0f, 1.7f));
+  // The level crosses the unit edges z 3-4 and 5-6 at z = 3.5 and 5.5, and full-resolution
+  // contouring puts each unit cell's vertex at the middle of its crossings, (i + 0.5, j + 0.5,
+  // 3.5) below the plate's middle: a voxel away.
+  EXPECT_TRUE(levelWithin(samples, middle, iso0, 1.0f));
+  EXPECT_FALSE(levelWithin(samples, middle, iso0, 0.95f));
+  // The witnesses are those vertices, points of regular mode's mesh, not the crossings (the
+  // nearest crossing lies sqrt(1.25) = 1.118 from this point, the nearest vertex sqrt(1.05) = 1.025).
+  EXPECT_FALSE(levelWithin(samples, {3.3f, 2.4f, 4.5f}, iso0, 1.02f));
+  EXPECT_TRUE(levelWithin(samples, {3.3f, 2.4f, 4.5f}, iso0, 1.03f));
+  // Inside a cell the level crosses the first-order distance decides (a plane: exact).
+  const Vec3f crossed{3.3f, 2.6f, 5.75f};  // field 0.25 there, gradient 1; the vertex 0.335 away
+  EXPECT_TRUE(levelWithin(samples, crossed, iso0, 0.25f));
+  EXPECT_FALSE(levelWithin(samples, crossed, iso0, 0.2f));
+  // Outside such cells it extrapolates, and only a vertex counts: here the first-order
+  // distance is 1.75, the nearest vertex (3.5, 2.5, 5.5) sqrt(3.1125) = 1.764 away.
+  const Vec3f above{3.3f, 2.6f, 7.25f};
+  EXPECT_NEAR(distanceToLevel(samples, above, 0.0f), 1.75f, 1e-5f);
+  EXPECT_FALSE(levelWithin(samples, above, iso0, 1.76f));
+  EXPECT_TRUE(levelWithin(samples, above, iso0, 1.77f));
   // A radius beyond the samples is searched within them; a NaN point has no witness.
-  EXPECT_TRUE(levelWithin(samples, middle, 0.0f, 1e30f));
-  EXPECT_FALSE(levelWithin(samples, {NAN, 1.0f, 1.0f}, 0.0f, 1.0f));
+  EXPECT_TRUE(levelWithin(samples, middle, iso0, 1e30f));
+  EXPECT_FALSE(levelWithin(samples, {NAN, 1.0f, 1.0f}, iso0, 1.0f));
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <cstdlib>
 #include <random>
 
+#include "isovdb/cell/dual_vertex.h"
 #include "isovdb/cell/trilinear.h"
 #include "isovdb/errors.h"
 #include "isovdb/octree/inspect.h"
@@ -151,7 +152,7 @@ TEST(BuildOctree, ErrorBoundHoldsEachLeafToItsPlaneShare) {
     const float deviation = surfaceDeviation(samples, phases, l.origin, l.size, vertex, 0.0f);
     ++measured;
     // The vertex itself lies where the check after contouring finds it within the bound.
-    EXPECT_TRUE(cell::levelWithin(samples, vertex, 0.0f, kMaxError - kErrorBoundMargin))
+    EXPECT_TRUE(cell::levelWithin(samples, vertex, cell::DualVertexOptions{}, kMaxError - kErrorBoundMargin))
         << "leaf of " << l.size << " at " << l.origin[0] << "," << l.origin[1] << "," << l.origin[2];
     if (l.size == 2) {
       ++twoVoxel;

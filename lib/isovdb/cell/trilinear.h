@@ -15,6 +15,8 @@
 
 namespace isovdb::cell {
 
+struct DualVertexOptions;  // dual_vertex.h
+
 /// The trilinear field at a point, minus the isovalue, and its gradient (per voxel).
 struct TrilinearSample {
   float value = 0.0f;
@@ -53,12 +55,19 @@ struct UnitCrossing {
 ///        off the level.
 float distanceToLevel(const MetaCellSamples& samples, const Vec3f& point, float iso) noexcept;
 
-/// @brief True if the level `iso` lies within `radius` of `point` (meta-cell offsets): by
-///        the first-order distance, or else shown by a witness, the crossing on a bipolar unit
-///        edge of the samples (apron included), where the trilinear field, linear along the
-///        edge, is exactly the level. Beside a thin structure the gradient nearly vanishes and
-///        the first-order distance says nothing: points half a voxel from the frog's bones read
-///        as up to 7 voxels away.
-bool levelWithin(const MetaCellSamples& samples, const Vec3f& point, float iso, float radius) noexcept;
+/// @brief True if the full-resolution surface at `options.iso` lies within `radius` of `point`
+///        (meta-cell offsets): by the first-order distance to the level where the level
+///        crosses the point's cell, or else shown by a witness, a vertex full-resolution
+///        contouring places (manifold DMC's groups, a QEF vertex for a single group and mass
+///        points for several, as the error bound's check places them) in a unit cell of the
+///        meta-cell. The witness is a point of regular mode's mesh, which the bound is measured
+///        against. Beside a thin structure the gradient nearly vanishes and the first-order
+///        distance says nothing (points half a voxel from the frog's bones read as up to 7 voxels
+///        away); in a cell the level does not cross it extrapolates (in a one-voxel gap between
+///        two bodies it read 0.8 voxel where regular mode's mesh was 1.13 away); and the level's
+///        own crossing, the witness before, is not a point of the mesh (on a body one voxel thin
+///        regular mode's vertices lie about 0.3 voxel inside it).
+bool levelWithin(const MetaCellSamples& samples, const Vec3f& point, const DualVertexOptions& options,
+                 float radius) noexcept;
 
 }  // namespace isovdb::cell

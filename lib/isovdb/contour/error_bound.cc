@@ -13,6 +13,7 @@
 #include <optional>
 #include <span>
 
+#include "isovdb/cell/cell_geometry.h"
 #include "isovdb/cell/dmc_table.h"
 #include "isovdb/cell/dual_vertex.h"
 #include "isovdb/cell/trilinear.h"
@@ -37,11 +38,11 @@ constexpr std::size_t kLeafGrain = 256;
 /// Keys of the leaves coarser than `finestSize` whose closed box holds a vertex, triangle
 /// centroid or edge midpoint of `mesh` farther than `maxError` from the level.
 void addLeavesOfFarMeshPoints(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
-                              const mesh::Mesh& mesh, float iso, float maxError, int finestSize,
-                              std::vector<octree::MortonKey>& keys) {
+                              const mesh::Mesh& mesh, const cell::DualVertexOptions& options, float maxError,
+                              int finestSize, std::vector<octree::MortonKey>& keys) {
   const auto check = [&](Vec3f p, std::vector<octree::MortonKey>& out) {
     for (int a = 0; a < 3; ++a) p[a] -= static_cast<float>(samples.origin[a]);
-    if (cell::levelWithin(samples, p, iso, maxError)) return;
+    if (cell::levelWithin(samples, p, options, maxError)) return;
     // Every leaf whose closed box holds p: a point on a face, an edge or a corner lies in several.
     constexpr float kNudge = 1e-3f;
     for (int corner = 0; corner < 8; ++corner) {
@@ -84,15 +85,49 @@ double roundingMargin(const Vec3f& p) noexcept {
   return 1e-3 + 4.0 * static_cast<double>(largest) * std::numeric_limits<float>::epsilon();
 }
 
+/// True if the unit cell at `origin` (meta-cell offsets, corner signs `config`) lies on a face of
+/// the meta-cell of `size` that the surface crosses there: a bipolar edge of the cell on it.
+bool seamCrossesCellFace(const std::array<int, 3>& origin, std::uint8_t config, int size) noexcept {
+  const std::uint16_t bipolar = cell::bipolarEdgeMask(config);
+  for (int a = 0; a < 3; ++a) {
+    if (origin[a] == 0 && (bipolar & cell::cellFaceEdgeMask(2 * a))) return true;
+    if (origin[a] + 1 == size && (bipolar & cell::cellFaceEdgeMask(2 * a + 1))) return true;
+  }
+  return false;
+}
+
 /// True if every vertex full-resolution contouring places in the unit cells of `leaf` that
 /// the surface crosses lies within `maxError` of the mesh in `grid`: manifold DMC's groups
 /// (dmc_table.h), a QEF vertex for a single group and mass points for several, as
 /// contour/leaf_groups.cc places them at 1 voxel.
 bool unitCellVerticesWithin(const cell::MetaCellSamples& samples, const octree::SamplePhases& phases,
                             const octree::UnitEdgeCrossings* crossings, const octree::OctreeLeaf& leaf,
-                            cell::DualVertexOptions options, const mesh::TriangleGrid& grid, float maxError) {
+                            cell::DualVertexOptions options, const mesh::TriangleGrid& grid, float maxError,
+                            std::span<const Vec3f> ownVertices) {
+  // A leaf on the meta-cell's boundary whose face there the surface crosses lies beside the
+  // seam's triangles, stitched later with the neighbour's leaves: its vertices are left to the
+  // octree's criterion (kPlaneShare). Otherwise the block's mesh and the leaf's own vertex must
+  // cover them: a one-voxel finger ending just short of a seam crosses no face of it.
+  if (octree::touchesMetaCellBoundary(leaf.origin, leaf.size, samples.size)) {
+    bool crossed = false;
+    octree::forEachCrossedUnitCell(phases, leaf.origin, leaf.size,
+                                   [&](const std::array<int, 3>& origin, std::uint8_t config) {
+                                     crossed = crossed || seamCrossesCellFace(origin, config, samples.size);
+                                   });
+    if (crossed) return true;
+  }
   bool within = true;
   std::uint32_t hint = std::numeric_limits<std::uint32_t>::max();  // the last triangle close enough
+  // Within `reach` of the mesh: of its triangles, or of one of the leaf's own vertices, which
+  // the seam's triangles (stitched later, so not in `grid`) pass through.
+  const auto covered = [&](const Vec3f& p, double reach) {
+    for (const Vec3f& v : ownVertices) {
+      double d2 = 0.0;
+      for (int a = 0; a < 3; ++a) d2 += (static_cast<double>(p[a]) - v[a]) * (static_cast<double>(p[a]) - v[a]);
+      if (d2 <= reach * reach) return true;
+    }
+    return grid.within(p, reach, &hint);
+  };
   octree::forEachCrossedUnitCell(
       phases, leaf.origin, leaf.size, [&](const std::array<int, 3>& origin, std::uint8_t config) {
         if (!within) return;
@@ -102,7 +137,7 @@ bool unitCellVerticesWithin(const cell::MetaCellSamples& samples, const octree::
           const std::uint16_t group = entry.groups[static_cast<std::size_t>(g)];
           if (crossings == nullptr || options.sharpFeatures) {  // (sharp features slide the minimiser)
             const cell::DualVertex v = octree::cellDualVertex(samples, origin, 1, group, options, crossings);
-            within = !v.valid() || grid.within(v.position, maxError, &hint);
+            within = !v.valid() || covered(v.position, maxError);
             continue;
           }
           std::array<Vec3f, 12> points;
@@ -121,9 +156,9 @@ bool unitCellVerticesWithin(const cell::MetaCellSamples& samples, const octree::
           for (int a = 0; a < 3; ++a) mass[a] += static_cast<float>(samples.origin[a]);
           const double slack =
               static_cast<double>(maxError) - (options.massPointOnly ? 0.0 : reach.reach) - roundingMargin(mass);
-          if (slack > 0.0 && grid.within(mass, slack, &hint)) continue;
+          if (slack > 0.0 && covered(mass, slack)) continue;
           const cell::DualVertex v = cell::dualVertexFromCrossings(samples, origin, 1, p, normal, edges, options);
-          within = grid.within(v.position, maxError, &hint);
+          within = covered(v.position, maxError);
         }
       });
   return within;
@@ -133,17 +168,34 @@ bool unitCellVerticesWithin(const cell::MetaCellSamples& samples, const octree::
 /// `maxError` from `mesh`: the other side of the bound. A coarse leaf's vertex can sit on the
 /// level set and still miss a part of the surface regular mode meshes (a one-voxel slit of
 /// background along the leaf's edge, whose unit-cell vertices lie 0.6 voxel from the slit's
-/// crossings). Leaves on the meta-cell's boundary are left out: the seam's triangles, which
-/// would cover their points, are made later by stitching.
+/// crossings). On the meta-cell's boundary the seam's triangles, which stitching makes later,
+/// pass through the leaf's own vertices (`seam`'s positions): there a full-resolution vertex
+/// counts as covered within reach of the mesh or of those vertices. Without `seam` such
+/// leaves are left out.
 void addLeavesMissingFullResolutionVertices(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
                                             const mesh::Mesh& mesh, const cell::DualVertexOptions& options,
                                             float maxError, int finestSize, const octree::UnitEdgeCrossings* crossings,
-                                            const octree::SamplePhases* givenPhases,
+                                            const octree::SamplePhases* givenPhases, const MetaCellSeam* seam,
                                             std::vector<octree::MortonKey>& keys) {
   if (!std::isfinite(maxError)) return;  // nothing lies farther than that
+  // The seam cells' vertex positions by key (seam cells are the surface leaves on the boundary).
+  std::vector<std::pair<octree::MortonKey, std::span<const Vec3f>>> seamVertices;
+  if (seam) {
+    seamVertices.reserve(seam->cells.size());
+    for (const SeamCell& c : seam->cells)
+      seamVertices.emplace_back(
+          c.key, std::span<const Vec3f>(c.positions.data(), cell::dmcEntry(c.cornerSigns, c.alternative).vertexCount));
+    std::sort(seamVertices.begin(), seamVertices.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  }
+  const auto ownVertices = [&](const octree::OctreeLeaf& leaf) -> std::optional<std::span<const Vec3f>> {
+    if (!octree::touchesMetaCellBoundary(leaf.origin, leaf.size, samples.size)) return std::span<const Vec3f>{};
+    const auto at = std::lower_bound(seamVertices.begin(), seamVertices.end(), leaf.key,
+                                     [](const auto& entry, octree::MortonKey key) { return entry.first < key; });
+    if (at == seamVertices.end() || at->first != leaf.key) return std::nullopt;  // not checked
+    return at->second;
+  };
   const auto checked = [&](const octree::OctreeLeaf& leaf) {
-    return leaf.surface && leaf.size > finestSize &&
-           !octree::touchesMetaCellBoundary(leaf.origin, leaf.size, samples.size);
+    return leaf.surface && leaf.size > finestSize && ownVertices(leaf).has_value();
   };
   const auto& leaves = tree.leaves();
   if (std::none_of(leaves.begin(), leaves.end(), checked)) return;  // no grid, no phases
@@ -152,14 +204,16 @@ void addLeavesMissingFullResolutionVertices(const cell::MetaCellSamples& samples
   const octree::SamplePhases& phases = givenPhases ? *givenPhases : *ownPhases;
   const mesh::TriangleGrid grid(mesh, std::max(kBinVoxels, 2.0 * maxError));
   tbb::enumerable_thread_specific<std::vector<octree::MortonKey>> found;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, leaves.size(), kLeafGrain),
-                    [&](const tbb::blocked_range<std::size_t>& r) {
-                      std::vector<octree::MortonKey>& local = found.local();
-                      for (std::size_t i = r.begin(); i != r.end(); ++i)
-                        if (checked(leaves[i]) &&
-                            !unitCellVerticesWithin(samples, phases, crossings, leaves[i], options, grid, maxError))
-                          local.push_back(leaves[i].key);
-                    });
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, leaves.size(), kLeafGrain), [&](const tbb::blocked_range<std::size_t>& r) {
+        std::vector<octree::MortonKey>& local = found.local();
+        for (std::size_t i = r.begin(); i != r.end(); ++i) {
+          if (!leaves[i].surface || leaves[i].size <= finestSize) continue;
+          const std::optional<std::span<const Vec3f>> own = ownVertices(leaves[i]);
+          if (own && !unitCellVerticesWithin(samples, phases, crossings, leaves[i], options, grid, maxError, *own))
+            local.push_back(leaves[i].key);
+        }
+      });
   for (const std::vector<octree::MortonKey>& local : found) keys.insert(keys.end(), local.begin(), local.end());
 }
 
@@ -169,13 +223,14 @@ std::vector<octree::MortonKey> leavesBeyondErrorBound(const cell::MetaCellSample
                                                       const octree::LinearOctree& tree, const mesh::Mesh& mesh,
                                                       const cell::DualVertexOptions& options, float maxError,
                                                       int finestSize, const octree::UnitEdgeCrossings* crossings,
-                                                      const octree::SamplePhases* phases) {
+                                                      const octree::SamplePhases* phases, const MetaCellSeam* seam) {
   std::vector<octree::MortonKey> keys;
   maxError -= octree::kErrorBoundMargin;  // what the samples do not see (octree/build.h)
-  addLeavesOfFarMeshPoints(samples, tree, mesh, options.iso, maxError, finestSize, keys);
+  addLeavesOfFarMeshPoints(samples, tree, mesh, options, maxError, finestSize, keys);
   // The costlier side once the mesh's own points hold: the pass would be built again anyway.
   if (keys.empty())
-    addLeavesMissingFullResolutionVertices(samples, tree, mesh, options, maxError, finestSize, crossings, phases, keys);
+    addLeavesMissingFullResolutionVertices(samples, tree, mesh, options, maxError, finestSize, crossings, phases, seam,
+                                           keys);
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
   return keys;

@@ -25,14 +25,19 @@
 ///
 /// Both sides are sampled, so the check holds the mesh to the bound less a margin
 /// (octree::kErrorBoundMargin) that covers what lies between the samples. The seam's
-/// triangles, stitched later, are checked neither way: the octree's own criterion keeps
-/// the same margin on the meta-cell's boundary.
+/// triangles, stitched later, are not in the mesh: they pass through the boundary leaves'
+/// own vertices (the seam cells'), so a full-resolution vertex of a boundary leaf counts as
+/// covered within the bound of the mesh or of those vertices (before, boundary leaves were
+/// left out, and a one-voxel finger ending at a seam stayed 1.04 voxels from the adaptive
+/// mesh at E = 1). The seam's own points against the level are not checked: the octree's
+/// own criterion keeps the margin on the meta-cell's boundary.
 #pragma once
 
 #include <vector>
 
 #include "isovdb/cell/dual_vertex.h"
 #include "isovdb/cell/meta_cell_samples.h"
+#include "isovdb/contour/seam_cell.h"
 #include "isovdb/mesh/mesh.h"
 #include "isovdb/octree/linear_octree.h"
 #include "isovdb/octree/unit_edge_crossings.h"
@@ -43,9 +48,10 @@ namespace isovdb::contour {
 ///        finest cells, which cannot be split) whose closed box holds a
 ///        vertex, triangle centroid or edge midpoint of `mesh` (global voxel index
 ///        coordinates) farther than `maxError` from the level `options.iso`, or
-///        which hold a full-resolution vertex farther than `maxError` from `mesh`
-///        (leaves on the meta-cell's boundary excepted: their seam is stitched
-///        later): sorted, unique. `options` place the vertices as contouring does.
+///        which hold a full-resolution vertex farther than `maxError` from `mesh` (or,
+///        on the meta-cell's boundary, from the leaf's vertices in `seam`, which the seam's
+///        triangles stitched later pass through; without `seam` such leaves are left
+///        out): sorted, unique. `options` place the vertices as contouring does.
 /// `crossings` (optional) are the samples' unit-edge crossings, each found once (a unit edge
 /// is shared by four unit cells); without them each cell finds its own. `phases` (optional)
 /// are the samples' phases at `options.iso`, computed here without them.
@@ -54,6 +60,7 @@ std::vector<octree::MortonKey> leavesBeyondErrorBound(const cell::MetaCellSample
                                                       const cell::DualVertexOptions& options, float maxError,
                                                       int finestSize = 1,
                                                       const octree::UnitEdgeCrossings* crossings = nullptr,
-                                                      const octree::SamplePhases* phases = nullptr);
+                                                      const octree::SamplePhases* phases = nullptr,
+                                                      const MetaCellSeam* seam = nullptr);
 
 }  // namespace isovdb::contour

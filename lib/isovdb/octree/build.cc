@@ -268,7 +268,7 @@ class Builder {
             surfaceDeviatesBeyond(samples_, phases_, ev.leaf.origin, size, x, settings_.iso, allowed) ||
             // The check measures every vertex of the mesh against the level as this does: a
             // vertex it would find beyond costs a pass, which builds the whole block again.
-            !cell::levelWithin(samples_, x, settings_.iso, reach);
+            !cell::levelWithin(samples_, x, cell::dualVertexOptions(settings_), reach);
       }
       if (!ev.split && settings_.sharpFeatures && v.valid() && v.minNormalDot < kFeatureCone) {
         // A few tangent planes of a curved crease meet off it while fitting almost exactly.

@@ -162,7 +162,7 @@ contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const E
     std::vector<octree::MortonKey> beyond;
     if (bounded)
       beyond = contour::leavesBeyondErrorBound(samples, tree, result.mesh, cell::dualVertexOptions(settings),
-                                               options.maxError, finest, unitCrossings, &phases);
+                                               options.maxError, finest, unitCrossings, &phases, &result.seam);
     totals.errorBoundSeconds += secondsSince(t0);
     std::vector<octree::MortonKey> forced;
     std::set_union(options.forcedSplits.begin(), options.forcedSplits.end(), beyond.begin(), beyond.end(),
