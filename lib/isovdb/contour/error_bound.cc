@@ -97,9 +97,11 @@ bool seamCrossesCellFace(const std::array<int, 3>& origin, std::uint8_t config, 
 }
 
 /// True if every vertex full-resolution contouring places in the unit cells of `leaf` that
-/// the surface crosses lies within `maxError` of the mesh in `grid`: manifold DMC's groups
-/// (dmc_table.h), a QEF vertex for a single group and mass points for several, as
-/// contour/leaf_groups.cc places them at 1 voxel.
+/// the surface crosses lies within `maxError` of the mesh in `grid` or of `ownVertices` (the
+/// leaf's vertices in the mesh, given for a leaf on the meta-cell's boundary): manifold DMC's
+/// groups (dmc_table.h), a QEF vertex for a single group and mass points for several, as
+/// contour/leaf_groups.cc places them at 1 voxel. True, unchecked, for a boundary leaf whose
+/// face on the boundary the surface crosses (the seam covers it).
 bool unitCellVerticesWithin(const cell::MetaCellSamples& samples, const octree::SamplePhases& phases,
                             const octree::UnitEdgeCrossings* crossings, const octree::OctreeLeaf& leaf,
                             cell::DualVertexOptions options, const mesh::TriangleGrid& grid, float maxError,
