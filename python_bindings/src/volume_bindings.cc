@@ -458,7 +458,7 @@ voxel_size: world units per voxel, one number or (sx, sy, sz); spacing= is the s
   (read_volume's name), give one of them.
 origin: world position of voxel [0, 0, 0].
 
-Raises ValueError for a non-array (nor lists), an array that is not 3-D, empty, of another dtype, or
+Raises ValueError for anything but an array or nested lists, an array that is not 3-D, empty, of another dtype, or
 holding NaN/inf.)doc";
 
   m.def("read_volume", &readVolume, py::arg("path"), py::kw_only(), py::arg("dims") = py::none(),
