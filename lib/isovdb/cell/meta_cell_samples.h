@@ -20,6 +20,7 @@
 #include <array>
 #include <cassert>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace isovdb::cell {
@@ -88,6 +89,19 @@ MetaCellSamples makeMetaCellSamples(int size, std::array<int, 3> origin, F&& f) 
   samples.allocate(size, origin);
   samples.fillFrom(static_cast<F&&>(f));
   return samples;
+}
+
+/// @brief 8-bit corner sign configuration of the cell [origin, origin + size] (meta-cell
+///        offsets; bit c set iff corner c is inside).
+inline std::uint8_t cellCornerSigns(const MetaCellSamples& samples, std::array<int, 3> origin, int size,
+                                    float iso) noexcept {
+  std::uint8_t signs = 0;
+  for (int c = 0; c < 8; ++c) {
+    const float v =
+        samples.value(origin[0] + (c & 1) * size, origin[1] + ((c >> 1) & 1) * size, origin[2] + ((c >> 2) & 1) * size);
+    if (isInside(v, iso)) signs = static_cast<std::uint8_t>(signs | (1u << c));
+  }
+  return signs;
 }
 
 }  // namespace isovdb::cell

@@ -51,11 +51,8 @@ namespace {
 bool cellCrossed(const MetaCellSamples& samples, const Vec3f& point, float iso) noexcept {
   std::array<int, 3> base{};
   for (int a = 0; a < 3; ++a) base[a] = std::clamp(static_cast<int>(std::floor(point[a])), 0, samples.size - 1);
-  const bool first = isInside(samples.value(base[0], base[1], base[2]), iso);
-  for (int c = 1; c < 8; ++c)
-    if (isInside(samples.value(base[0] + (c & 1), base[1] + ((c >> 1) & 1), base[2] + ((c >> 2) & 1)), iso) != first)
-      return true;
-  return false;
+  const std::uint8_t signs = cellCornerSigns(samples, base, 1, iso);
+  return signs != 0 && signs != 0xff;
 }
 
 }  // namespace
@@ -91,11 +88,7 @@ bool levelWithin(const MetaCellSamples& samples, const Vec3f& point, const DualV
       for (int i = from[0]; i <= to[0]; ++i) {
         const std::array<float, 3> lo{static_cast<float>(i), static_cast<float>(j), static_cast<float>(k)};
         if (squaredDistanceTo(lo, {lo[0] + 1.0f, lo[1] + 1.0f, lo[2] + 1.0f}) > limit) continue;
-        std::uint8_t config = 0;
-        for (int c = 0; c < 8; ++c)
-          if (isInside(samples.value(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1)), options.iso))
-            config = static_cast<std::uint8_t>(config | (1u << c));
-        const DmcEntry& entry = dmcEntry(config);
+        const DmcEntry& entry = dmcEntry(cellCornerSigns(samples, {i, j, k}, 1, options.iso));
         vertexOptions.massPointOnly = entry.vertexCount > 1;
         for (int g = 0; g < entry.vertexCount; ++g) {
           const DualVertex v =

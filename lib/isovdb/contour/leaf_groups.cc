@@ -19,7 +19,7 @@ constexpr std::size_t kGrain = 256;
 int cellConfigAt(const cell::MetaCellSamples& samples, const std::array<int, 3>& origin, int size, float iso) noexcept {
   for (int a = 0; a < 3; ++a)
     if (origin[a] < -samples.apron || origin[a] + size > samples.size + samples.apron) return -1;
-  return octree::cellCornerSigns(samples, origin, size, iso);
+  return cell::cellCornerSigns(samples, origin, size, iso);
 }
 
 }  // namespace

@@ -97,7 +97,7 @@ MetaCellMesh contourRegularMetaCell(const cell::MetaCellSamples& samples, const 
   std::vector<std::uint8_t> configs(n);
   for (std::size_t i = 0; i < n; ++i) configs[i] = leaves[i].cornerSigns;
   for (std::size_t i = 0; i < n; i += 64)
-    if (octree::cellCornerSigns(samples, leaves[i].origin, leaves[i].size, options.iso) != configs[i])
+    if (cell::cellCornerSigns(samples, leaves[i].origin, leaves[i].size, options.iso) != configs[i])
       throw InputError("contourRegular: leaf " + std::to_string(i) +
                        " has corner signs that differ from the samples at iso " + std::to_string(options.iso) +
                        " (octree built with another isovalue)");

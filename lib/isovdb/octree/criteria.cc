@@ -247,17 +247,6 @@ bool hasHiddenComponent(const SamplePhases& phases, std::array<int, 3> origin, i
   return queue.size() != interior;
 }
 
-std::uint8_t cellCornerSigns(const cell::MetaCellSamples& samples, std::array<int, 3> origin, int size,
-                             float iso) noexcept {
-  std::uint8_t signs = 0;
-  for (int c = 0; c < 8; ++c) {
-    const float v =
-        samples.value(origin[0] + (c & 1) * size, origin[1] + ((c >> 1) & 1) * size, origin[2] + ((c >> 2) & 1) * size);
-    if (cell::isInside(v, iso)) signs = static_cast<std::uint8_t>(signs | (1u << c));
-  }
-  return signs;
-}
-
 std::uint8_t cellCornerSigns(const SamplePhases& phases, std::array<int, 3> origin, int size) noexcept {
   std::uint8_t signs = 0;
   for (int c = 0; c < 8; ++c)

@@ -105,10 +105,8 @@ CellTopology classifyCell(const SamplePhases& phases, std::array<int, 3> origin,
 /// @pre the cell lies in [0, S]^3.
 bool hasHiddenComponent(const SamplePhases& phases, std::array<int, 3> origin, int size);
 
-/// @brief 8-bit corner sign configuration of a cell (bit c set iff corner c inside).
-std::uint8_t cellCornerSigns(const cell::MetaCellSamples& samples, std::array<int, 3> origin, int size,
-                             float iso) noexcept;
-/// @brief The same, read from the phases.
+/// @brief 8-bit corner sign configuration of a cell (bit c set iff corner c inside), read from
+///        the phases (cell::cellCornerSigns reads the samples).
 std::uint8_t cellCornerSigns(const SamplePhases& phases, std::array<int, 3> origin, int size) noexcept;
 
 }  // namespace isovdb::octree
