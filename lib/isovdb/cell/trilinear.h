@@ -7,9 +7,6 @@
 ///        contour/error_bound.h), and a witness of the level near a point.
 #pragma once
 
-#include <array>
-#include <cstddef>
-
 #include "isovdb/cell/meta_cell_samples.h"
 #include "isovdb/vec3.h"
 
@@ -26,28 +23,6 @@ struct TrilinearSample {
 /// @brief Trilinear interpolation at `point` (meta-cell offsets, clamped to the unit
 ///        cells of [0, S]^3), minus `iso`.
 TrilinearSample trilinearAt(const MetaCellSamples& samples, const Vec3f& point, float iso) noexcept;
-
-/// The level's crossing on a unit edge whose ends lie on opposite sides of it, and whether
-/// the field rises along the edge's axis there.
-struct UnitCrossing {
-  Vec3f point;  ///< meta-cell offsets; the trilinear field, linear along the edge, is the level there
-  bool rises = false;
-};
-
-/// @brief The crossing on the unit edge from sample `start` along `axis` (meta-cell offsets)
-///        by linear interpolation. Inline: the octree's plane test calls it for every bipolar
-///        unit edge of every leaf it measures.
-/// @pre the edge is bipolar at `iso` (isInside differs at its ends).
-[[gnu::always_inline]] inline UnitCrossing unitEdgeCrossing(const MetaCellSamples& samples, std::array<int, 3> start,
-                                                            int axis, float iso) noexcept {
-  std::array<int, 3> end = start;
-  ++end[static_cast<std::size_t>(axis)];
-  const float a = samples.value(start) - iso;
-  const float b = samples.value(end) - iso;
-  Vec3f p{static_cast<float>(start[0]), static_cast<float>(start[1]), static_cast<float>(start[2])};
-  p[static_cast<std::size_t>(axis)] += a / (a - b);  // a <= 0 < b or b <= 0 < a: a != b
-  return {p, b > a};
-}
 
 /// @brief First-order distance (voxels) from `point` to the level `iso`:
 ///        |f - iso| / |grad f| of the trilinear field (exact on a linear field, the

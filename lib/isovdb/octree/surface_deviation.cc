@@ -50,6 +50,24 @@ bool forEachBipolarUnitEdge(const SamplePhases& phases, std::array<int, 3> origi
   return true;
 }
 
+/// The crossing on a bipolar unit edge (linear interpolation), and whether the field
+/// rises along the edge's axis there.
+struct UnitCrossing {
+  Vec3f point;
+  bool rises;
+};
+
+[[gnu::always_inline]] inline UnitCrossing unitEdgeCrossing(const cell::MetaCellSamples& samples,
+                                                            std::array<int, 3> start, int axis, float iso) {
+  std::array<int, 3> end = start;
+  ++end[static_cast<std::size_t>(axis)];
+  const float a = samples.value(start) - iso;
+  const float b = samples.value(end) - iso;
+  Vec3f p{static_cast<float>(start[0]), static_cast<float>(start[1]), static_cast<float>(start[2])};
+  p[static_cast<std::size_t>(axis)] += a / (a - b);  // a <= 0 < b or b <= 0 < a: a != b
+  return {p, b > a};
+}
+
 double planeDistance(const std::array<double, 3>& normal, const Vec3f& p, const Vec3f& vertex) {
   double d = 0.0;
   for (int a = 0; a < 3; ++a) d += normal[a] * (static_cast<double>(p[a]) - vertex[a]);
@@ -66,8 +84,7 @@ float deviationUpTo(const cell::MetaCellSamples& samples, const SamplePhases& ph
     const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
     double deviation = 0.0;
     forEachBipolarUnitEdge(phases, origin, size, [&](std::array<int, 3> start, int axis) {
-      deviation =
-          std::max(deviation, planeDistance(normal, cell::unitEdgeCrossing(samples, start, axis, iso).point, vertex));
+      deviation = std::max(deviation, planeDistance(normal, unitEdgeCrossing(samples, start, axis, iso).point, vertex));
       return !(static_cast<float>(deviation / length) > stopAbove);
     });
     return static_cast<float>(deviation / length);
@@ -78,7 +95,7 @@ float deviationUpTo(const cell::MetaCellSamples& samples, const SamplePhases& ph
   points.clear();
   std::array<double, 3> normal{0.0, 0.0, 0.0};
   forEachBipolarUnitEdge(phases, origin, size, [&](std::array<int, 3> start, int axis) {
-    const cell::UnitCrossing c = cell::unitEdgeCrossing(samples, start, axis, iso);
+    const UnitCrossing c = unitEdgeCrossing(samples, start, axis, iso);
     points.push_back(c.point);
     normal[axis] += c.rises ? 1.0 : -1.0;  // the field rises outward
     return true;
