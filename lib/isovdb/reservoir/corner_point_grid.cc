@@ -55,7 +55,6 @@ double cornerJacobian(const std::array<Vec3d, 8>& p, int c) {
 void mergePinchedPillarPoints(CornerPointGrid& grid, double tolerance) {
   const std::size_t cells = grid.cellCount(), points = grid.points.size();
   std::vector<std::uint32_t> parent;
-  const auto root = [&](std::uint32_t p) { return findRoot(parent, p); };
   for (std::size_t cell = 0; cell < cells; ++cell)
     for (int c = 0; c < 4; ++c) {
       const std::uint32_t a = grid.pointIds[cell][static_cast<std::size_t>(c)];
@@ -65,20 +64,21 @@ void mergePinchedPillarPoints(CornerPointGrid& grid, double tolerance) {
         parent.resize(points);
         for (std::uint32_t p = 0; p < points; ++p) parent[p] = p;
       }
-      const std::uint32_t ra = root(a), rb = root(b);
+      const std::uint32_t ra = findRoot(parent, a), rb = findRoot(parent, b);
       parent[std::max(ra, rb)] = std::min(ra, rb);
     }
   if (parent.empty()) return;
   std::vector<std::uint32_t> newId(points);
   std::uint32_t merged = 0;
-  for (std::uint32_t p = 0; p < points; ++p) newId[p] = root(p) == p ? merged++ : newId[root(p)];
+  for (std::uint32_t p = 0; p < points; ++p)
+    newId[p] = findRoot(parent, p) == p ? merged++ : newId[findRoot(parent, p)];
   std::vector<Vec3d> mergedPoints(merged);
   // The joined lists, flat: each merged point's range counted, filled in id order, then
   // (where points were joined) sorted and stripped of repeats (a cell holds both points it
   // joins), in place.
   std::vector<std::uint32_t> start(merged + std::size_t{1}, 0), joined(grid.pointCells.size());
   for (std::uint32_t p = 0; p < points; ++p) {
-    if (root(p) == p) mergedPoints[newId[p]] = grid.points[p];
+    if (findRoot(parent, p) == p) mergedPoints[newId[p]] = grid.points[p];
     start[newId[p] + std::size_t{1}] += static_cast<std::uint32_t>(grid.cellsOfPoint(p).size());
   }
   std::partial_sum(start.begin(), start.end(), start.begin());
@@ -86,7 +86,7 @@ void mergePinchedPillarPoints(CornerPointGrid& grid, double tolerance) {
   for (std::uint32_t p = 0; p < points; ++p)
     for (const std::uint32_t cell : grid.cellsOfPoint(p)) joined[fill[newId[p]]++] = cell;
   std::vector<std::uint8_t> joinsSeveral(merged, 0);
-  for (std::uint32_t p = 0; p < points; ++p) joinsSeveral[newId[p]] |= root(p) != p;
+  for (std::uint32_t p = 0; p < points; ++p) joinsSeveral[newId[p]] |= findRoot(parent, p) != p;
   std::uint32_t kept = 0;
   for (std::uint32_t q = 0; q < merged; ++q) {
     const auto first = joined.begin() + start[q], last = joined.begin() + start[q + 1];

@@ -78,17 +78,16 @@ std::optional<std::vector<std::uint32_t>> boundaryCycle(const std::vector<Triang
 std::vector<std::vector<std::uint32_t>> loopsOf(const mesh::Mesh& m, const std::vector<std::uint32_t>& triangles) {
   std::vector<std::size_t> parent(triangles.size());
   std::iota(parent.begin(), parent.end(), 0);
-  const auto root = [&](std::size_t x) { return findRoot(parent, x); };
   for (std::size_t i = 0; i < triangles.size(); ++i)
     for (std::size_t j = i + 1; j < triangles.size(); ++j) {
       const Triangle& a = m.triangles[triangles[i]];
       const Triangle& b = m.triangles[triangles[j]];
       int shared = 0;
       for (const auto va : a) shared += va == b[0] || va == b[1] || va == b[2];
-      if (shared >= 2) parent[root(i)] = root(j);
+      if (shared >= 2) parent[findRoot(parent, i)] = findRoot(parent, j);
     }
   std::map<std::size_t, std::vector<std::uint32_t>> groups;
-  for (std::size_t i = 0; i < triangles.size(); ++i) groups[root(i)].push_back(triangles[i]);
+  for (std::size_t i = 0; i < triangles.size(); ++i) groups[findRoot(parent, i)].push_back(triangles[i]);
   std::vector<std::vector<std::uint32_t>> loops;
   for (auto& [first, group] : groups) loops.push_back(std::move(group));
   return loops;
