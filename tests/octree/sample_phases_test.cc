@@ -82,5 +82,46 @@ TEST(SamplePhases, SignChangesAlongEveryAxisMatchTheSamples) {
   }
 }
 
+// The seam's leaves: a face on the meta-cell's boundary whose samples are not all of one
+// phase, against every sample of every such face, for cells of 1 to 32 voxels in every
+// position along the boundary (a face x = 0 or x = S reads sample by sample, the others in runs
+// along x, 33 samples long at 32).
+TEST(SamplePhases, SeamCrossingsAgreeWithTheBoundaryFacesSamples) {
+  for (const double fraction : {0.0005, 0.01, 0.5}) {
+    const cell::MetaCellSamples s = randomBlock(9, fraction);
+    const SamplePhases phases(s, 0.0f);
+    int crossed = 0, uniform = 0;
+    for (const int size : {1, 2, 4, 8, 16, 32})
+      for (int trial = 0; trial < 400; ++trial) {
+        std::array<int, 3> origin{};
+        for (int a = 0; a < 3; ++a) origin[a] = size * ((trial * (7 + 5 * a) + a) % (128 / size));
+        origin[trial % 3] = trial % 2 == 0 ? 0 : 128 - size;  // on the boundary
+        bool expected = false;
+        for (int a = 0; a < 3; ++a)
+          for (const int plane : {0, 128}) {
+            if (origin[a] + (plane == 0 ? 0 : size) != plane) continue;
+            std::array<int, 3> q = origin;
+            q[a] = plane;
+            const bool first = s.value(q) <= 0.0f;
+            const int u = a == 0 ? 1 : 0, v = a == 2 ? 1 : 2;
+            for (int j = 0; j <= size; ++j)
+              for (int i = 0; i <= size; ++i) {
+                std::array<int, 3> r = q;
+                r[u] += i;
+                r[v] += j;
+                expected = expected || (s.value(r) <= 0.0f) != first;
+              }
+          }
+        ASSERT_EQ(crossesMetaCellBoundary(phases, origin, size), expected)
+            << origin[0] << ' ' << origin[1] << ' ' << origin[2] << " size " << size << " fraction " << fraction;
+        (expected ? crossed : uniform) += 1;
+      }
+    if (fraction < 0.5) {
+      EXPECT_GT(uniform, 0) << fraction;
+    }
+    EXPECT_GT(crossed, 0) << fraction;
+  }
+}
+
 }  // namespace
 }  // namespace isovdb::octree

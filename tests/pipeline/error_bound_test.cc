@@ -203,6 +203,14 @@ TEST(ErrorBound, HoldsBesideBodiesAndGapsOneVoxelThin) {
     expectVoxelReadingBound(blobsInsideTheBox(48, seed), "blobs 48, seed " + std::to_string(seed), 32, 1.0f);
 }
 
+// Where regular mode's quad sags away from its own edge's crossing, a Ju-Udeshi fan through
+// that crossing beside a coarser leaf lies on the level and still off regular mode's mesh:
+// this mask ended 0.513 voxel away at E = 0.5, the fan's edge point in a two-voxel leaf's
+// corner, until the check measured fans' edge points against regular mode's quad there.
+TEST(ErrorBound, HoldsWhereRegularModesQuadLeavesTheLevel) {
+  expectVoxelReadingBound(blobsInsideTheBox(64, 23), "blobs 64, seed 23", 32, 0.5f);
+}
+
 // Inside a meta-cell, leaves of four voxels or more may stray kInteriorPlaneShare * E from
 // their vertex plane (the check covers them), two-voxel leaves only kPlaneShare * E: with the
 // looser share there too, a two-voxel leaf of these blobs (one meta-cell, the box's faces

@@ -16,7 +16,9 @@
 #include "isovdb/cell/cell_geometry.h"
 #include "isovdb/cell/dmc_table.h"
 #include "isovdb/cell/dual_vertex.h"
+#include "isovdb/cell/meta_cell_samples.h"
 #include "isovdb/cell/trilinear.h"
+#include "isovdb/contour/voxel_dmc.h"
 #include "isovdb/mesh/triangle_grid.h"
 #include "isovdb/octree/build.h"
 #include "isovdb/octree/sample_phases.h"
@@ -35,14 +37,87 @@ constexpr double kBinVoxels = 4.0;
 constexpr std::size_t kPointGrain = 4096;
 constexpr std::size_t kLeafGrain = 256;
 
+/// True if `point` (meta-cell offsets, a vertex of the mesh) lies on a bipolar unit edge of
+/// the lattice (two whole coordinates) on a face of the leaf of `tree` holding it, as the edge
+/// point of a Ju-Udeshi fan does, and regular mode's quad on that edge may lie farther than
+/// `radius` from it. The level proxy (cell::levelWithin) takes regular mode's
+/// mesh to follow the level; where its quad sags away from the edge's own crossing it does
+/// not, and a fan through that crossing beside a coarser leaf lay 0.513 voxel from regular
+/// mode's quad at E = 0.5 (a 64^3 blobs mask) while on the level. The bound is either
+/// diagonal's distance, whichever is larger (regular mode keeps one of them, or fans through
+/// the crossing itself), so it is an upper bound on the distance to regular mode's mesh.
+/// False (nothing to add) off unit edges, on edges near the meta-cell's boundary, and around
+/// cells with several vertices, which the proxy keeps.
+bool edgePointOffRegularQuad(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree, const Vec3f& point,
+                             const cell::DualVertexOptions& options, float radius) {
+  int axis = -1, whole = 0;
+  for (int a = 0; a < 3; ++a) {
+    if (point[a] == std::floor(point[a]))
+      ++whole;
+    else
+      axis = a;
+  }
+  if (whole != 2) return false;
+  std::array<int, 3> start{};
+  for (int a = 0; a < 3; ++a) start[static_cast<std::size_t>(a)] = static_cast<int>(std::floor(point[a]));
+  if (std::any_of(start.begin(), start.end(), [&](int c) { return c < 0 || c >= samples.size; })) return false;
+  // A fan's edge point lies on a minimal edge, on a face of each leaf around it; a coarse
+  // leaf's own vertex with two whole coordinates (the centre of a flat patch: a tenth of the
+  // gyroid's vertices, on a crossing too) lies inside its leaf and is not measured,
+  // which would cost four vertices each and a third more check.
+  const std::int64_t found = tree.findLeafContaining(std::array<float, 3>{point[0], point[1], point[2]});
+  if (found == octree::LinearOctree::kNone) return false;
+  const octree::OctreeLeaf& leaf = tree.leaf(static_cast<std::size_t>(found));
+  bool onLeafFace = false;  // a minimal edge lies at least on a face of its coarsest leaf
+  for (int a = 0; a < 3; ++a) {
+    const auto u = static_cast<std::size_t>(a);
+    onLeafFace = onLeafFace || (a != axis && (start[u] == leaf.origin[u] || start[u] == leaf.origin[u] + leaf.size));
+  }
+  if (!onLeafFace) return false;
+  std::array<int, 3> end = start;
+  ++end[static_cast<std::size_t>(axis)];
+  if ((samples.value(start) <= options.iso) == (samples.value(end) <= options.iso)) return false;  // not bipolar
+  std::array<Vec3d, 4> vertex{};
+  for (int q = 0; q < 4; ++q) {
+    const std::array<int, 3> origin = cell::edgeQuadrantVoxel(start, axis, q);
+    if (std::any_of(origin.begin(), origin.end(), [&](int c) { return c < 0 || c >= samples.size; })) return false;
+    const std::uint8_t config = cell::cellCornerSigns(samples, origin, 1, options.iso);
+    const cell::DmcEntry& entry = cell::dmcEntry(config);
+    if (entry.vertexCount != 1 || voxelDmcEntry(config).vertexCount != 1 ||
+        cell::dmcVertexOfEdge(config, false, axis, q) < 0)
+      return false;
+    const cell::DualVertex v = cell::computeDualVertex(samples, origin, 1, entry.groups[0], options);
+    if (!v.valid()) return false;
+    for (int a = 0; a < 3; ++a)
+      vertex[static_cast<std::size_t>(q)][a] = static_cast<double>(v.position[a]) - samples.origin[a];
+  }
+  const Vec3d p{point[0], point[1], point[2]};
+  const auto distanceTo = [&](int a, int b, int c) {
+    const Vec3d x =
+        mesh::closestPointOnTriangle(p, vertex[static_cast<std::size_t>(a)], vertex[static_cast<std::size_t>(b)],
+                                     vertex[static_cast<std::size_t>(c)]);
+    return std::sqrt((x[0] - p[0]) * (x[0] - p[0]) + (x[1] - p[1]) * (x[1] - p[1]) + (x[2] - p[2]) * (x[2] - p[2]));
+  };
+  // Quadrants in cyclic order around the edge: 0, 1, 3, 2.
+  const double diagonal03 = std::min(distanceTo(0, 1, 3), distanceTo(0, 3, 2));
+  const double diagonal12 = std::min(distanceTo(0, 1, 2), distanceTo(1, 3, 2));
+  return std::max(diagonal03, diagonal12) > static_cast<double>(radius);
+}
+
 /// Keys of the leaves coarser than `finestSize` whose closed box holds a vertex, triangle
-/// centroid or edge midpoint of `mesh` farther than `maxError` from the level.
+/// centroid or edge midpoint of `mesh` farther than `maxError` from the level, or a fan's
+/// edge point farther than that from regular mode's quad there (edgePointOffRegularQuad).
 void addLeavesOfFarMeshPoints(const cell::MetaCellSamples& samples, const octree::LinearOctree& tree,
                               const mesh::Mesh& mesh, const cell::DualVertexOptions& options, float maxError,
                               int finestSize, std::vector<octree::MortonKey>& keys) {
-  const auto check = [&](Vec3f p, std::vector<octree::MortonKey>& out) {
+  const auto check = [&](Vec3f p, std::vector<octree::MortonKey>& out, bool vertex = false) {
     for (int a = 0; a < 3; ++a) p[a] -= static_cast<float>(samples.origin[a]);
-    if (cell::levelWithin(samples, p, options, maxError)) return;
+    // A fan's edge point is a vertex of the mesh: only vertices are measured against
+    // regular mode's quad too (midpoints of a flat patch's diagonals have two whole
+    // coordinates as well).
+    if (cell::levelWithin(samples, p, options, maxError) &&
+        !(vertex && edgePointOffRegularQuad(samples, tree, p, options, maxError)))
+      return;
     // Every leaf whose closed box holds p: a point on a face, an edge or a corner lies in several.
     constexpr float kNudge = 1e-3f;
     for (int corner = 0; corner < 8; ++corner) {
@@ -57,7 +132,7 @@ void addLeavesOfFarMeshPoints(const cell::MetaCellSamples& samples, const octree
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, mesh.positions.size(), kPointGrain),
                     [&](const tbb::blocked_range<std::size_t>& r) {
                       std::vector<octree::MortonKey>& local = found.local();
-                      for (std::size_t i = r.begin(); i != r.end(); ++i) check(mesh.positions[i], local);
+                      for (std::size_t i = r.begin(); i != r.end(); ++i) check(mesh.positions[i], local, true);
                     });
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, mesh.triangles.size(), kPointGrain),
@@ -85,17 +160,6 @@ double roundingMargin(const Vec3f& p) noexcept {
   return 1e-3 + 4.0 * static_cast<double>(largest) * std::numeric_limits<float>::epsilon();
 }
 
-/// True if the unit cell at `origin` (meta-cell offsets, corner signs `config`) lies on a face of
-/// the meta-cell of `size` that the surface crosses there: a bipolar edge of the cell on it.
-bool seamCrossesCellFace(const std::array<int, 3>& origin, std::uint8_t config, int size) noexcept {
-  const std::uint16_t bipolar = cell::bipolarEdgeMask(config);
-  for (int a = 0; a < 3; ++a) {
-    if (origin[a] == 0 && (bipolar & cell::cellFaceEdgeMask(2 * a))) return true;
-    if (origin[a] + 1 == size && (bipolar & cell::cellFaceEdgeMask(2 * a + 1))) return true;
-  }
-  return false;
-}
-
 /// True if every vertex full-resolution contouring places in the unit cells of `leaf` that
 /// the surface crosses lies within `maxError` of the mesh in `grid` or of `ownVertices` (the
 /// leaf's vertices in the mesh, given for a leaf on the meta-cell's boundary): manifold DMC's
@@ -110,14 +174,7 @@ bool unitCellVerticesWithin(const cell::MetaCellSamples& samples, const octree::
   // seam's triangles, stitched later with the neighbour's leaves: its vertices are left to the
   // octree's criterion (kPlaneShare). Otherwise the block's mesh and the leaf's own vertex must
   // cover them: a one-voxel finger ending just short of a seam crosses no face of it.
-  if (octree::touchesMetaCellBoundary(leaf.origin, leaf.size, samples.size)) {
-    bool crossed = false;
-    octree::forEachCrossedUnitCell(phases, leaf.origin, leaf.size,
-                                   [&](const std::array<int, 3>& origin, std::uint8_t config) {
-                                     crossed = crossed || seamCrossesCellFace(origin, config, samples.size);
-                                   });
-    if (crossed) return true;
-  }
+  if (octree::crossesMetaCellBoundary(phases, leaf.origin, leaf.size)) return true;
   bool within = true;
   std::uint32_t hint = std::numeric_limits<std::uint32_t>::max();  // the last triangle close enough
   // Within `reach` of the mesh: of its triangles, or of one of the leaf's own vertices, which

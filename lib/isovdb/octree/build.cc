@@ -247,20 +247,24 @@ class Builder {
     } else if ((options_.qefTolerance >= 0.0f || options_.maxError > 0.0f) && ev.leaf.surface) {
       const cell::DualVertex v = cellDualVertex(samples_, ev.leaf.origin, size, ev.leaf.bipolarEdges(),
                                                 cell::dualVertexOptions(settings_), crossings_);
-      // With a bound, the leaves inside the meta-cell are held by the bound's check after
-      // contouring; those on its boundary (their seams are stitched later, unchecked) by the
-      // plane test below and by this QEF share, which a thin structure beside a seam needs
-      // (kBoundedQefShare): so the share applies with the criterion turned off too.
-      const bool onBoundary = touchesMetaCellBoundary(ev.leaf.origin, size, samples_.size);
+      // With a bound, the leaves whose triangles the block makes are held by the bound's
+      // check after contouring; those whose face on the meta-cell's boundary the surface
+      // crosses (their seam triangles are stitched later, unchecked) by the plane test below
+      // and by this QEF share, which a thin structure beside a seam needs (kBoundedQefShare):
+      // so the share applies with the criterion turned off too. Two-voxel leaves touching
+      // the boundary keep the seam's share: with the looser one, the check's passes left the
+      // 64^3 genus-2 (seams of 32, E = 0.25) more triangles than regular mode.
       const float qefTolerance = options_.maxError > 0.0f
                                      ? std::max(options_.qefTolerance, kBoundedQefShare * options_.maxError)
                                      : options_.qefTolerance;
       ev.split = ev.geometric = v.valid() && qefTolerance >= 0.0f && v.rmsError() > qefTolerance;
       if (!ev.split && v.valid() && options_.maxError > 0.0f) {
         const Vec3f x = toMetaCellOffsets(v.position);
-        // On the boundary the margin the check keeps is kept here.
+        const bool onSeam = size <= 2 ? touchesMetaCellBoundary(ev.leaf.origin, size, samples_.size)
+                                      : crossesMetaCellBoundary(phases_, ev.leaf.origin, size);
+        // On the seam the margin the check keeps is kept here.
         const float reach = options_.maxError - kErrorBoundMargin;  // what the check allows
-        const float allowed = onBoundary ? kPlaneShare * options_.maxError - kErrorBoundMargin
+        const float allowed = onSeam ? kPlaneShare * options_.maxError - kErrorBoundMargin
                               : size <= 2
                                   ? std::max(kPlaneShare * options_.maxError, options_.maxError - kTwoVoxelReserve)
                                   : kInteriorPlaneShare * options_.maxError;

@@ -39,8 +39,8 @@ class SamplePhases;       // sample_phases.h
 
 /// What the error bound keeps in hand (voxels): the mesh is held to maxError less this where
 /// it is checked from samples (contour/error_bound.h: mesh points against the level set to
-/// first order, regular mode's vertices but not its triangles) and on the meta-cell's boundary,
-/// which only the tree's own criterion sees (its seam is stitched later). Between the samples,
+/// first order, regular mode's vertices but not its triangles) and on the seam, which only
+/// the tree's own criterion sees (it is stitched later). Between the samples,
 /// and where regular mode's mesh leaves the level set, up to 0.05 voxel went unseen: 48^3 and
 /// 64^3 blobs masks ended up to 0.30 voxel from regular mode's mesh at E = 0.25, a 300^3 torus
 /// 0.28 across a seam; with 1/16 voxel in hand one of 24 masks still ended 0.2503 away.
@@ -58,7 +58,10 @@ inline constexpr float kErrorBoundMargin = 0.1f;
 inline constexpr float kBoundedQefShare = 0.45f;
 
 /// The share of the error bound E the full-resolution surface may stray from a leaf's vertex
-/// plane (octree/surface_deviation.h) on the meta-cell's boundary: the mesh around the vertex
+/// plane (octree/surface_deviation.h) on the seam, a leaf whose face on the meta-cell's
+/// boundary the surface crosses (crossesMetaCellBoundary; a leaf of four voxels or more that
+/// only touches the boundary has no seam triangles, and the check holds it as inside; one of
+/// two voxels keeps this share): the mesh around the vertex
 /// is not that plane but triangles to the neighbours' vertices, each off by as much in its own
 /// cell (a share of 1 let a one-voxel bump under a leaf end 1.27 voxels from the adaptive mesh
 /// at E = 1). There the check does not hold the bound: the seams are stitched unchecked

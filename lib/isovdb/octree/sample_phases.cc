@@ -82,4 +82,28 @@ int SamplePhases::changesAlong(int i, int j, int k, int axis, int length) const 
   return changes;
 }
 
+bool crossesMetaCellBoundary(const SamplePhases& phases, const std::array<int, 3>& origin, int size) noexcept {
+  for (std::size_t a = 0; a < 3; ++a)
+    for (const int plane : {0, phases.size()}) {
+      if (origin[a] + (plane == 0 ? 0 : size) != plane) continue;
+      std::array<int, 3> p = origin;
+      p[a] = plane;
+      if (a != 0) {  // runs of size + 1 samples along x, one per line across the face
+        const std::size_t across = a == 1 ? 2 : 1;
+        const int first = phases.runPhase(p[0], p[1], p[2], size + 1);
+        if (first < 0) return true;
+        for (int t = 1; t <= size; ++t) {
+          p[across] = origin[across] + t;
+          if (phases.runPhase(p[0], p[1], p[2], size + 1) != first) return true;
+        }
+        continue;
+      }
+      const bool first = phases.inside(p);  // the face x = plane: sample by sample
+      for (int k = 0; k <= size; ++k)
+        for (int j = 0; j <= size; ++j)
+          if (phases.inside(plane, origin[1] + j, origin[2] + k) != first) return true;
+    }
+  return false;
+}
+
 }  // namespace isovdb::octree

@@ -127,4 +127,12 @@ void forEachCrossedUnitCell(const SamplePhases& phases, std::array<int, 3> origi
       }
 }
 
+/// @brief True if the surface crosses a face of the cell [origin, origin + size]^3 that
+///        lies on the boundary of the meta-cell [0, S]^3: the face's samples are not all of
+///        one phase, so a unit edge on it is bipolar. Only such a cell has triangles on the
+///        seam, which stitching makes later with the neighbouring block's cells and no check
+///        after contouring sees; every other cell's triangles are the block's own.
+/// @pre the cell lies in the block.
+bool crossesMetaCellBoundary(const SamplePhases& phases, const std::array<int, 3>& origin, int size) noexcept;
+
 }  // namespace isovdb::octree
