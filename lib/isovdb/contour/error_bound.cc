@@ -76,7 +76,8 @@ bool edgePointOffRegularQuad(const cell::MetaCellSamples& samples, const octree:
   if (!onLeafFace) return false;
   std::array<int, 3> end = start;
   ++end[static_cast<std::size_t>(axis)];
-  if ((samples.value(start) <= options.iso) == (samples.value(end) <= options.iso)) return false;  // not bipolar
+  if (cell::isInside(samples.value(start), options.iso) == cell::isInside(samples.value(end), options.iso))
+    return false;  // not bipolar
   std::array<Vec3d, 4> vertex{};
   for (int q = 0; q < 4; ++q) {
     const std::array<int, 3> origin = cell::edgeQuadrantVoxel(start, axis, q);
