@@ -211,6 +211,33 @@ TEST(ErrorBound, HoldsWhereRegularModesQuadLeavesTheLevel) {
   expectVoxelReadingBound(blobsInsideTheBox(64, 23), "blobs 64, seed 23", 32, 0.5f);
 }
 
+// Through extract, which gives the contouring the data's box: adaptive mode reads the samples
+// beyond it as far outside (its caps), regular mode's voxel reading keeps the field. The
+// Prewitt stencils on the box's faces read those samples, so adaptive mode's normals there
+// pointed straight out of the box: the vertex under a 2 x 2 column ending one voxel from the
+// box lay on the level, regular mode's at the QEF's apex 0.83 voxel away, at every E. The
+// faces keep the field's own gradients now (cell/box_rim_gradients.h).
+TEST(ErrorBound, HoldsOneVoxelFromTheDataBox) {
+  constexpr int kSide = 24;
+  auto stream = test::VectorSliceStream::fromFunction({kSide, kSide, kSide}, [](int x, int y, int z) {
+    const bool below = x >= 10 && x < 12 && z >= 10 && z < 12 && y >= 1 && y < 9;    // ends at y = 1
+    const bool above = x >= 14 && x < 16 && y >= 14 && y < 16 && z >= 15 && z < 23;  // at z = 22
+    const bool plate = x == 22 && y >= 5 && y < 7 && z >= 3 && z < 6;                // one voxel thin
+    return below || above || plate ? 1.0f : 0.0f;
+  });
+  const volume::Volume mask = volume::ingestMask(stream, {});
+  const auto meshOf = [&](ContourMethod method) {
+    ExtractOptions options;
+    options.contour.method = method;
+    options.octree.maxError = 0.25f;
+    options.metaCellSize = 16;
+    return extractMesh(mask, options);
+  };
+  const mesh::MeshDistance d =
+      mesh::compareMeshes(meshOf(ContourMethod::Regular), meshOf(ContourMethod::Adaptive), {.spacing = 0.25});
+  EXPECT_LE(d.hausdorff(), 0.25) << farthestBothWays(d, "regular", "adaptive");
+}
+
 // Inside a meta-cell, leaves of four voxels or more may stray kInteriorPlaneShare * E from
 // their vertex plane (the check covers them), two-voxel leaves only kPlaneShare * E: with the
 // looser share there too, a two-voxel leaf of these blobs (one meta-cell, the box's faces

@@ -18,9 +18,17 @@ namespace isovdb::cell {
 
 using isovdb::Vec3f;
 
-/// @brief Prewitt gradient at sample offset (i, j, k).
+/// @brief Prewitt gradient at sample offset (i, j, k); on a face of the data's box, the
+///        one kept before the samples beyond it were overwritten (samples.boxRim).
 /// @pre i, j, k in [0, S] (the apron supplies the outer neighbours).
 Vec3f prewittGradient(const cell::MetaCellSamples& samples, int i, int j, int k) noexcept;
+
+/// @brief Keeps the Prewitt gradients of the samples on the faces of the inclusive index box
+///        [boxMin, boxMax] (global index coordinates) that lie inside it, as the values are now,
+///        in samples.boxRim, where the block holds samples beyond a face; prewittGradient returns
+///        them from then on. Called before the samples beyond the box are overwritten.
+void keepBoxRimGradients(cell::MetaCellSamples& samples, const std::array<int, 3>& boxMin,
+                         const std::array<int, 3>& boxMax);
 
 /// @brief Gradient at the point `sample0 + t * e_axis` of a grid line, linearly
 ///        interpolated between the Prewitt gradients of its two end samples.

@@ -23,6 +23,7 @@ void MetaCellSamples::reshape(int newSize, std::array<int, 3> newOrigin, int new
   size = newSize;
   apron = newApron;
   origin = newOrigin;
+  boxRim.active = false;
   const std::size_t n = static_cast<std::size_t>(newSize + 1 + 2 * newApron);
   values.resize(n * n * n);
 }

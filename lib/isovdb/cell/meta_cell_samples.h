@@ -23,6 +23,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "isovdb/cell/box_rim_gradients.h"
+
 namespace isovdb::cell {
 
 /// @brief True iff a sample value is inside the isosurface (value <= iso).
@@ -34,6 +36,9 @@ struct MetaCellSamples {
   int apron = 1;                       ///< A, samples beyond the shared ones on each side (>= 1)
   std::array<int, 3> origin{0, 0, 0};  ///< index coordinate of the sample at offset (0,0,0)
   std::vector<float> values;           ///< (S + 1 + 2A)^3 values, offsets -A..S+A, x fastest
+  /// The field's own Prewitt gradients on the data box's faces, where the samples beyond it
+  /// read far outside (keepBoxRimGradients, cell/gradient.h); reset by allocate and reshape.
+  BoxRimGradients boxRim;
 
   /// Samples per axis including the apron (S + 1 + 2A).
   int stride() const noexcept { return size + 1 + 2 * apron; }

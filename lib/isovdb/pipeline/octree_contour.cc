@@ -17,6 +17,7 @@
 #include <memory>
 #include <optional>
 
+#include "isovdb/cell/gradient.h"
 #include "isovdb/contour/adaptive_contour.h"
 #include "isovdb/contour/error_bound.h"
 #include "isovdb/contour/regular_contour.h"
@@ -192,12 +193,15 @@ contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const E
 /// passed the positions before, folded its triangles (F3 above 3000: 7 self-intersecting pairs).
 void farOutsideBeyondDataBox(cell::MetaCellSamples& samples, float iso, float bound,
                              const std::optional<cell::DataBox>& box) {
+  samples.boxRim.active = false;
   if (!box) return;
   const int lo = -samples.apron, hi = samples.size + samples.apron;
   bool beyond = false;
   for (int a = 0; a < 3; ++a)
     beyond = beyond || samples.origin[a] + lo < (*box)[0][a] || samples.origin[a] + hi > (*box)[1][a];
   if (!beyond) return;
+  // The cells inside the box keep the field's own normals (cell/box_rim_gradients.h).
+  cell::keepBoxRimGradients(samples, (*box)[0], (*box)[1]);
   // At most 1e18 (hostile or non-finite values): the gradients' squares stay finite
   // floats. Always above the iso, even where adding to a huge iso changes nothing.
   float reach = 1e4f * (bound + std::abs(iso) + 1.0f);
