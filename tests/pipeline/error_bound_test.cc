@@ -211,6 +211,17 @@ TEST(ErrorBound, HoldsWhereRegularModesQuadLeavesTheLevel) {
   expectVoxelReadingBound(blobsInsideTheBox(64, 23), "blobs 64, seed 23", 32, 0.5f);
 }
 
+// Four one-voxel leaves around an edge whose vertices all sit well below its crossing:
+// regular mode's quad leaves the envelope, so it fans through the crossing, while adaptive
+// mode's polygon went through the point of a face the vertices' segment misses and stayed
+// below. At one-voxel leaves the check cannot split: these masks ended 0.32 (seed 20) and
+// 0.28 voxel (seed 43) from regular mode's mesh at E = 0.25, until such edges fanned where
+// regular mode fans (adaptive_edges.cc).
+TEST(ErrorBound, HoldsWhereRegularModeFansBetweenOneVoxelLeaves) {
+  for (const std::uint64_t seed : {20u, 43u})
+    expectVoxelReadingBound(blobsInsideTheBox(48, seed), "blobs 48, seed " + std::to_string(seed), kMetaCell);
+}
+
 // Through extract, which gives the contouring the data's box: adaptive mode reads the samples
 // beyond it as far outside (its caps), regular mode's voxel reading keeps the field. The
 // Prewitt stencils on the box's faces read those samples, so adaptive mode's normals there

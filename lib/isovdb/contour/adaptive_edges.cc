@@ -20,6 +20,27 @@ using octree::OctreeLeaf;
 /// counter-clockwise seen from +axis when (u, v, axis) is right-handed (axis x and z).
 constexpr std::array<int, 4> kCycle{0, 1, 3, 2};
 
+/// True when the leaves around an edge are all one voxel (coarser leaves on either side of
+/// it also make four cells).
+bool allOneVoxel(const LinearOctree& tree, const std::array<std::int64_t, 4>& cells) {
+  return std::all_of(cells.begin(), cells.end(),
+                     [&](std::int64_t l) { return tree.leaf(static_cast<std::size_t>(l)).size == 1; });
+}
+
+/// True when the quad of an edge's four cell points, split along one of its diagonals,
+/// lies in the edge's envelope: regular mode's test before it fans (voxelQuadTriangles).
+bool plainQuadFitsEnvelope(const EdgeEnvelope& envelope) {
+  const auto& c = envelope.cellPoints;
+  for (int apex = 0; apex < 2; ++apex) {
+    const Vec3d& a = c[static_cast<std::size_t>(apex)];
+    if (triangleInEnvelope(envelope, a, c[static_cast<std::size_t>(apex + 1)], c[static_cast<std::size_t>(apex + 2)]) &&
+        triangleInEnvelope(envelope, a, c[static_cast<std::size_t>(apex + 2)],
+                           c[static_cast<std::size_t>((apex + 3) % 4)]))
+      return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 Vec3d cellPointInside(const mesh::Vec3f& vertex, const OctreeLeaf& leaf, const std::array<int, 3>& treeOrigin) {
@@ -203,6 +224,16 @@ void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool
     const double m = kInteriorMargin * s;
     r.edgePoint[axis] = env.edgeStart[axis] + std::clamp(t, m, s - m);
     r.how = chooseTriangulation(env, crossed, intersectionFree);
+    // A mask read as voxels: four one-voxel leaves are regular mode's cells with regular
+    // mode's vertices, and regular mode triangulates their quad as voxelQuadTriangles does
+    // (on fields it takes this path itself). Where a face between them is not crossed and
+    // neither diagonal of the plain quad fits the envelope, regular mode fans through the
+    // edge's crossing: so does this edge, through its face points. A polygon through the
+    // face point instead lay 0.32 voxel from that fan's apex (a 48^3 blobs mask at E =
+    // 0.25), where the error bound's check cannot split any further.
+    if (intersectionFree && source.voxelCells && !r.how.fan && k == 4 && r.uncrossedFace && allOneVoxel(tree, cells) &&
+        !plainQuadFitsEnvelope(env))
+      r.how = EdgeTriangulation{true, 0};
     if (intersectionFree) r.crossed = crossed;
   }
 }
