@@ -27,20 +27,6 @@ bool allOneVoxel(const LinearOctree& tree, const std::array<std::int64_t, 4>& ce
                      [&](std::int64_t l) { return tree.leaf(static_cast<std::size_t>(l)).size == 1; });
 }
 
-/// True when the quad of an edge's four cell points, split along one of its diagonals,
-/// lies in the edge's envelope: regular mode's test before it fans (voxelQuadTriangles).
-bool plainQuadFitsEnvelope(const EdgeEnvelope& envelope) {
-  const auto& c = envelope.cellPoints;
-  for (int apex = 0; apex < 2; ++apex) {
-    const Vec3d& a = c[static_cast<std::size_t>(apex)];
-    if (triangleInEnvelope(envelope, a, c[static_cast<std::size_t>(apex + 1)], c[static_cast<std::size_t>(apex + 2)]) &&
-        triangleInEnvelope(envelope, a, c[static_cast<std::size_t>(apex + 2)],
-                           c[static_cast<std::size_t>((apex + 3) % 4)]))
-      return true;
-  }
-  return false;
-}
-
 }  // namespace
 
 Vec3d cellPointInside(const mesh::Vec3f& vertex, const OctreeLeaf& leaf, const std::array<int, 3>& treeOrigin) {
@@ -232,7 +218,7 @@ void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool
     // face point instead lay 0.32 voxel from that fan's apex (a 48^3 blobs mask at E =
     // 0.25), where the error bound's check cannot split any further.
     if (intersectionFree && source.voxelCells && !r.how.fan && k == 4 && r.uncrossedFace && allOneVoxel(tree, cells) &&
-        !plainQuadFitsEnvelope(env))
+        !plainQuadInEnvelope(env))
       r.how = EdgeTriangulation{true, 0};
     if (intersectionFree) r.crossed = crossed;
   }

@@ -310,6 +310,16 @@ bool triangleInEnvelope(const EdgeEnvelope& envelope, const Vec3d& a, const Vec3
   return triangleInSectors(EnvelopeSectors(envelope), a, b, c, options);
 }
 
+bool plainQuadInEnvelope(const EdgeEnvelope& envelope, const EnvelopeOptions& options) {
+  const EnvelopeSectors sectors(envelope);
+  const auto& c = envelope.cellPoints;
+  for (std::size_t apex = 0; apex < 2; ++apex)
+    if (triangleInSectors(sectors, c[apex], c[apex + 1], c[apex + 2], options) &&
+        triangleInSectors(sectors, c[apex], c[apex + 2], c[(apex + 3) % 4], options))
+      return true;
+  return false;
+}
+
 std::vector<int> edgePolygon(int cellCount, const std::array<bool, 4>& facesCrossed) {
   const EdgePolygon polygon(cellCount, facesCrossed);
   return {polygon.local.begin(), polygon.local.begin() + polygon.size};

@@ -129,6 +129,12 @@ FacePoint computeFacePoint(const Vec3d& a, const Vec3d& b, const MinimalFace& fa
 bool triangleInEnvelope(const EdgeEnvelope& envelope, const Vec3d& a, const Vec3d& b, const Vec3d& c,
                         const EnvelopeOptions& options = {});
 
+/// @brief True when the quad of a four-cell edge's cell points (cyclic order, no face
+///        points), split along one of its diagonals, lies in the envelope: regular mode's test
+///        before it fans through the edge's crossing (voxelQuadTriangles). The sectors are
+///        built once for the up to four triangles.
+bool plainQuadInEnvelope(const EdgeEnvelope& envelope, const EnvelopeOptions& options = {});
+
 /// @brief A sufficient condition for triangleInEnvelope to keep every triangle of an
 ///        edge's polygon with every face crossed: the quad (k = 4) split from cell vertex
 ///        `apex` (0 or 1), or the triangle (k = 3, apex 0), decided without clipping: true
