@@ -10,6 +10,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "isovdb/bit_count.h"
+
 namespace isovdb::cell {
 
 /// @name Cell corners, edges and faces (shared numbering for octree and contour)
@@ -90,7 +92,7 @@ constexpr std::uint16_t bipolarEdgeMask(std::uint8_t cornerSigns) noexcept {
 /// @brief True for the four configurations whose only inside corners are the two ends of a body diagonal.
 constexpr bool isTubeConfig(std::uint8_t cornerSigns) noexcept {
   const auto bits = static_cast<unsigned>(cornerSigns);
-  if (std::popcount(bits) != 2) return false;
+  if (countBits(bits) != 2) return false;  // (std::popcount is a libgcc call on Debian's x86-64)
   return ((bits >> (std::countr_zero(bits) ^ 7)) & 1u) != 0;
 }
 

@@ -25,10 +25,7 @@ bool intersectEdge(const cell::MetaCellSamples& samples, std::array<int, 3> star
     prev = cur;
   }
   if (first < 0) return false;
-  const float v0 = p[first * step], v1 = p[(first + 1) * step];
-  // v0 and v1 lie on either side of iso (one <= iso < other), so v1 != v0.
-  float t = (iso - v0) / (v1 - v0);
-  t = t < 0.0f ? 0.0f : (t > 1.0f ? 1.0f : t);
+  const float t = crossingFraction(p[first * step], p[(first + 1) * step], iso);
   std::array<int, 3> s0 = start;
   s0[axis] += first;
   out.point = {static_cast<float>(s0[0]), static_cast<float>(s0[1]), static_cast<float>(s0[2])};
@@ -42,6 +39,21 @@ bool intersectEdge(const cell::MetaCellSamples& samples, std::array<int, 3> star
   }
   out.transitions = transitions;
   return true;
+}
+
+EdgeIntersection unitEdgeCrossing(const cell::MetaCellSamples& samples, const std::array<int, 3>& start, int axis,
+                                  float iso, const Vec3f& g0, const Vec3f& g1) noexcept {
+  const std::ptrdiff_t step = axis == 0   ? 1
+                              : axis == 1 ? samples.stride()
+                                          : static_cast<std::ptrdiff_t>(samples.stride()) * samples.stride();
+  const float* p = samples.values.data() + samples.indexOf(start[0], start[1], start[2]);
+  const float t = crossingFraction(p[0], p[step], iso);
+  EdgeIntersection out;
+  out.point = {static_cast<float>(start[0]), static_cast<float>(start[1]), static_cast<float>(start[2])};
+  out.point[static_cast<std::size_t>(axis)] += t;
+  out.normal = normalized(gradientBetween(g0, g1, t));
+  out.transitions = 1;
+  return out;
 }
 
 }  // namespace isovdb::cell

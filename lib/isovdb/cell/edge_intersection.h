@@ -33,4 +33,19 @@ struct EdgeIntersection {
 bool intersectEdge(const cell::MetaCellSamples& samples, std::array<int, 3> start, int axis, int length, float iso,
                    EdgeIntersection& out, bool sharpFeatures = false) noexcept;
 
+/// @brief Where the level crosses between two samples on either side of it (one <= iso <
+///        other), as a fraction of the way from the first, in [0, 1].
+inline float crossingFraction(float v0, float v1, float iso) noexcept {
+  const float t = (iso - v0) / (v1 - v0);  // v1 != v0: they lie on either side of iso
+  return t < 0.0f ? 0.0f : (t > 1.0f ? 1.0f : t);
+}
+
+/// @brief intersectEdge's crossing of a bipolar unit edge (length 1, without sharp features)
+///        with the Prewitt gradients of its two samples given (`g0` at `start`, `g1` one step
+///        along `axis`): the same point and normal, bit for bit, for a caller that finds each
+///        sample's gradient once (octree/unit_edge_crossings.cc).
+/// @pre the edge is bipolar at `iso` and lies in [0, S]^3.
+EdgeIntersection unitEdgeCrossing(const cell::MetaCellSamples& samples, const std::array<int, 3>& start, int axis,
+                                  float iso, const Vec3f& g0, const Vec3f& g1) noexcept;
+
 }  // namespace isovdb::cell

@@ -81,8 +81,7 @@ Vec3f prewittGradientOnEdge(const cell::MetaCellSamples& samples, std::array<int
   ++sample1[axis];
   const Vec3f g0 = prewittGradient(samples, sample0[0], sample0[1], sample0[2]);
   if (t <= 0.0f) return g0;
-  const Vec3f g1 = prewittGradient(samples, sample1[0], sample1[1], sample1[2]);
-  return {g0[0] + t * (g1[0] - g0[0]), g0[1] + t * (g1[1] - g0[1]), g0[2] + t * (g1[2] - g0[2])};
+  return gradientBetween(g0, prewittGradient(samples, sample1[0], sample1[1], sample1[2]), t);
 }
 
 Vec3f normalized(const Vec3f& v) noexcept {

@@ -36,6 +36,13 @@ void keepBoxRimGradients(cell::MetaCellSamples& samples, const std::array<int, 3
 Vec3f prewittGradientOnEdge(const cell::MetaCellSamples& samples, std::array<int, 3> sample0, int axis,
                             float t) noexcept;
 
+/// @brief The gradient at parameter t of a grid line whose end samples have gradients `g0`
+///        and `g1`, as prewittGradientOnEdge interpolates them (g0 itself at t <= 0).
+inline Vec3f gradientBetween(const Vec3f& g0, const Vec3f& g1, float t) noexcept {
+  if (t <= 0.0f) return g0;
+  return {g0[0] + t * (g1[0] - g0[0]), g0[1] + t * (g1[1] - g0[1]), g0[2] + t * (g1[2] - g0[2])};
+}
+
 /// @brief Dot product.
 inline float dot(const Vec3f& a, const Vec3f& b) noexcept { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 

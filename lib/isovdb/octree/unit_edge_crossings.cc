@@ -3,12 +3,63 @@
 #include "isovdb/octree/unit_edge_crossings.h"
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
+#include <utility>
+#include <vector>
 #include <bit>
 
 #include "isovdb/bit_count.h"
 #include "isovdb/octree/sample_phases.h"
 
 namespace isovdb::octree {
+
+namespace {
+
+/// The Prewitt gradients of the samples of two neighbouring slices (z = k and k + 1), each
+/// computed when an edge first asks for it: a sample beside the surface ends two or three
+/// bipolar edges, and the gradients were most of this table's cost.
+class SliceGradients {
+ public:
+  explicit SliceGradients(const cell::MetaCellSamples& samples)
+      : samples_(samples), side_(static_cast<std::size_t>(samples.size) + 1) {
+    for (Slice& slice : slices_) {
+      slice.gradients.resize(side_ * side_);
+      slice.known.assign((side_ * side_ + 63) / 64, 0);
+    }
+  }
+
+  /// Moves the slices up by one: the upper becomes the lower, the new upper is empty.
+  void advance() {
+    std::swap(slices_[0], slices_[1]);
+    std::fill(slices_[1].known.begin(), slices_[1].known.end(), 0);
+    ++lowerZ_;
+  }
+
+  /// prewittGradient at sample (i, j, lowerZ + dz), dz 0 or 1.
+  const cell::Vec3f& at(int i, int j, int dz) {
+    Slice& slice = slices_[static_cast<std::size_t>(dz)];
+    const std::size_t n = static_cast<std::size_t>(j) * side_ + static_cast<std::size_t>(i);
+    const std::uint64_t bit = std::uint64_t{1} << (n & 63);
+    if ((slice.known[n >> 6] & bit) == 0) {
+      slice.gradients[n] = cell::prewittGradient(samples_, i, j, lowerZ_ + dz);
+      slice.known[n >> 6] |= bit;
+    }
+    return slice.gradients[n];
+  }
+
+ private:
+  struct Slice {
+    std::vector<cell::Vec3f> gradients;
+    std::vector<std::uint64_t> known;
+  };
+  const cell::MetaCellSamples& samples_;
+  std::size_t side_;
+  int lowerZ_ = 0;
+  std::array<Slice, 2> slices_;
+};
+
+}  // namespace
 
 UnitEdgeCrossings::UnitEdgeCrossings(const cell::MetaCellSamples& samples, float iso, bool sharpFeatures)
     : UnitEdgeCrossings(samples, SamplePhases(samples, iso), iso, sharpFeatures) {}
@@ -23,7 +74,8 @@ UnitEdgeCrossings::UnitEdgeCrossings(const cell::MetaCellSamples& samples, const
     before_[static_cast<std::size_t>(axis)].assign(rows * static_cast<std::size_t>(wordsPerRow_), 0);
     crossings_[static_cast<std::size_t>(axis)].clear();
   }
-  for (int k = 0; k <= s; ++k)
+  SliceGradients gradients(samples);
+  for (int k = 0; k <= s; ++k, gradients.advance())
     for (int j = 0; j <= s; ++j) {
       const std::size_t row =
           (static_cast<std::size_t>(k) * static_cast<std::size_t>(s + 1) + static_cast<std::size_t>(j)) *
@@ -44,9 +96,16 @@ UnitEdgeCrossings::UnitEdgeCrossings(const cell::MetaCellSamples& samples, const
           before_[static_cast<std::size_t>(axis)][row + static_cast<std::size_t>(w)] =
               static_cast<std::uint32_t>(crossings.size());
           for (std::uint64_t b = bits[static_cast<std::size_t>(axis)]; b != 0; b &= b - 1) {
-            cell::EdgeIntersection hit;
-            cell::intersectEdge(samples, {i0 + std::countr_zero(b), j, k}, axis, 1, iso, hit, sharpFeatures);
-            crossings.push_back(hit);
+            const int i = i0 + std::countr_zero(b);
+            if (sharpFeatures) {  // crossings beside a crease are placed from its faces
+              cell::EdgeIntersection hit;
+              cell::intersectEdge(samples, {i, j, k}, axis, 1, iso, hit, true);
+              crossings.push_back(hit);
+              continue;
+            }
+            const cell::Vec3f& g0 = gradients.at(i, j, 0);
+            const cell::Vec3f& g1 = gradients.at(i + (axis == 0 ? 1 : 0), j + (axis == 1 ? 1 : 0), axis == 2 ? 1 : 0);
+            crossings.push_back(cell::unitEdgeCrossing(samples, {i, j, k}, axis, iso, g0, g1));
           }
         }
       }

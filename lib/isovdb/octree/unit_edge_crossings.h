@@ -11,7 +11,9 @@
 /// the bipolar edges of each row of samples are a bit mask (neighbouring phase
 /// bits XORed), and an edge's index is the set bits before it (a prefix count
 /// per 64-bit word plus a popcount), as Flying Edges indexes its edge cases.
-/// The crossings are intersectEdge's, so the vertices are bit for bit the same.
+/// The crossings are intersectEdge's, so the vertices are bit for bit the same; each
+/// sample's Prewitt gradient is computed once too (a sample beside the surface ends two or
+/// three bipolar edges).
 #pragma once
 
 #include <array>

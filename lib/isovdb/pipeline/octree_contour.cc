@@ -94,10 +94,12 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 /// Builds the octree of one block of samples and contours it (edges inside the block; the seam kept).
 /// `iso` is the settings' isovalue as the engine reads this block (negated on a scalar field).
-/// `finalTree` (optional) receives the tree the mesh was contoured from.
+/// `finalTree` (optional) receives the tree the mesh was contoured from. `givenPhases`: the
+/// samples' phases at `iso` where the caller has them (else computed here).
 contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const Engine& engine, float iso,
                                    MetaCellTotals& totals, Interrupter* interrupter,
-                                   octree::LinearOctree* finalTree = nullptr) {
+                                   octree::LinearOctree* finalTree = nullptr,
+                                   const octree::SamplePhases* givenPhases = nullptr) {
   cell::ContourSettings settings = engine.settings;
   settings.iso = iso;
   octree::OctreeOptions options = engine.tree;
@@ -115,7 +117,9 @@ contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const E
   // The samples' phases, read by the tree, the crossings' table and the error bound (each
   // computed its own: a pass over the block's floats, 4 % of an adaptive run).
   auto t0 = std::chrono::steady_clock::now();
-  const octree::SamplePhases phases(samples, iso);
+  std::optional<octree::SamplePhases> ownPhases;
+  if (givenPhases == nullptr) ownPhases.emplace(samples, iso);
+  const octree::SamplePhases& phases = givenPhases ? *givenPhases : *ownPhases;
   totals.octreeSeconds += secondsSince(t0);
   std::optional<octree::UnitEdgeCrossings> crossings;
   bool crossingsDecided = false;
@@ -402,8 +406,15 @@ class MetaCellRun {
                     read(cells[job->position], samples);
                     const float iso = engineIso(kind_, options.iso, engine_, samples);
                     job->totals.readSeconds += secondsSince(t0);
-                    job->contoured = volume::hasSignChange(samples, iso);
-                    if (job->contoured) job->result = contourBlock(samples, engine_, iso, job->totals, nullptr);
+                    // The phases tell whether the level crosses the block, and the tree, the
+                    // crossings and the error bound read them (hasSignChange was one more
+                    // pass over the block's floats).
+                    const auto t1 = std::chrono::steady_clock::now();
+                    const octree::SamplePhases phases(samples, iso);
+                    job->totals.octreeSeconds += secondsSince(t1);
+                    job->contoured = phases.boxPhase({0, 0, 0}, samples.size + 1) < 0;
+                    if (job->contoured)
+                      job->result = contourBlock(samples, engine_, iso, job->totals, nullptr, nullptr, &phases);
                   });
                   return job;
                 }) &

@@ -183,31 +183,56 @@ void readBlock(const Volume& field, const std::array<int, 3>& origin, int size, 
   const openvdb::Coord hi = lo.offsetBy(n - 1);
   const std::size_t rowStride = static_cast<std::size_t>(n), sliceStride = rowStride * rowStride;
   auto accessor = grid.getConstAccessor();
-  // Leaf-aligned blocks, x fastest like the samples. tools::copyToDense does the
-  // same walk with z innermost, which for this x-fastest block is a strided write
-  // per sample (it cost more than the octree's face labelling).
+  // One row of leaf-sized blocks along x at a time: its leaves (or their tile values) are
+  // found once, then each of its 64 rows of samples is written whole, left to right. The
+  // block is 130^3 samples and mostly background, so the writes dominate: leaf by leaf,
+  // a row of 8 samples at a time, they jumped between 64 rows (this took 11 % of a regular
+  // run on the 256^3 blobs). tools::copyToDense walks with z innermost, a strided write
+  // per sample for this x-fastest block.
+  const int firstBlockX = lo.x() & ~(kLeafDim - 1);
+  const int blocksX = ((hi.x() - firstBlockX) >> Leaf::LOG2DIM) + 1;
+  std::vector<const Leaf*> rowLeaves(static_cast<std::size_t>(blocksX));
+  std::vector<float> rowTiles(static_cast<std::size_t>(blocksX));
   for (int bz = lo.z() & ~(kLeafDim - 1); bz <= hi.z(); bz += kLeafDim)
-    for (int by = lo.y() & ~(kLeafDim - 1); by <= hi.y(); by += kLeafDim)
-      for (int bx = lo.x() & ~(kLeafDim - 1); bx <= hi.x(); bx += kLeafDim) {
+    for (int by = lo.y() & ~(kLeafDim - 1); by <= hi.y(); by += kLeafDim) {
+      for (int b = 0; b < blocksX; ++b) {
+        const int bx = firstBlockX + b * kLeafDim;
         const openvdb::Coord block(bx, by, bz);
-        const openvdb::Coord from = openvdb::Coord::maxComponent(block, lo);
-        const openvdb::Coord to = openvdb::Coord::minComponent(block.offsetBy(kLeafDim - 1), hi);
         const Leaf* leaf = accessor.probeConstLeaf(block);
-        const float tile = leaf ? 0.0f : blockWithoutLeaf ? blockWithoutLeaf({bx, by, bz}) : accessor.getValue(block);
-        for (int z = from.z(); z <= to.z(); ++z)
-          for (int y = from.y(); y <= to.y(); ++y) {
-            float* row = out.values.data() + static_cast<std::size_t>(z - lo.z()) * sliceStride +
-                         static_cast<std::size_t>(y - lo.y()) * rowStride + (from.x() - lo.x());
-            if (leaf == nullptr) {
-              std::fill(row, row + (to.x() - from.x() + 1), tile);
+        rowLeaves[static_cast<std::size_t>(b)] = leaf;
+        rowTiles[static_cast<std::size_t>(b)] = leaf               ? 0.0f
+                                                : blockWithoutLeaf ? blockWithoutLeaf({bx, by, bz})
+                                                                   : accessor.getValue(block);
+      }
+      const int z0 = std::max(bz, lo.z()), z1 = std::min(bz + kLeafDim - 1, hi.z());
+      const int y0 = std::max(by, lo.y()), y1 = std::min(by + kLeafDim - 1, hi.y());
+      for (int z = z0; z <= z1; ++z)
+        for (int y = y0; y <= y1; ++y) {
+          float* row = out.values.data() + static_cast<std::size_t>(z - lo.z()) * sliceStride +
+                       static_cast<std::size_t>(y - lo.y()) * rowStride;
+          // A leaf stores z fastest: offset (x << 6) + (y << 3) + z within it.
+          const auto inLeaf = static_cast<std::size_t>(Leaf::coordToOffset(openvdb::Coord(0, y, z)));
+          for (int b = 0; b < blocksX; ++b) {
+            const int bx = firstBlockX + b * kLeafDim;
+            const int x0 = std::max(bx, lo.x());
+            float* to = row + (x0 - lo.x());
+            const Leaf* leaf = rowLeaves[static_cast<std::size_t>(b)];
+            if (leaf == nullptr) {  // with the blocks after it that hold the same value, in one fill
+              const float tile = rowTiles[static_cast<std::size_t>(b)];
+              while (b + 1 < blocksX && rowLeaves[static_cast<std::size_t>(b) + 1] == nullptr &&
+                     rowTiles[static_cast<std::size_t>(b) + 1] == tile)
+                ++b;
+              const int x1 = std::min(firstBlockX + b * kLeafDim + kLeafDim - 1, hi.x());
+              std::fill(to, to + (x1 - x0 + 1), tile);
               continue;
             }
-            // A leaf stores z fastest: offset (x << 6) + (y << 3) + z within it.
-            const float* column = leaf->buffer().data() + Leaf::coordToOffset(openvdb::Coord(0, y, z));
-            for (int x = from.x(); x <= to.x(); ++x)
-              row[x - from.x()] = column[static_cast<std::size_t>(x & (kLeafDim - 1)) << (2 * Leaf::LOG2DIM)];
+            const int x1 = std::min(bx + kLeafDim - 1, hi.x());
+            const float* column = leaf->buffer().data() + inLeaf;
+            for (int x = x0; x <= x1; ++x)
+              to[x - x0] = column[static_cast<std::size_t>(x & (kLeafDim - 1)) << (2 * Leaf::LOG2DIM)];
           }
-      }
+        }
+    }
 }
 
 bool hasSignChange(const cell::MetaCellSamples& samples, float iso) {
