@@ -64,11 +64,15 @@ DualVertex dualVertexFromCrossings(const cell::MetaCellSamples& samples, std::ar
   const std::size_t n = points.size();
   if (n == 0) return v;
   v.edges = edges;
-  const QefSolution s = solveQef(points, normals, QefOptions{.singularValueThreshold = options.singularValueThreshold});
+  // (With sharp features a rank-2 minimiser slides along its free direction.)
+  const QefSolution s = solveQef(points, normals,
+                                 QefOptions{.singularValueThreshold = options.singularValueThreshold,
+                                            .positionOnly = options.positionOnly && !options.sharpFeatures});
   v.intersections = static_cast<std::uint8_t>(n);
   v.rank = static_cast<std::uint8_t>(s.rank);
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = i + 1; j < n; ++j) v.minNormalDot = std::min(v.minNormalDot, dot(normals[i], normals[j]));
+  if (!options.positionOnly)
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = i + 1; j < n; ++j) v.minNormalDot = std::min(v.minNormalDot, dot(normals[i], normals[j]));
   Vec3f x = s.point;
   if (options.sharpFeatures && s.rank == 2) x = slideIntoCell(x, s.freeDirections[0], cellOrigin, cellSize);
   const float slack = options.sharpFeatures ? kFeatureSlack : 1e-4f;  // else a rounding tolerance on the cell box
@@ -85,7 +89,7 @@ DualVertex dualVertexFromCrossings(const cell::MetaCellSamples& samples, std::ar
   // moves onto the cell's boundary, no farther than the slack.
   for (int a = 0; a < 3; ++a)
     x[a] = std::clamp(x[a], static_cast<float>(cellOrigin[a]), static_cast<float>(cellOrigin[a] + cellSize));
-  v.qefError = inside && !options.sharpFeatures ? s.error : qefError(points, normals, x);
+  if (!options.positionOnly) v.qefError = inside && !options.sharpFeatures ? s.error : qefError(points, normals, x);
   for (int a = 0; a < 3; ++a) v.position[a] = x[a] + static_cast<float>(samples.origin[a]);
   return v;
 }

@@ -116,12 +116,13 @@ QefSolution solveQef(std::span<const Vec3f> points, std::span<const Vec3f> norma
   Eigen::Vector3d kept;
   if (const std::optional<Eigen::Vector3d> c = rankOneOffset(ata, atr, options.singularValueThreshold, kept)) {
     s.rank = 1;
+    s.point = toVec3f(mass + *c);
+    s.massPoint = toVec3f(mass);
+    if (options.positionOnly) return s;
     // The truncated directions span the plane normal to the kept one; any unit basis of it.
     const Eigen::Vector3d u = kept.unitOrthogonal(), w = kept.cross(u);
     s.freeDirections[0] = toVec3f(u);
     s.freeDirections[1] = toVec3f(w);
-    s.point = toVec3f(mass + *c);
-    s.massPoint = toVec3f(mass);
     s.error = qefError(points, normals, s.point);
     return s;
   }
@@ -163,7 +164,7 @@ QefSolution solveQef(std::span<const Vec3f> points, std::span<const Vec3f> norma
   const Eigen::Vector3d x = mass + c;
   s.point = toVec3f(x);
   s.massPoint = toVec3f(mass);
-  s.error = qefError(points, normals, s.point);
+  if (!options.positionOnly) s.error = qefError(points, normals, s.point);
   return s;
 }
 

@@ -25,6 +25,8 @@ using isovdb::Vec3f;
 struct QefOptions {
   float singularValueThreshold = 0.1f;  ///< relative to the largest singular value of A^T A;
                                         ///< higher = smoother (fewer sharp features), lower = sharper but less stable
+  /// Only the point, the mass point and the rank are wanted: error and freeDirections stay 0.
+  bool positionOnly = false;
 };
 
 /// @brief Minimiser of a QEF.

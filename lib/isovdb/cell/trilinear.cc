@@ -83,6 +83,7 @@ bool levelWithin(const MetaCellSamples& samples, const Vec3f& point, const DualV
     return d;
   };
   DualVertexOptions vertexOptions = options;
+  vertexOptions.positionOnly = true;
   for (int k = from[2]; k <= to[2]; ++k)
     for (int j = from[1]; j <= to[1]; ++j)
       for (int i = from[0]; i <= to[0]; ++i) {

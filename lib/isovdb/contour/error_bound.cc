@@ -176,6 +176,7 @@ bool unitCellVerticesWithin(const cell::MetaCellSamples& samples, const octree::
   // octree's criterion (kPlaneShare). Otherwise the block's mesh and the leaf's own vertex must
   // cover them: a one-voxel finger ending just short of a seam crosses no face of it.
   if (octree::crossesMetaCellBoundary(phases, leaf.origin, leaf.size)) return true;
+  options.positionOnly = true;
   bool within = true;
   std::uint32_t hint = std::numeric_limits<std::uint32_t>::max();  // the last triangle close enough
   // Within `reach` of the mesh: of its triangles, or of one of the leaf's own vertices, which

@@ -148,6 +148,7 @@ std::vector<mesh::Vec3f> placeGroupVertices(const cell::MetaCellSamples& samples
           // Tube sectors and split faces are pieces of a sheet: their mass points too.
           cell::DualVertexOptions groupOptions = options;
           groupOptions.massPointOnly = entry.vertexCount > 1 || capped;
+          groupOptions.positionOnly = true;
           const std::uint8_t config = groups.configs[i];
           const bool tube = groups.voxels && isTubeConfig(config);
           std::array<std::uint16_t, 10> vertexEdges{};
