@@ -183,6 +183,19 @@ FaceLabeller::Result FaceLabeller::label(const SamplePhases& phases, std::array<
 
 bool hasHiddenComponent(const SamplePhases& phases, std::array<int, 3> origin, int size) {
   if (size < 2) return false;  // no sample off the faces
+  if (size == 2) {
+    // One interior sample, whose six neighbours are the faces' centres: it is a component of
+    // its own iff they all read the other phase (the flood below, without its rows).
+    const std::array<int, 3> centre{origin[0] + 1, origin[1] + 1, origin[2] + 1};
+    const bool phase = phases.inside(centre);
+    for (std::size_t a = 0; a < 3; ++a)
+      for (const int d : {-1, 1}) {
+        std::array<int, 3> p = centre;
+        p[a] += d;
+        if (phases.inside(p) == phase) return false;
+      }
+    return true;
+  }
   const int n = size + 1;
   if (n <= 64) {
     // One word per row of x, rows indexed y + n z.

@@ -110,8 +110,8 @@ inline cell::DualVertex cellDualVertex(const cell::MetaCellSamples& samples, con
 
 /// @brief Where the surface crosses edge `e` of the cell of `size` at `origin` (meta-cell
 ///        offsets), in voxels from the edge's start corner; NaN where the samples show no
-///        crossing. Unit edges read `crossings` where there is a table (intersectEdge's
-///        values, found once), longer ones intersectEdge.
+///        crossing. Read from `crossings` where there is a table (intersectEdge's point:
+///        that of the edge's first bipolar unit edge, found once), else intersectEdge.
 /// @pre `crossings` (if any) were found from `samples` at `iso`, with `sharpFeatures`.
 inline double leafEdgeCrossing(const cell::MetaCellSamples& samples, const std::array<int, 3>& origin, int size, int e,
                                float iso, bool sharpFeatures, const UnitEdgeCrossings* crossings) {
@@ -119,8 +119,8 @@ inline double leafEdgeCrossing(const cell::MetaCellSamples& samples, const std::
   const std::array<int, 3> start = cell::cellEdgeStart(origin, size, e);
   cell::EdgeIntersection ix;
   const cell::EdgeIntersection* hit = &ix;
-  if (crossings != nullptr && size == 1)
-    hit = crossings->find(start, axis);
+  if (crossings != nullptr)
+    hit = crossings->findFirst(start, axis, size);
   else if (!cell::intersectEdge(samples, start, axis, size, iso, ix, sharpFeatures))
     hit = nullptr;
   if (hit == nullptr) return std::numeric_limits<double>::quiet_NaN();
