@@ -199,20 +199,6 @@ struct EdgePolygon {
 
 }  // namespace
 
-QuadrantFace faceBetweenQuadrants(const std::array<int, 3>& edgeStart, int axis, int size, int q, int next) {
-  const auto uv = cell::otherAxes(axis);
-  const int bit = (q ^ next) == 1 ? 0 : 1, other = 1 - bit;
-  const int n = uv[static_cast<std::size_t>(bit)], m = uv[static_cast<std::size_t>(other)];
-  QuadrantFace result;
-  result.face.axis = n;
-  result.face.coordinate = edgeStart[static_cast<std::size_t>(n)];
-  result.face.size = size;
-  for (int a = 0; a < 3; ++a) result.face.min[a] = edgeStart[static_cast<std::size_t>(a)];
-  if (((q >> other) & 1) == 0) result.face.min[m] -= size;
-  result.firstOnMinSide = ((q >> bit) & 1) == 0;
-  return result;
-}
-
 namespace {
 
 /// A face point the segment misses keeps the clamp of the segment's crossing with the

@@ -37,6 +37,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "isovdb/cell/cell_geometry.h"
 #include "isovdb/vec3.h"
 
 namespace isovdb::contour {
@@ -71,7 +72,19 @@ struct QuadrantFace {
 ///        bit 0 = +u side, bit 1 = +v side, as cell::edgeQuadrantVoxel) around the edge from
 ///        `edgeStart` along `axis`, cells of side `size`: on the plane of the edge across
 ///        which they differ, spanning the edge and the cells' side away from it.
-QuadrantFace faceBetweenQuadrants(const std::array<int, 3>& edgeStart, int axis, int size, int q, int next);
+inline QuadrantFace faceBetweenQuadrants(const std::array<int, 3>& edgeStart, int axis, int size, int q, int next) {
+  const auto uv = cell::otherAxes(axis);
+  const int bit = (q ^ next) == 1 ? 0 : 1, other = 1 - bit;
+  const int n = uv[static_cast<std::size_t>(bit)], m = uv[static_cast<std::size_t>(other)];
+  QuadrantFace result;
+  result.face.axis = n;
+  result.face.coordinate = edgeStart[static_cast<std::size_t>(n)];
+  result.face.size = size;
+  for (int a = 0; a < 3; ++a) result.face.min[a] = edgeStart[static_cast<std::size_t>(a)];
+  if (((q >> other) & 1) == 0) result.face.min[m] -= size;
+  result.firstOnMinSide = ((q >> bit) & 1) == 0;
+  return result;
+}
 
 /// The point v_f of a minimal face and whether the cell-to-cell segment crosses the face.
 struct FacePoint {
@@ -115,6 +128,28 @@ inline constexpr int kEdgeVertex = 8;
 ///         midpoint projected on the plane if ab does not cross it) clamped into it.
 FacePoint computeFacePoint(const Vec3d& a, const Vec3d& b, const MinimalFace& face,
                            const EnvelopeOptions& options = {});
+
+/// @brief computeFacePoint where the segment crosses the face within its margin (almost every
+///        face of a quad), inline: the same point, bit for bit; every other case is
+///        computeFacePoint's. Four per quad, this was a fifth of regular mode's quads.
+inline FacePoint facePointOf(const Vec3d& a, const Vec3d& b, const MinimalFace& face,
+                             const EnvelopeOptions& options = {}) {
+  const int n = face.axis;
+  const double da = a[n] - face.coordinate, db = b[n] - face.coordinate;
+  if ((da < 0) != (db < 0)) {
+    const double t = da / (da - db);
+    FacePoint result{{a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t, a[2] + (b[2] - a[2]) * t}, true};
+    result.point[n] = face.coordinate;
+    const double m = options.faceMarginFraction * face.size;
+    for (int axis = 0; axis < 3; ++axis) {
+      if (axis == n) continue;
+      const double lo = face.min[axis] + m, hi = face.min[axis] + face.size - m;
+      if (result.point[axis] < lo || result.point[axis] > hi) result.crossed = false;
+    }
+    if (result.crossed) return result;
+  }
+  return computeFacePoint(a, b, face, options);
+}
 
 /// @brief True if the triangle (a, b, c) lies inside the envelope of `envelope`,
 ///        touching the envelope faces shared with other edges only on the
