@@ -10,9 +10,7 @@ namespace isovdb::cell {
 
 bool intersectEdge(const cell::MetaCellSamples& samples, std::array<int, 3> start, int axis, int length, float iso,
                    EdgeIntersection& out, bool sharpFeatures) noexcept {
-  const std::ptrdiff_t step = axis == 0   ? 1
-                              : axis == 1 ? samples.stride()
-                                          : static_cast<std::ptrdiff_t>(samples.stride()) * samples.stride();
+  const std::ptrdiff_t step = samples.axisStep(axis);
   const float* p = samples.values.data() + samples.indexOf(start[0], start[1], start[2]);
   bool prev = cell::isInside(p[0], iso);
   int first = -1, transitions = 0;
@@ -43,9 +41,7 @@ bool intersectEdge(const cell::MetaCellSamples& samples, std::array<int, 3> star
 
 EdgeIntersection unitEdgeCrossing(const cell::MetaCellSamples& samples, const std::array<int, 3>& start, int axis,
                                   float iso, const Vec3f& g0, const Vec3f& g1) noexcept {
-  const std::ptrdiff_t step = axis == 0   ? 1
-                              : axis == 1 ? samples.stride()
-                                          : static_cast<std::ptrdiff_t>(samples.stride()) * samples.stride();
+  const std::ptrdiff_t step = samples.axisStep(axis);
   const float* p = samples.values.data() + samples.indexOf(start[0], start[1], start[2]);
   const float t = crossingFraction(p[0], p[step], iso);
   EdgeIntersection out;

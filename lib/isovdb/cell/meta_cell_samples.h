@@ -55,6 +55,11 @@ struct MetaCellSamples {
     return (static_cast<std::size_t>(k + apron) * s + static_cast<std::size_t>(j + apron)) * s +
            static_cast<std::size_t>(i + apron);
   }
+  /// Samples between neighbours along `axis` (0, 1, 2) in `values`.
+  std::ptrdiff_t axisStep(int axis) const noexcept {
+    const auto s = static_cast<std::ptrdiff_t>(stride());
+    return axis == 0 ? 1 : axis == 1 ? s : s * s;
+  }
   /// Value at offset (i, j, k) from `origin`, each in [-A, S + A].
   float value(int i, int j, int k) const noexcept { return values[indexOf(i, j, k)]; }
   float& value(int i, int j, int k) noexcept { return values[indexOf(i, j, k)]; }

@@ -236,7 +236,7 @@ std::pair<Point, double> closestOnSecondSegment(const Point& p0, const Point& p1
 
 }  // namespace
 
-FacePoint computeFacePoint(const Vec3d& a, const Vec3d& b, const MinimalFace& face, const EnvelopeOptions& options) {
+FacePoint clampedFacePoint(const Vec3d& a, const Vec3d& b, const MinimalFace& face, const EnvelopeOptions& options) {
   const int n = face.axis;
   const double da = a[n] - face.coordinate, db = b[n] - face.coordinate;
   const Point pa = toPoint(a), pb = toPoint(b);

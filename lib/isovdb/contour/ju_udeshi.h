@@ -117,6 +117,10 @@ struct EdgeTriangulation {
 inline constexpr int kFaceVertex = 4;
 inline constexpr int kEdgeVertex = 8;
 
+/// @brief computeFacePoint's answer in every case, computed in full (the clamp, and the rim
+///        point where the segment misses the face far away); callers use computeFacePoint.
+FacePoint clampedFacePoint(const Vec3d& a, const Vec3d& b, const MinimalFace& face, const EnvelopeOptions& options);
+
 /// @brief v_f of a minimal face between the cell vertices `a` and `b`, which lie
 ///        on opposite sides of the face plane (paper 000, section 4.2.3.2).
 /// @param[in] a, b  the two cell vertices; the result depends only on the unordered
@@ -126,14 +130,12 @@ inline constexpr int kEdgeVertex = 8;
 /// @return the crossing of segment ab with the face if it lies inside the face
 ///         shrunk by the margin (crossed = true), else that crossing (or the
 ///         midpoint projected on the plane if ab does not cross it) clamped into it.
-FacePoint computeFacePoint(const Vec3d& a, const Vec3d& b, const MinimalFace& face,
-                           const EnvelopeOptions& options = {});
-
-/// @brief computeFacePoint where the segment crosses the face within its margin (almost every
-///        face of a quad), inline: the same point, bit for bit; every other case is
-///        computeFacePoint's. Four per quad, this was a fifth of regular mode's quads.
-inline FacePoint facePointOf(const Vec3d& a, const Vec3d& b, const MinimalFace& face,
-                             const EnvelopeOptions& options = {}) {
+///
+/// Inline where the segment crosses the face within its margin (almost every face: four per
+/// quad, out of line this was a fifth of regular mode's quads), the same arithmetic as
+/// clampedFacePoint; every other case is clampedFacePoint's.
+inline FacePoint computeFacePoint(const Vec3d& a, const Vec3d& b, const MinimalFace& face,
+                                  const EnvelopeOptions& options = {}) {
   const int n = face.axis;
   const double da = a[n] - face.coordinate, db = b[n] - face.coordinate;
   if ((da < 0) != (db < 0)) {
@@ -148,7 +150,7 @@ inline FacePoint facePointOf(const Vec3d& a, const Vec3d& b, const MinimalFace& 
     }
     if (result.crossed) return result;
   }
-  return computeFacePoint(a, b, face, options);
+  return clampedFacePoint(a, b, face, options);
 }
 
 /// @brief True if the triangle (a, b, c) lies inside the envelope of `envelope`,

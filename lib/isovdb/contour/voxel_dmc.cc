@@ -210,8 +210,8 @@ int voxelQuadTriangles(const std::array<std::uint32_t, 4>& v, const std::array<m
     const int q = kCycle[static_cast<std::size_t>(k)], next = kCycle[static_cast<std::size_t>((k + 1) % 4)];
     envelope.cellPoints[static_cast<std::size_t>(k)] = point(q);
     const QuadrantFace shared = faceBetweenQuadrants(edgeStart, axis, size, q, next);
-    const FacePoint fp = shared.firstOnMinSide ? facePointOf(point(q), point(next), shared.face)
-                                               : facePointOf(point(next), point(q), shared.face);
+    const FacePoint fp = shared.firstOnMinSide ? computeFacePoint(point(q), point(next), shared.face)
+                                               : computeFacePoint(point(next), point(q), shared.face);
     envelope.facePoints[static_cast<std::size_t>(k)] = fp.point;
     crossed = crossed && fp.crossed;
   }
