@@ -16,9 +16,11 @@
 ///
 /// The other way round, the full-resolution surface against the mesh: the vertices
 /// full-resolution contouring would place in the unit cells of each coarse leaf
-/// (manifold DMC's groups, the vertices of adaptive mode at one voxel) must lie
-/// within the bound of the meta-cell's mesh (exact point-triangle distances,
-/// mesh/triangle_grid.h). A coarse leaf's vertex on the level set can still miss
+/// (manifold DMC's groups, the vertices of adaptive mode at one voxel), and the
+/// sides of its quads between two such cells, must lie within the bound of the
+/// meta-cell's mesh (exact point-triangle distances, mesh/triangle_grid.h). A side
+/// matters where the mesh folds: on the rim of a thin sheet its midpoint lay 0.1
+/// voxel farther from the mesh than either end. A coarse leaf's vertex on the level set can still miss
 /// part of what regular mode meshes: the frog skeleton's one-voxel slit of
 /// background along a 2-voxel leaf's edge, whose unit-cell vertices lie 0.6 voxel
 /// from the slit's crossings, stayed 0.57 voxel off at every bound before.
@@ -48,7 +50,7 @@ namespace isovdb::contour {
 ///        finest cells, which cannot be split) whose closed box holds a
 ///        vertex, triangle centroid or edge midpoint of `mesh` (global voxel index
 ///        coordinates) farther than `maxError` from the level `options.iso`, or
-///        which hold a full-resolution vertex farther than `maxError` from `mesh` (or,
+///        which hold a full-resolution vertex (or side) farther than `maxError` from `mesh` (or,
 ///        on the meta-cell's boundary, from the leaf's vertices in `seam`, which the seam's
 ///        triangles stitched later pass through; without `seam` such leaves are left
 ///        out): sorted, unique. `options` place the vertices as contouring does.

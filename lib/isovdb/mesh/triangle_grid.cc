@@ -130,20 +130,32 @@ std::vector<std::uint32_t> TriangleGrid::trianglesNear(const Vec3d& lo, const Ve
   return found;
 }
 
-bool TriangleGrid::within(const Vec3f& p, double distance, std::uint32_t* hint) const {
+double TriangleGrid::distanceTo(const Vec3f& p, std::uint32_t triangle) const {
+  const Vec3d q = toDouble(p);
+  const Triangle& t = mesh_.triangles[triangle];
+  const Vec3d d = sub(q, closestPointOnTriangle(q, toDouble(mesh_.positions[t[0]]), toDouble(mesh_.positions[t[1]]),
+                                                toDouble(mesh_.positions[t[2]])));
+  return std::sqrt(dot(d, d));
+}
+
+bool TriangleGrid::within(const Vec3f& p, double distance, std::uint32_t* hint, double* found) const {
   const Vec3d q = toDouble(p);
   const double limit = distance * distance;
+  double d2 = 0.0;
   const auto close = [&](const Triangle& t) {
     const Vec3d d = sub(q, closestPointOnTriangle(q, toDouble(mesh_.positions[t[0]]), toDouble(mesh_.positions[t[1]]),
                                                   toDouble(mesh_.positions[t[2]])));
-    return dot(d, d) <= limit;
+    d2 = dot(d, d);
+    return d2 <= limit;
   };
-  if (hint != nullptr && *hint < mesh_.triangles.size() && close(mesh_.triangles[*hint])) return true;
-  return anyTriangleNear(q, q, distance, [&](const Triangle& t) {
-    if (!close(t)) return false;
-    if (hint != nullptr) *hint = static_cast<std::uint32_t>(&t - mesh_.triangles.data());
-    return true;
-  });
+  const bool near = (hint != nullptr && *hint < mesh_.triangles.size() && close(mesh_.triangles[*hint])) ||
+                    anyTriangleNear(q, q, distance, [&](const Triangle& t) {
+                      if (!close(t)) return false;
+                      if (hint != nullptr) *hint = static_cast<std::uint32_t>(&t - mesh_.triangles.data());
+                      return true;
+                    });
+  if (near && found != nullptr) *found = std::sqrt(d2);
+  return near;
 }
 
 }  // namespace isovdb::mesh

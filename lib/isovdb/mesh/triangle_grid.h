@@ -35,7 +35,11 @@ class TriangleGrid {
   /// True if some triangle of the mesh lies within `distance` of `p`. `hint` (optional,
   /// in and out) is a triangle to try first and receives the one found: queries that
   /// walk along the surface mostly find the previous answer close enough again.
-  bool within(const Vec3f& p, double distance, std::uint32_t* hint = nullptr) const;
+  /// `found` (optional) receives the distance to the triangle found.
+  bool within(const Vec3f& p, double distance, std::uint32_t* hint = nullptr, double* found = nullptr) const;
+
+  /// The exact distance from `p` to the mesh's triangle `triangle` (an index, as `hint`).
+  double distanceTo(const Vec3f& p, std::uint32_t triangle) const;
 
   /// The triangles whose bounding boxes meet the box [lo, hi], each once, in index order
   /// (untangle_loops: the triangles around a loop, without a pass over the whole mesh).
