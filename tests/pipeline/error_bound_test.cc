@@ -183,6 +183,14 @@ TEST(ErrorBound, HoldsAlongRegularModesSidesOnASheetsRim) {
   expectVoxelReadingBound(frogSkeletonCrop({336, 208, 32}, 32), "frog sheet rim", kMetaCell, 0.5f);
 }
 
+// A quad around a unit edge whose cells are three one-voxel leaves and a coarser one: its
+// diagonal is regular mode's (chosen by regular mode's four vertices). Chosen by its own
+// corners, where the coarse leaf's vertex lay 0.12 voxel off regular mode's, the frog
+// skeleton's quad at (72, 396, 106) took the other one: 0.256 voxel at E = 0.25 (0.155 since).
+TEST(ErrorBound, HoldsWhereAQuadMixesOneVoxelLeavesWithACoarserOne) {
+  expectVoxelReadingBound(frogSkeletonCrop({64, 384, 96}, 32), "frog quad of mixed leaves", kMetaCell, 0.25f);
+}
+
 // At the finest cells adaptive mode places regular mode's vertices, so a quad that is not
 // planar must take regular mode's diagonal too: the bound cannot split those cells, and the
 // other diagonal's triangles lie up to half a voxel off (this mask at E = 0.25: 0.36 voxel

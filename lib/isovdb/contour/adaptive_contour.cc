@@ -15,10 +15,13 @@
 #include "isovdb/bit_count.h"
 #include "isovdb/contour/adaptive_edges.h"
 #include "isovdb/contour/box_caps.h"
+#include "isovdb/cell/cell_geometry.h"
+#include "isovdb/cell/dmc_table.h"
 #include "isovdb/cell/dual_vertex.h"
 #include "isovdb/contour/leaf_groups.h"
 #include "isovdb/errors.h"
 #include "isovdb/octree/morton.h"
+#include "isovdb/octree/unit_edge_crossings.h"
 
 namespace isovdb::contour {
 
@@ -75,6 +78,20 @@ MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const
   // neighbour.
   std::optional<octree::UnitLeafIndex> unitLeaves;
   if (octree::UnitLeafIndex::pays(metaSize, leafCount)) unitLeaves.emplace(tree);
+  // Regular mode's vertex of a unit cell beside a unit edge: the diagonals of quads mixing
+  // one-voxel leaves with a coarser one follow regular mode's (adaptive_edges.cc).
+  cell::DualVertexOptions regularOptions = cell::dualVertexOptions(options);
+  regularOptions.positionOnly = true;
+  const auto regularVertex = [&](const std::array<int, 3>& start, int axis, int quadrant) -> std::optional<Vec3d> {
+    const std::array<int, 3> c = cell::edgeQuadrantVoxel(start, axis, quadrant);
+    if (std::any_of(c.begin(), c.end(), [&](int x) { return x < 0 || x >= metaSize; })) return std::nullopt;
+    const std::uint8_t config = cell::cellCornerSigns(samples, c, 1, options.iso);
+    const cell::DmcEntry& entry = cell::dmcEntry(config);
+    if (entry.vertexCount != 1 || voxelDmcEntry(config).vertexCount != 1) return std::nullopt;
+    const cell::DualVertex v = octree::cellDualVertex(samples, c, 1, entry.groups[0], regularOptions, crossings);
+    if (!v.valid()) return std::nullopt;
+    return Vec3d{v.position[0], v.position[1], v.position[2]};
+  };
   const AdaptiveTree source{.tree = &tree,
                             .origin = samples.origin,
                             .firstVertex = &groups.firstVertex,
@@ -83,7 +100,8 @@ MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const
                             .crossing = crossing,
                             .inRegion = {},
                             .unitLeaves = unitLeaves ? &*unitLeaves : nullptr,
-                            .voxelCells = voxels ? &voxelCells : nullptr};
+                            .voxelCells = voxels ? &voxelCells : nullptr,
+                            .regularVertex = regularVertex};
   // Records in fixed chunks of leaves, in leaf order (the mesh does not depend on the
   // threads): one vector per leaf cost an allocation or two for each surface leaf.
   constexpr std::size_t kChunkLeaves = 256;

@@ -209,7 +209,29 @@ void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool
     if (!std::isfinite(t)) t = 0.5 * s;
     const double m = kInteriorMargin * s;
     r.edgePoint[axis] = env.edgeStart[axis] + std::clamp(t, m, s - m);
-    r.how = chooseTriangulation(env, crossed, intersectionFree);
+    // A quad around a unit edge of one-voxel leaves and a coarser one: regular mode's four
+    // vertices choose its diagonal (three of them are its corners, the coarse leaf's vertex
+    // lies off regular mode's there). Chosen by its own corners, the frog skeleton's quad at
+    // (72, 396, 106) took the other diagonal and lay 0.256 voxel from regular mode's at E = 0.25.
+    std::optional<std::array<Vec3d, 4>> regularCorners;
+    if (source.regularVertex && s == 1 && k == 4 &&
+        std::all_of(crossed.begin(), crossed.end(), [](bool c) { return c; }) && !allOneVoxel(tree, cells)) {
+      regularCorners.emplace();
+      for (int i = 0; i < 4 && regularCorners; ++i) {
+        const auto l = static_cast<std::size_t>(cells[static_cast<std::size_t>(i)]);
+        if (tree.leaf(l).size == 1) {
+          (*regularCorners)[static_cast<std::size_t>(i)] = env.cellPoints[static_cast<std::size_t>(i)];
+          continue;
+        }
+        const int quadrant = std::countr_zero(static_cast<unsigned>(quadrantsOf(cells[static_cast<std::size_t>(i)])));
+        const std::optional<Vec3d> v = source.regularVertex(start, axis, quadrant);
+        if (v)
+          (*regularCorners)[static_cast<std::size_t>(i)] = *v;
+        else
+          regularCorners.reset();
+      }
+    }
+    r.how = chooseTriangulation(env, crossed, intersectionFree, {}, regularCorners ? &*regularCorners : nullptr);
     // A mask read as voxels: four one-voxel leaves are regular mode's cells with regular
     // mode's vertices, and regular mode triangulates their quad as voxelQuadTriangles does
     // (on fields it takes this path itself). Where a face between them is not crossed and

@@ -17,6 +17,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <map>
 #include <vector>
 
@@ -59,6 +60,10 @@ struct AdaptiveTree {
   /// Per leaf: read as the voxel object (cell::ContourSettings::adaptiveReadsVoxels). The
   /// edges of such leaves are left to emitVoxelReadingEdge (optional: none).
   const std::vector<char>* voxelCells = nullptr;
+  /// Regular mode's vertex (global coordinates) of the unit cell in quadrant `quadrant` around
+  /// the unit edge (start, axis) (tree offsets), where that cell has one vertex in every
+  /// reading; else none. Optional: without it a quad's diagonal is chosen by its own corners.
+  std::function<std::optional<Vec3d>(const std::array<int, 3>& start, int axis, int quadrant)> regularVertex;
 };
 
 /// One sign-changing minimal edge, ready to be triangulated.

@@ -130,7 +130,8 @@ void stitchAdaptive(const Seam& seam, const EdgeOctree& edgeTree, int s, bool in
       },
       .inRegion = [&](const std::array<int, 3>& start, int axis) { return seam.ownsEdge(start, axis, s); },
       .partial = true,
-      .voxelCells = voxels ? &voxelCells : nullptr};
+      .voxelCells = voxels ? &voxelCells : nullptr,
+      .regularVertex = {}};
   const auto cellVertex = [&](std::int64_t leaf, int group) {
     SeamCell& cell = *edgeTree.cells[static_cast<std::size_t>(leaf)];
     std::uint32_t& vertex = cell.vertices[static_cast<std::size_t>(group)];
