@@ -130,12 +130,14 @@ std::vector<std::uint32_t> TriangleGrid::trianglesNear(const Vec3d& lo, const Ve
   return found;
 }
 
-double TriangleGrid::distanceTo(const Vec3f& p, std::uint32_t triangle) const {
-  const Vec3d q = toDouble(p);
-  const Triangle& t = mesh_.triangles[triangle];
+double TriangleGrid::squaredDistance(const Vec3d& q, const Triangle& t) const noexcept {
   const Vec3d d = sub(q, closestPointOnTriangle(q, toDouble(mesh_.positions[t[0]]), toDouble(mesh_.positions[t[1]]),
                                                 toDouble(mesh_.positions[t[2]])));
-  return std::sqrt(dot(d, d));
+  return dot(d, d);
+}
+
+double TriangleGrid::distanceTo(const Vec3f& p, std::uint32_t triangle) const {
+  return std::sqrt(squaredDistance(toDouble(p), mesh_.triangles[triangle]));
 }
 
 bool TriangleGrid::within(const Vec3f& p, double distance, std::uint32_t* hint, double* found) const {
@@ -143,9 +145,7 @@ bool TriangleGrid::within(const Vec3f& p, double distance, std::uint32_t* hint, 
   const double limit = distance * distance;
   double d2 = 0.0;
   const auto close = [&](const Triangle& t) {
-    const Vec3d d = sub(q, closestPointOnTriangle(q, toDouble(mesh_.positions[t[0]]), toDouble(mesh_.positions[t[1]]),
-                                                  toDouble(mesh_.positions[t[2]])));
-    d2 = dot(d, d);
+    d2 = squaredDistance(q, t);
     return d2 <= limit;
   };
   const bool near = (hint != nullptr && *hint < mesh_.triangles.size() && close(mesh_.triangles[*hint])) ||

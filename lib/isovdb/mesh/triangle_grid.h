@@ -56,6 +56,8 @@ class TriangleGrid {
   std::vector<std::array<float, 6>> boxes_;  // per triangle: min x, y, z, max x, y, z (a cheap rejection)
 
   std::array<int, 3> binOf(const std::array<double, 3>& p) const noexcept;
+  /// Squared distance from `q` to the triangle `t` of the mesh.
+  double squaredDistance(const Vec3d& q, const Triangle& t) const noexcept;
   /// Calls `accept(triangle)` for each triangle binned where the box [lo, hi] grown by
   /// `reach` lies and whose own box reaches it, until `accept` returns true; returns that.
   template <class Accept>
