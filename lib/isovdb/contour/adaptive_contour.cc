@@ -16,12 +16,10 @@
 #include "isovdb/contour/adaptive_edges.h"
 #include "isovdb/contour/box_caps.h"
 #include "isovdb/cell/cell_geometry.h"
-#include "isovdb/cell/dmc_table.h"
 #include "isovdb/cell/dual_vertex.h"
 #include "isovdb/contour/leaf_groups.h"
 #include "isovdb/errors.h"
 #include "isovdb/octree/morton.h"
-#include "isovdb/octree/unit_edge_crossings.h"
 
 namespace isovdb::contour {
 
@@ -83,14 +81,10 @@ MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const
   cell::DualVertexOptions regularOptions = cell::dualVertexOptions(options);
   regularOptions.positionOnly = true;
   const auto regularVertex = [&](const std::array<int, 3>& start, int axis, int quadrant) -> std::optional<Vec3d> {
-    const std::array<int, 3> c = cell::edgeQuadrantVoxel(start, axis, quadrant);
-    if (std::any_of(c.begin(), c.end(), [&](int x) { return x < 0 || x >= metaSize; })) return std::nullopt;
-    const std::uint8_t config = cell::cellCornerSigns(samples, c, 1, options.iso);
-    const cell::DmcEntry& entry = cell::dmcEntry(config);
-    if (entry.vertexCount != 1 || voxelDmcEntry(config).vertexCount != 1) return std::nullopt;
-    const cell::DualVertex v = octree::cellDualVertex(samples, c, 1, entry.groups[0], regularOptions, crossings);
-    if (!v.valid()) return std::nullopt;
-    return Vec3d{v.position[0], v.position[1], v.position[2]};
+    const std::optional<Vec3f> v = unambiguousUnitVertex(samples, cell::edgeQuadrantVoxel(start, axis, quadrant), axis,
+                                                         quadrant, regularOptions, crossings);
+    if (!v) return std::nullopt;
+    return Vec3d{(*v)[0], (*v)[1], (*v)[2]};
   };
   const AdaptiveTree source{.tree = &tree,
                             .origin = samples.origin,

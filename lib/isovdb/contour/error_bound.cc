@@ -80,17 +80,11 @@ bool edgePointOffRegularQuad(const cell::MetaCellSamples& samples, const octree:
     return false;  // not bipolar
   std::array<Vec3d, 4> vertex{};
   for (int q = 0; q < 4; ++q) {
-    const std::array<int, 3> origin = cell::edgeQuadrantVoxel(start, axis, q);
-    if (std::any_of(origin.begin(), origin.end(), [&](int c) { return c < 0 || c >= samples.size; })) return false;
-    const std::uint8_t config = cell::cellCornerSigns(samples, origin, 1, options.iso);
-    const cell::DmcEntry& entry = cell::dmcEntry(config);
-    if (entry.vertexCount != 1 || voxelDmcEntry(config).vertexCount != 1 ||
-        cell::dmcVertexOfEdge(config, false, axis, q) < 0)
-      return false;
-    const cell::DualVertex v = cell::computeDualVertex(samples, origin, 1, entry.groups[0], options);
-    if (!v.valid()) return false;
+    const std::optional<Vec3f> v =
+        unambiguousUnitVertex(samples, cell::edgeQuadrantVoxel(start, axis, q), axis, q, options);
+    if (!v) return false;
     for (int a = 0; a < 3; ++a)
-      vertex[static_cast<std::size_t>(q)][a] = static_cast<double>(v.position[a]) - samples.origin[a];
+      vertex[static_cast<std::size_t>(q)][a] = static_cast<double>((*v)[a]) - samples.origin[a];
   }
   const Vec3d p{point[0], point[1], point[2]};
   const auto distanceTo = [&](int a, int b, int c) {
@@ -261,11 +255,8 @@ bool unitCellVerticesWithin(const cell::MetaCellSamples& samples, const octree::
   // the seam's triangles, stitched later and so not in `grid`, pass through) found for the
   // first of them within `reach`, else +infinity; `triangle` receives the triangle.
   const auto within = [&](const Vec3f& p, double reach, std::uint32_t& triangle) {
-    for (const Vec3f& v : ownVertices) {
-      double d2 = 0.0;
-      for (int a = 0; a < 3; ++a) d2 += (static_cast<double>(p[a]) - v[a]) * (static_cast<double>(p[a]) - v[a]);
-      if (d2 <= reach * reach) return std::sqrt(d2);
-    }
+    for (const Vec3f& v : ownVertices)
+      if (const double d2 = squaredDistance(p, v); d2 <= reach * reach) return std::sqrt(d2);
     double found = 0.0;
     if (!grid.within(p, reach, &hint, &found)) return std::numeric_limits<double>::infinity();
     triangle = hint;
@@ -285,14 +276,17 @@ bool unitCellVerticesWithin(const cell::MetaCellSamples& samples, const octree::
     o.massPointOnly = cell::dmcEntry(config).vertexCount > 1;
     return o;
   };
-  // (Without crossings, measure solves every vertex itself.)
-  const auto solve = [&](UnitVertex& v, const std::array<int, 3>& cell, std::uint8_t config, int g) {
-    if (v.solved) return;
-    const std::size_t n = gather(cell, cell::dmcEntry(config).groups[static_cast<std::size_t>(g)]);
+  // The vertex from the `n` crossings gathered last.
+  const auto solveGathered = [&](UnitVertex& v, const std::array<int, 3>& cell, std::uint8_t config, std::size_t n) {
     v.position = cell::dualVertexFromCrossings(samples, cell, 1, std::span<const Vec3f>(points.data(), n),
                                                std::span<const Vec3f>(normals.data(), n), edges, optionsOf(config))
                      .position;
     v.solved = true;
+  };
+  // (Without crossings, measure solves every vertex itself.)
+  const auto solve = [&](UnitVertex& v, const std::array<int, 3>& cell, std::uint8_t config, int g) {
+    if (!v.solved)
+      solveGathered(v, cell, config, gather(cell, cell::dmcEntry(config).groups[static_cast<std::size_t>(g)]));
   };
   // Places and measures group g's vertex of the crossed cell at `cell`: false where it lies
   // beyond the bound.
@@ -318,8 +312,7 @@ bool unitCellVerticesWithin(const cell::MetaCellSamples& samples, const octree::
                        {options.singularValueThreshold});
     v.massPoint = reach.massPoint;
     for (int a = 0; a < 3; ++a) v.massPoint[a] += static_cast<float>(samples.origin[a]);
-    const bool massPointOnly = cell::dmcEntry(config).vertexCount > 1;
-    v.reach = massPointOnly ? 0.0 : reach.reach;
+    v.reach = optionsOf(config).massPointOnly ? 0.0 : reach.reach;
     const double slack = static_cast<double>(maxError) - v.reach - roundingMargin(v.massPoint);
     if (slack > 0.0) {
       const double d = within(v.massPoint, slack, v.triangle);
@@ -328,7 +321,7 @@ bool unitCellVerticesWithin(const cell::MetaCellSamples& samples, const octree::
         return true;
       }
     }
-    solve(v, cell, config, g);
+    solveGathered(v, cell, config, n);
     v.measuredSolved = true;
     v.distance = within(v.position, maxError, v.triangle);
     return v.distance <= static_cast<double>(maxError);

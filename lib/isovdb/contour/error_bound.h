@@ -20,10 +20,10 @@
 /// sides of its quads between two such cells, must lie within the bound of the
 /// meta-cell's mesh (exact point-triangle distances, mesh/triangle_grid.h). A side
 /// matters where the mesh folds: on the rim of a thin sheet its midpoint lay 0.1
-/// voxel farther from the mesh than either end. A coarse leaf's vertex on the level set can still miss
-/// part of what regular mode meshes: the frog skeleton's one-voxel slit of
-/// background along a 2-voxel leaf's edge, whose unit-cell vertices lie 0.6 voxel
-/// from the slit's crossings, stayed 0.57 voxel off at every bound before.
+/// voxel farther from the mesh than either end. A coarse leaf's vertex on the level
+/// set can still miss part of what regular mode meshes: the frog skeleton's one-voxel
+/// slit of background along a 2-voxel leaf's edge, whose unit-cell vertices lie 0.6
+/// voxel from the slit's crossings, stayed 0.57 voxel off at every bound before.
 ///
 /// Both sides are sampled, so the check holds the mesh to the bound less a margin
 /// (octree::kErrorBoundMargin) that covers what lies between the samples. The seam's
@@ -50,10 +50,10 @@ namespace isovdb::contour {
 ///        finest cells, which cannot be split) whose closed box holds a
 ///        vertex, triangle centroid or edge midpoint of `mesh` (global voxel index
 ///        coordinates) farther than `maxError` from the level `options.iso`, or
-///        which hold a full-resolution vertex (or side) farther than `maxError` from `mesh` (or,
-///        on the meta-cell's boundary, from the leaf's vertices in `seam`, which the seam's
-///        triangles stitched later pass through; without `seam` such leaves are left
-///        out): sorted, unique. `options` place the vertices as contouring does.
+///        which hold a full-resolution vertex (or side) farther than `maxError` from
+///        `mesh` (or, on the meta-cell's boundary, from the leaf's vertices in `seam`,
+///        which the seam's triangles stitched later pass through; without `seam` such
+///        leaves are left out): sorted, unique. `options` place the vertices as contouring does.
 /// `crossings` (optional) are the samples' unit-edge crossings, each found once (a unit edge
 /// is shared by four unit cells); without them each cell finds its own. `phases` (optional)
 /// are the samples' phases at `options.iso`, computed here without them.

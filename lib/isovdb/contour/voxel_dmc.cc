@@ -7,9 +7,12 @@
 #include <cassert>
 
 #include "isovdb/bit_count.h"
+#include "isovdb/cell/dual_vertex.h"
+#include "isovdb/cell/meta_cell_samples.h"
 #include "isovdb/contour/ju_udeshi.h"
 #include "isovdb/contour/regular_contour.h"
 #include "isovdb/octree/morton.h"
+#include "isovdb/octree/unit_edge_crossings.h"
 
 namespace isovdb::contour {
 
@@ -88,6 +91,20 @@ std::uint32_t vertexOnFace(const VoxelEdgeCell& cell, int edge, int face) noexce
 }  // namespace
 
 const cell::DmcEntry& voxelDmcEntry(std::uint8_t config) noexcept { return tables().entries[config]; }
+
+std::optional<Vec3f> unambiguousUnitVertex(const cell::MetaCellSamples& samples, const std::array<int, 3>& cell,
+                                           int axis, int quadrant, const cell::DualVertexOptions& options,
+                                           const octree::UnitEdgeCrossings* crossings) {
+  if (std::any_of(cell.begin(), cell.end(), [&](int c) { return c < 0 || c >= samples.size; })) return std::nullopt;
+  const std::uint8_t config = cell::cellCornerSigns(samples, cell, 1, options.iso);
+  const cell::DmcEntry& entry = cell::dmcEntry(config);
+  if (entry.vertexCount != 1 || voxelDmcEntry(config).vertexCount != 1 ||
+      cell::dmcVertexOfEdge(config, false, axis, quadrant) < 0)
+    return std::nullopt;
+  const cell::DualVertex v = octree::cellDualVertex(samples, cell, 1, entry.groups[0], options, crossings);
+  if (!v.valid()) return std::nullopt;
+  return v.position;
+}
 
 const TubeSectors& tubeSectors(std::uint8_t config) noexcept { return tables().tubes[config]; }
 

@@ -38,6 +38,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "isovdb/cell/cell_geometry.h"
@@ -45,6 +46,14 @@
 #include "isovdb/cell/dmc_table.h"
 #include "isovdb/contour/seam_cell.h"
 #include "isovdb/mesh/mesh.h"
+
+namespace isovdb::cell {
+struct MetaCellSamples;
+struct DualVertexOptions;
+}  // namespace isovdb::cell
+namespace isovdb::octree {
+class UnitEdgeCrossings;
+}  // namespace isovdb::octree
 
 namespace isovdb::contour {
 
@@ -54,6 +63,15 @@ using cell::RegularTopology;  // which reading: cell/contour_settings.h
 /// @brief The DMC entry of `config` with ambiguous faces joining the inside
 ///        corners; `doubleFace` as in dmc_table.h.
 const cell::DmcEntry& voxelDmcEntry(std::uint8_t config) noexcept;
+
+/// @brief Regular mode's vertex (global coordinates) of the unit cell at `cell` (meta-cell
+///        offsets, each in [0, S)) for the group holding its bipolar edge (`axis`, `quadrant`
+///        as cell::dmcVertexOfEdge), where the cell has that one vertex in Wenger's reading
+///        and in the voxel one alike; none elsewhere (several vertices, the edge not
+///        bipolar, no crossing, outside the block). `crossings` as octree::cellDualVertex.
+std::optional<Vec3f> unambiguousUnitVertex(const cell::MetaCellSamples& samples, const std::array<int, 3>& cell,
+                                           int axis, int quadrant, const cell::DualVertexOptions& options,
+                                           const octree::UnitEdgeCrossings* crossings = nullptr);
 
 /// True for the four configurations whose only inside corners are the two ends of a body
 /// diagonal (cell/cell_geometry.h; inline: the quad loop asks it of four cells per edge).
