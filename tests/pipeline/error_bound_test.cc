@@ -148,17 +148,16 @@ TEST(ErrorBound, HoldsBesideAOneVoxelSlitOfTheFrogSkeleton) {
 
 /// Random blobs of `size`^3 from `seed`, cleared within 3 voxels of the box (caps on the data
 /// box are read differently by the two modes).
-volume::Volume blobsInsideTheBox(int size, std::uint64_t seed) {
-  constexpr int kBorder = 3;
+volume::Volume blobsInsideTheBox(int size, std::uint64_t seed, int border = 3) {
   auto stream = samples::makeShapeStream(samples::ShapeKind::Blobs, {.size = size, .seed = seed});
   const auto n = static_cast<std::size_t>(size);
   std::vector<float> values(n * n * n);
   for (std::size_t z = 0; z < n; ++z) stream->readSlice(values.data() + z * n * n);
   auto cleared = test::VectorSliceStream::fromFunction({size, size, size}, [&](int x, int y, int z) {
-    const bool border = std::min({x, y, z}) < kBorder || std::max({x, y, z}) >= size - kBorder;
-    return border ? 0.0f
-                  : values[(static_cast<std::size_t>(z) * n + static_cast<std::size_t>(y)) * n +
-                           static_cast<std::size_t>(x)];
+    const bool cleared = std::min({x, y, z}) < border || std::max({x, y, z}) >= size - border;
+    return cleared ? 0.0f
+                   : values[(static_cast<std::size_t>(z) * n + static_cast<std::size_t>(y)) * n +
+                            static_cast<std::size_t>(x)];
   });
   return toContourable(volume::ingestMask(cleared, {}), {});
 }
@@ -189,6 +188,16 @@ TEST(ErrorBound, HoldsAlongRegularModesSidesOnASheetsRim) {
 // skeleton's quad at (72, 396, 106) took the other one: 0.256 voxel at E = 0.25 (0.155 since).
 TEST(ErrorBound, HoldsWhereAQuadMixesOneVoxelLeavesWithACoarserOne) {
   expectVoxelReadingBound(frogSkeletonCrop({64, 384, 96}, 32), "frog quad of mixed leaves", kMetaCell, 0.25f);
+}
+
+// The same kind of quad where regular mode's own envelope refuses its better diagonal and it
+// takes the other: adaptive mode follows regular mode's triangulation (a diagonal, or its fan
+// through the edge's crossing), and where its own envelope refuses that diagonal (the coarse
+// leaf's vertex, 0.12 voxel off regular mode's, moved the triangles out) the coarse leaf is
+// split when the two quads part by more than the bound. This mask (one voxel layer cleared)
+// lay 0.265 voxel from regular mode's mesh at E = 0.25 before, at (35.9, 24.0, 17.8).
+TEST(ErrorBound, HoldsWhereRegularModesEnvelopeRefusesItsBetterDiagonal) {
+  expectVoxelReadingBound(blobsInsideTheBox(48, 17, 1), "blobs 48, seed 17, border 1", kMetaCell, 0.25f);
 }
 
 // At the finest cells adaptive mode places regular mode's vertices, so a quad that is not

@@ -179,6 +179,10 @@ MetaCellMesh contourAdaptiveMetaCell(const cell::MetaCellSamples& samples, const
   for (const LeafEdges& le : perLeaf) {
     for (const EdgeRecord& r : le.records) {
       emitEdgeRecord(r, cellVertex, addVertex, faceVertices, mesh.triangles);
+      if (r.apartFromRegular > 0.0f)
+        for (std::size_t i = 0; i < 4; ++i)
+          if (tree.leaf(static_cast<std::size_t>(r.cells[i])).size > 1)
+            result.apartFromRegular.push_back({r.cells[i], r.apartFromRegular});
       if (r.how.fan) ++local.fannedEdges;
       if (r.uncrossedFace) ++local.uncrossedFaceEdges;
       ++local.minimalEdges;

@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <limits>
 
 #include "isovdb/bit_count.h"
 #include "isovdb/cell/dmc_table.h"
+#include "isovdb/mesh/triangle_grid.h"
 #include "isovdb/octree/morton.h"
 
 namespace isovdb::contour {
@@ -25,6 +27,45 @@ constexpr std::array<int, 4> kCycle{0, 1, 3, 2};
 bool allOneVoxel(const LinearOctree& tree, const std::array<std::int64_t, 4>& cells) {
   return std::all_of(cells.begin(), cells.end(),
                      [&](std::int64_t l) { return tree.leaf(static_cast<std::size_t>(l)).size == 1; });
+}
+
+using Triangle3 = std::array<Vec3d, 3>;
+
+/// The largest distance from a sample of `from` (corners, side midpoints, centroid) to the
+/// nearest triangle of `to`.
+double farthestSample(const std::vector<Triangle3>& from, const std::vector<Triangle3>& to) {
+  const auto mid = [](const Vec3d& a, const Vec3d& b) {
+    return Vec3d{0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1]), 0.5 * (a[2] + b[2])};
+  };
+  double farthest = 0.0;
+  for (const Triangle3& t : from) {
+    const Vec3d centroid{(t[0][0] + t[1][0] + t[2][0]) / 3.0, (t[0][1] + t[1][1] + t[2][1]) / 3.0,
+                         (t[0][2] + t[1][2] + t[2][2]) / 3.0};
+    for (const Vec3d& p : {t[0], t[1], t[2], mid(t[0], t[1]), mid(t[1], t[2]), mid(t[2], t[0]), centroid}) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const Triangle3& u : to) {
+        const Vec3d q = mesh::closestPointOnTriangle(p, u[0], u[1], u[2]);
+        nearest = std::min(nearest, std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]));
+      }
+      farthest = std::max(farthest, nearest);
+    }
+  }
+  return farthest;
+}
+
+/// The triangles `how` makes of an edge's polygon (ju_udeshi.h, triangulateEdge).
+std::vector<Triangle3> edgeTriangles(const EdgeEnvelope& env, const std::array<bool, 4>& crossed, EdgeTriangulation how,
+                                     const Vec3d& edgePoint) {
+  thread_local std::vector<std::array<int, 3>> local;
+  triangulateEdge(env.cellCount, crossed, how, local);
+  const auto point = [&](int i) -> const Vec3d& {
+    if (i == kEdgeVertex) return edgePoint;
+    return i >= kFaceVertex ? env.facePoints[static_cast<std::size_t>(i - kFaceVertex)]
+                            : env.cellPoints[static_cast<std::size_t>(i)];
+  };
+  std::vector<Triangle3> triangles;
+  for (const auto& t : local) triangles.push_back({point(t[0]), point(t[1]), point(t[2])});
+  return triangles;
 }
 
 }  // namespace
@@ -161,6 +202,8 @@ void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool
     r.groups = groups;
     env.cellCount = k;
     std::array<bool, 4> crossed{};
+    std::array<MinimalFace, 4> faces{};       // the minimal face between cell i and i + 1
+    std::array<bool, 4> facesMinSideFirst{};  // cell i lies on that face's min side
     for (int i = 0; i < k; ++i) {
       const std::int64_t a = cells[static_cast<std::size_t>(i)];
       const std::int64_t b = cells[static_cast<std::size_t>((i + 1) % k)];
@@ -194,6 +237,8 @@ void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool
       const Vec3d& pa = pointOf(i);
       const Vec3d& pb = pointOf((i + 1) % k);
       const FacePoint fp = sideA == 0 ? computeFacePoint(pa, pb, face) : computeFacePoint(pb, pa, face);
+      faces[static_cast<std::size_t>(i)] = face;
+      facesMinSideFirst[static_cast<std::size_t>(i)] = sideA == 0;
       r.facePoints[static_cast<std::size_t>(i)] = fp.point;
       env.facePoints[static_cast<std::size_t>(i)] = fp.point;
       crossed[static_cast<std::size_t>(i)] = fp.crossed;
@@ -209,29 +254,62 @@ void collectMinimalEdges(const AdaptiveTree& source, std::size_t leafIndex, bool
     if (!std::isfinite(t)) t = 0.5 * s;
     const double m = kInteriorMargin * s;
     r.edgePoint[axis] = env.edgeStart[axis] + std::clamp(t, m, s - m);
-    // A quad around a unit edge of one-voxel leaves and a coarser one: regular mode's four
-    // vertices choose its diagonal (three of them are its corners, the coarse leaf's vertex
-    // lies off regular mode's there). Chosen by its own corners, the frog skeleton's quad at
-    // (72, 396, 106) took the other diagonal and lay 0.256 voxel from regular mode's at E = 0.25.
-    std::optional<std::array<Vec3d, 4>> regularCorners;
+    // A quad around a unit edge of one-voxel leaves and a coarser one: triangulated as regular
+    // mode triangulates its quad there (three of its corners are regular mode's; the coarse
+    // leaf's vertex lies off regular mode's). Chosen by its own corners, the frog skeleton's
+    // quad at (72, 396, 106) took the other diagonal and lay 0.256 voxel from regular mode's at
+    // E = 0.25.
+    std::optional<EdgeEnvelope> regularEnv;
     if (source.regularVertex && s == 1 && k == 4 &&
         std::all_of(crossed.begin(), crossed.end(), [](bool c) { return c; }) && !allOneVoxel(tree, cells)) {
-      regularCorners.emplace();
-      for (int i = 0; i < 4 && regularCorners; ++i) {
+      regularEnv = env;
+      for (int i = 0; i < 4 && regularEnv; ++i) {
         const auto l = static_cast<std::size_t>(cells[static_cast<std::size_t>(i)]);
-        if (tree.leaf(l).size == 1) {
-          (*regularCorners)[static_cast<std::size_t>(i)] = env.cellPoints[static_cast<std::size_t>(i)];
-          continue;
-        }
+        if (tree.leaf(l).size == 1) continue;
         const int quadrant = std::countr_zero(static_cast<unsigned>(quadrantsOf(cells[static_cast<std::size_t>(i)])));
         const std::optional<Vec3d> v = source.regularVertex(start, axis, quadrant);
         if (v)
-          (*regularCorners)[static_cast<std::size_t>(i)] = *v;
+          regularEnv->cellPoints[static_cast<std::size_t>(i)] = *v;
         else
-          regularCorners.reset();
+          regularEnv.reset();
+      }
+      // Regular mode's face points between its vertices; its own quad has every face crossed.
+      for (std::size_t i = 0; i < 4 && regularEnv; ++i) {
+        const Vec3d& pa = regularEnv->cellPoints[i];
+        const Vec3d& pb = regularEnv->cellPoints[(i + 1) % 4];
+        const FacePoint fp =
+            facesMinSideFirst[i] ? computeFacePoint(pa, pb, faces[i]) : computeFacePoint(pb, pa, faces[i]);
+        regularEnv->facePoints[i] = fp.point;
+        if (!fp.crossed) regularEnv.reset();
       }
     }
-    r.how = chooseTriangulation(env, crossed, intersectionFree, {}, regularCorners ? &*regularCorners : nullptr);
+    if (regularEnv && intersectionFree) {
+      // Regular mode's triangulation (voxel_dmc.cc, voxelQuadTriangles): its better diagonal
+      // in its envelope, else the other, else the fan through the edge's crossing. The fan
+      // lies in every envelope; a diagonal is kept where this quad's envelope holds it too.
+      const EdgeTriangulation regular = chooseTriangulation(*regularEnv, crossed);
+      r.how = regular.fan ? regular : chooseTriangulation(env, crossed, true, {}, regular.apex);
+      // Where this quad's envelope refused it (the coarse leaf's vertex moved its triangles
+      // out), the two surfaces part across the quad by more than their corners do, which the
+      // error bound's check (this mesh against the level) does not see: a 48^3 blobs mask
+      // (seed 17) at E = 0.25 lay 0.28 voxel from regular mode's quad. Measured here; the
+      // bound splits the coarse leaf where it is too far (pipeline/octree_contour.cc).
+      if (r.how.fan != regular.fan || r.how.apex != regular.apex) {
+        // Regular mode's surface against this one, and this one against its own corners split
+        // as regular mode splits them: this quad's corners themselves lie off regular mode's
+        // as far as everywhere else (the check holds them), and measured against regular
+        // mode's quad directly they split 600 leaves of the 256^3 blobs at E = 1 (local
+        // distances up to 1.6 voxels, where the mesh elsewhere lay within the bound).
+        const std::vector<Triangle3> ours = edgeTriangles(env, crossed, r.how, r.edgePoint);
+        const std::vector<Triangle3> theirs = edgeTriangles(*regularEnv, crossed, regular, r.edgePoint);
+        const std::vector<Triangle3> oursSplitAsTheirs = edgeTriangles(env, crossed, regular, r.edgePoint);
+        r.apartFromRegular =
+            static_cast<float>(std::max({farthestSample(theirs, ours), farthestSample(ours, oursSplitAsTheirs),
+                                         farthestSample(oursSplitAsTheirs, ours)}));
+      }
+    } else {
+      r.how = chooseTriangulation(env, crossed, intersectionFree);
+    }
     // A mask read as voxels: four one-voxel leaves are regular mode's cells with regular
     // mode's vertices, and regular mode triangulates their quad as voxelQuadTriangles does
     // (on fields it takes this path itself). Where a face between them is not crossed and

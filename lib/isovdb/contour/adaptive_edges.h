@@ -77,6 +77,10 @@ struct EdgeRecord {
   std::array<bool, 4> crossed{true, true, true, true};  ///< per face: the cell-to-cell segment crosses it
   EdgeTriangulation how;
   bool uncrossedFace = false;  ///< a face's cell-to-cell segment misses it
+  /// A quad of one-voxel leaves and a coarser one (AdaptiveTree::regularVertex) whose envelope
+  /// refused regular mode's triangulation: how far its triangles lie from regular mode's
+  /// (voxels, sampled; adaptive_edges.cc); else 0.
+  float apartFromRegular = 0.0f;
 };
 
 /// Records of one leaf's owned edges plus its skip counters.

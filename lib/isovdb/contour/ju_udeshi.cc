@@ -312,8 +312,7 @@ std::vector<int> edgePolygon(int cellCount, const std::array<bool, 4>& facesCros
 }
 
 EdgeTriangulation chooseTriangulation(const EdgeEnvelope& envelope, const std::array<bool, 4>& facesCrossed,
-                                      bool intersectionFree, const EnvelopeOptions& options,
-                                      const std::array<Vec3d, 4>* diagonalCorners) {
+                                      bool intersectionFree, const EnvelopeOptions& options, int firstApex) {
   const int k = envelope.cellCount;
   const std::array<bool, 4> allCrossed{true, true, true, true};
   const EdgePolygon polygon(k, intersectionFree ? facesCrossed : allCrossed);
@@ -328,11 +327,9 @@ EdgeTriangulation chooseTriangulation(const EdgeEnvelope& envelope, const std::a
   std::array<int, 8> apexes{0, 1, 2, 3, 4, 5, 6, 7};
   int apexCount = m;
   if (m == 4) {
-    const auto at = [&](int i) {
-      const int local = polygon.at(i);
-      return toPoint(diagonalCorners && m == k ? (*diagonalCorners)[static_cast<std::size_t>(local)] : point(local));
-    };
-    if (!firstDiagonalIsBetter(at(0), at(1), at(2), at(3))) std::swap(apexes[0], apexes[1]);
+    const auto at = [&](int i) { return toPoint(point(polygon.at(i))); };
+    if ((m == k && firstApex >= 0) ? firstApex == 1 : !firstDiagonalIsBetter(at(0), at(1), at(2), at(3)))
+      std::swap(apexes[0], apexes[1]);
     apexCount = 2;
   } else if (m == 3) {
     apexCount = 1;

@@ -212,11 +212,11 @@ std::vector<int> edgePolygon(int cellCount, const std::array<bool, 4>& facesCros
 /// @param[in] facesCrossed  per face i (first k): computeFacePoint(...).crossed.
 /// @param[in] intersectionFree  false: plain dual contouring (every face treated
 ///            as crossed, no test; quads split along the shorter diagonal).
-/// @param[in] diagonalCorners  optional, for a quad: the four points (in the cells' order)
-///            whose better diagonal is tried first, where not the cells' own points.
+/// @param[in] firstApex  for a quad with every face crossed: the apex (0 or 1) tried first,
+///            where not the one of the cells' better diagonal (-1).
 EdgeTriangulation chooseTriangulation(const EdgeEnvelope& envelope, const std::array<bool, 4>& facesCrossed,
                                       bool intersectionFree = true, const EnvelopeOptions& options = {},
-                                      const std::array<Vec3d, 4>* diagonalCorners = nullptr);
+                                      int firstApex = -1);
 
 /// @brief Triangles (local vertex numbers, see kFaceVertex / kEdgeVertex) of an
 ///        edge's polygon, in the polygon's orientation.

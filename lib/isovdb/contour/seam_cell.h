@@ -98,6 +98,15 @@ void rebaseSeam(MetaCellSeam& seam, std::uint32_t base) noexcept;
 struct MetaCellMesh {
   mesh::Mesh mesh;  ///< global voxel index coordinates; ids local to this mesh
   MetaCellSeam seam;
+  /// Adaptive mode: a leaf coarser than a voxel in a quad that could not take regular mode's
+  /// triangulation, and how far that quad's triangles lie from regular mode's (voxels;
+  /// adaptive_edges.h, EdgeRecord::apartFromRegular). The error bound splits it where that
+  /// is beyond the bound.
+  struct LeafApart {
+    std::int64_t leaf = 0;  ///< index in the meta-cell's tree
+    float distance = 0.0f;
+  };
+  std::vector<LeafApart> apartFromRegular;
 };
 
 }  // namespace isovdb::contour

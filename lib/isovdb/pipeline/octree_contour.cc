@@ -168,6 +168,16 @@ contour::MetaCellMesh contourBlock(const cell::MetaCellSamples& samples, const E
     if (bounded)
       beyond = contour::leavesBeyondErrorBound(samples, tree, result.mesh, cell::dualVertexOptions(settings),
                                                options.maxError, finest, unitCrossings, &phases, &result.seam);
+    if (bounded && !result.apartFromRegular.empty()) {
+      // Quads that could not take regular mode's triangulation: measured against regular mode's
+      // quad while contouring, held to the bound less the check's margin as its samples are.
+      for (const contour::MetaCellMesh::LeafApart& a : result.apartFromRegular) {
+        const octree::OctreeLeaf& leaf = tree.leaf(static_cast<std::size_t>(a.leaf));
+        if (leaf.size > finest && a.distance > options.maxError - octree::kErrorBoundMargin) beyond.push_back(leaf.key);
+      }
+      std::sort(beyond.begin(), beyond.end());
+      beyond.erase(std::unique(beyond.begin(), beyond.end()), beyond.end());
+    }
     totals.errorBoundSeconds += secondsSince(t0);
     std::vector<octree::MortonKey> forced;
     std::set_union(options.forcedSplits.begin(), options.forcedSplits.end(), beyond.begin(), beyond.end(),
